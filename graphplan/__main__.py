@@ -1,0 +1,3 @@
+from graphplan.cli import main
+
+raise SystemExit(main())

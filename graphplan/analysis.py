@@ -1,0 +1,90 @@
+"""The first stages of a TMM project on one variant: structure, cycle, exact kinematics.
+
+:func:`analyze` runs them in order and returns one frozen :class:`Analysis`,
+the input of every report, plan and sheet.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .cycle import Cycle, analyse_cycle, sweep
+from .kinematics import Kinematics
+from .model import Mechanism
+from .structure import Structure, analyse
+
+
+@dataclass(frozen=True, slots=True)
+class Analysis:
+    """Structure, cycle and kinematics of a variant's positions."""
+
+    mech: Mechanism
+    structure: Structure
+    cycle: Cycle
+    kin: Kinematics
+
+    def to_json(self) -> dict:
+        """The JSON report of ``graphplan analyze --json``.
+
+        Keys are a promise to users' scripts: SI units, angles in degrees,
+        angular quantities counter-clockwise positive, the variant's own frame.
+        """
+        m, st, cy = self.mech, self.structure, self.cycle
+        moving = m.moving_links
+        links = {ln: list(m.points_of(ln)) for ln in (m.frame_link, *moving)}
+        mechanism = {
+            "name": m.name,
+            "source": m.source,
+            "mobility": st.mobility,
+            "mobility_equation": st.mobility_equation,
+            "formula": st.formula,
+            "pairs": [{"kind": p.kind, "links": list(p.links), "joint": p.joint} for p in st.pairs],
+            "groups": [
+                {
+                    "kind": g.kind,
+                    "links": list(g.links),
+                    "class": g.group_class,
+                    "order": g.order,
+                    "kind_number": g.kind_number,
+                }
+                for g in st.groups
+            ],
+            "links": links,
+            "frame_link": m.frame_link,
+            "crank": {"link": m.crank.link, "rpm": m.crank.rpm, "omega": m.crank.omega,
+                      "length_m": m.crank.length},
+            "output": {"link": m.output.link, "kind": cy.output_kind,
+                       "working": "+" if m.output.working > 0 else "-"},
+            "stroke_m": cy.stroke,
+            "swing_deg": math.degrees(cy.swing),
+            "dead_centres_deg": [math.degrees(a) for a in cy.dead_centres],
+            "working_stroke_deg": math.degrees(cy.working_turn),
+            "time_ratio": cy.time_ratio,
+            "min_conditioning": {
+                name: {"sine": s, "phi_deg": math.degrees(a) % 360.0}
+                for name, (s, a) in cy.min_conditioning.items()
+            },
+        }
+        positions = [self.kin.as_json(k, moving) for k in range(self.kin.n)]
+        return {"mechanism": mechanism, "positions": positions}
+
+
+def analyze(mech: Mechanism) -> Analysis:
+    """Run structure, cycle and kinematics on a loaded variant.
+
+    Raises
+    ------
+    StructureError, AssemblyError, SingularPoseError, InputError
+    """
+    structure = analyse(mech)
+    cycle = analyse_cycle(mech)
+    kin = sweep(mech, cycle)
+    for name, arrays in (("points", kin.pos.points), ("velocities", kin.vel.points),
+                         ("accelerations", kin.acc.points)):
+        for key, arr in arrays.items():
+            if not np.all(np.isfinite(arr)):  # pragma: no cover - a solver bug, never input
+                raise RuntimeError(f"non-finite {name} of {key}")
+    return Analysis(mech, structure, cycle, kin)

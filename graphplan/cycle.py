@@ -1,0 +1,277 @@
+"""The cycle of the output link: dead centres, stroke, and the positions to analyse.
+
+The output coordinate ``q`` is the displacement of the output slider along its
+frame guide (m, positive along the guide's direction), or the angle of an output
+rocker (rad, CCW). Its extremes over one crank turn are the dead (extreme)
+positions: the working stroke runs from the *start* dead centre to the *end* one
+in the sense of rotation; with ``output.working = "+"`` q grows on the way, so
+the start is the minimum of q and the end its maximum.
+
+The positions are ``count`` equal steps of the crank from the first one, in the
+sense of rotation, numbered from ``number_from``, plus the named extra positions;
+all sorted by crank travel from the first.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .errors import InputError, SingularPoseError
+from .kinematics import Kinematics, solve
+from .model import Mechanism
+from .positions import slide_key, solve_positions
+from .velocities import LOCKUP_SINE, solve_velocities
+
+Array = NDArray[np.float64]
+
+CHECK_GRID = 3600
+"""Crank angles per turn at which the whole cycle is assembled and checked."""
+
+
+@dataclass(frozen=True, slots=True)
+class Cycle:
+    """Dead centres, stroke and the list of analysed positions.
+
+    Attributes
+    ----------
+    output_kind : str
+        ``"slider"`` (q in m) or ``"rocker"`` (q in rad).
+    dead_centres : tuple[float, float] | tuple[()]
+        Crank angles (rad, in [0, 2π)) of the start and the end of the working stroke.
+    q_start, q_end : float
+        Output coordinate at those dead centres.
+    stroke : float
+        Travel of the output point between the dead centres, m (chord for a rocker).
+    swing : float
+        Swing of an output rocker, rad (0 for a slider).
+    working_turn : float
+        Crank turn of the working stroke, rad (0 when there are no dead centres).
+    labels : tuple[str, ...]
+    phi : ndarray
+        Crank angle of each position, rad.
+    min_conditioning : dict[str, tuple[float, float]]
+        Per dyad: the smallest |sin| between its equation lines over the turn, and
+        the crank angle (rad) where it occurs.
+    """
+
+    output_kind: str
+    dead_centres: tuple[float, ...]
+    q_start: float
+    q_end: float
+    stroke: float
+    swing: float
+    working_turn: float
+    labels: tuple[str, ...]
+    phi: Array
+    min_conditioning: dict[str, tuple[float, float]]
+
+    @property
+    def time_ratio(self) -> float:
+        """Coefficient of change of average speed K = φ_working / φ_idle."""
+        if not self.working_turn:
+            return 1.0
+        return self.working_turn / (2 * math.pi - self.working_turn)
+
+
+def output_coordinate(mech: Mechanism, kin_pos, kin_vel=None):
+    """Return ``(kind, q, dq/dt, point)`` of the output link over a sweep."""
+    out = mech.output.link
+    for d in mech.dyads:
+        if out not in d.links:
+            continue
+        for key, (G, u) in kin_pos.guides.items():
+            slider, carrier = key.split("/")
+            if slider == out and carrier == mech.frame_link:
+                point = d.new_points[0] if d.new_points else d.joints[0]
+                q = np.sum((kin_pos.points[point] - G) * u, axis=-1)
+                rate = kin_vel.sliding[key] if kin_vel is not None else None
+                return "slider", q, rate, point
+        point = d.joints[1] if d.kind == "RRR" else d.joints[0]
+        q = np.unwrap(kin_pos.theta[out])
+        rate = kin_vel.omega[out] if kin_vel is not None else None
+        return "rocker", q, rate, point
+    q = np.unwrap(kin_pos.theta[out])
+    rate = kin_vel.omega[out] if kin_vel is not None else None
+    return "rocker", q, rate, mech.crank.pin
+
+
+def _travel(phi, phi0, sense):
+    """Crank turn from phi0 to phi in the sense of rotation, in [0, 2π)."""
+    return np.mod((np.asarray(phi) - phi0) * sense, 2 * math.pi)
+
+
+def analyse_cycle(mech: Mechanism) -> Cycle:
+    """Check the whole turn and find dead centres, stroke and positions.
+
+    Raises
+    ------
+    AssemblyError, SingularPoseError
+        If some dyad cannot be assembled, or locks up, anywhere in the turn.
+    InputError
+        If the positions refer to dead centres that the output does not have.
+    """
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    grid = np.linspace(0.0, 2 * math.pi, CHECK_GRID, endpoint=False)
+    pos = solve_positions(mech, grid)
+    vel = solve_velocities(mech, pos)
+    min_cond = {}
+    for name, s in vel.conditioning.items():
+        k = int(np.argmin(s))
+        a0, a1 = grid[k] - 2 * math.pi / CHECK_GRID, grid[k] + 2 * math.pi / CHECK_GRID
+        phi_min, s_min = _golden_min(lambda x, name=name: _cond(mech, x, name), a0, a1)
+        if s_min <= LOCKUP_SINE:
+            raise SingularPoseError(
+                f"{mech.source}: dyad {name} passes through a lock-up at "
+                f"φ = {math.degrees(phi_min) % 360:.2f}° (the two lines of its vector equation "
+                "become parallel)"
+            )
+        min_cond[name] = (min(s_min, float(s[k])), phi_min if s_min < s[k] else float(grid[k]))
+
+    kind, q, rate, point = output_coordinate(mech, pos, vel)
+    dead: tuple[float, ...] = ()
+    q_start = q_end = 0.0
+    stroke = swing = turn = 0.0
+    zero = np.sign(rate) != np.sign(np.roll(rate, -1))
+    if zero.any() and np.ptp(q) > 1e-12:
+        idx = np.nonzero(zero)[0]
+        lo = grid[idx]
+        hi = lo + 2 * math.pi / CHECK_GRID
+        roots = _bisect_rate(mech, lo, hi)
+        rp = solve_positions(mech, roots)
+        _, qr, _, _ = output_coordinate(mech, rp)
+        # unwrap a rocker angle consistently with the grid's branch
+        if kind == "rocker":
+            qr = qr + 2 * math.pi * np.round((np.interp(roots, grid, q) - qr) / (2 * math.pi))
+        k_min, k_max = int(np.argmin(qr)), int(np.argmax(qr))
+        if mech.output.working > 0:
+            ks, ke = k_min, k_max
+        else:
+            ks, ke = k_max, k_min
+        dead = (float(roots[ks] % (2 * math.pi)), float(roots[ke] % (2 * math.pi)))
+        q_start, q_end = float(qr[ks]), float(qr[ke])
+        p_s, p_e = rp.points[point][ks], rp.points[point][ke]
+        stroke = float(np.hypot(*(p_e - p_s)))
+        swing = abs(q_end - q_start) if kind == "rocker" else 0.0
+        turn = float(_travel(dead[1], dead[0], sense))
+
+    def dead_centre(which: str, path: str) -> float:
+        if not dead:
+            raise InputError(f"{mech.source}: {path}: the output link {mech.output.link!r} has "
+                             "no dead centres; give a crank angle instead")
+        return dead[0] if which == "start" else dead[1]
+
+    P = mech.positions
+    first = (dead_centre(P.first, "positions.first") if isinstance(P.first, str)
+             else float(P.first))
+    step = 2 * math.pi / P.count
+    phis = [first + sense * k * step for k in range(P.count)]
+    labels = [str(P.number_from + k) for k in range(P.count)]
+    for n, ex in enumerate(P.extra):
+        path = f"positions.extra[{n}]"
+        if ex.phi is not None:
+            phis.append(ex.phi)
+        elif ex.from_dead_centre is not None:
+            phis.append(dead_centre(ex.from_dead_centre, f"{path}.from") + sense * ex.turn)
+        else:
+            dead_centre("start", f"{path}.stroke")
+            phis.append(_stroke_angle(mech, dead[0], turn, sense, q_start, q_end, ex.stroke))
+        labels.append(ex.label)
+    phis_a = np.mod(np.asarray(phis), 2 * math.pi)
+    order = np.argsort(_travel(phis_a, first, sense), kind="stable")
+    return Cycle(
+        output_kind=kind,
+        dead_centres=dead,
+        q_start=q_start,
+        q_end=q_end,
+        stroke=stroke,
+        swing=swing,
+        working_turn=turn,
+        labels=tuple(labels[k] for k in order),
+        phi=phis_a[order],
+        min_conditioning=min_cond,
+    )
+
+
+def travel_fraction(mech: Mechanism, cycle: Cycle, q) -> Array:
+    """Travel of the output from the start of the working stroke, as a fraction of it."""
+    span = cycle.q_end - cycle.q_start
+    if span == 0:
+        return np.zeros_like(np.asarray(q, float))
+    return (np.asarray(q, float) - cycle.q_start) / span
+
+
+def in_working_stroke(mech: Mechanism, cycle: Cycle, phi) -> NDArray[np.bool_]:
+    """True where the crank is between the start and end dead centres (in rotation sense)."""
+    if not cycle.dead_centres:
+        return np.zeros(np.shape(phi), bool)
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    t = _travel(phi, cycle.dead_centres[0], sense)
+    return t < cycle.working_turn
+
+
+def sweep(mech: Mechanism, cycle: Cycle) -> Kinematics:
+    """Kinematics at the cycle's positions, labelled."""
+    return solve(mech, cycle.phi, cycle.labels)
+
+
+def _cond(mech, x, name):
+    pos = solve_positions(mech, np.atleast_1d(x))
+    return solve_velocities(mech, pos).conditioning[name]
+
+
+def _golden_min(f, a, b, iters=60):
+    g = (math.sqrt(5) - 1) / 2
+    c, d = b - g * (b - a), a + g * (b - a)
+    fc, fd = float(f(c)[0]), float(f(d)[0])
+    for _ in range(iters):
+        if fc < fd:
+            b, d, fd = d, c, fc
+            c = b - g * (b - a)
+            fc = float(f(c)[0])
+        else:
+            a, c, fc = c, d, fd
+            d = a + g * (b - a)
+            fd = float(f(d)[0])
+    x = (a + b) / 2
+    return x, float(f(x)[0])
+
+
+def _rate(mech, phi):
+    pos = solve_positions(mech, phi)
+    vel = solve_velocities(mech, pos)
+    return output_coordinate(mech, pos, vel)[2]
+
+
+def _bisect_rate(mech, lo, hi, iters=60):
+    """Bisection, vectorised over brackets, for zeros of the output rate."""
+    f_lo = _rate(mech, lo)
+    for _ in range(iters):
+        mid = 0.5 * (lo + hi)
+        f_mid = _rate(mech, mid)
+        left = np.sign(f_mid) == np.sign(f_lo)
+        lo = np.where(left, mid, lo)
+        f_lo = np.where(left, f_mid, f_lo)
+        hi = np.where(left, hi, mid)
+    return 0.5 * (lo + hi)
+
+
+def _stroke_angle(mech, phi_start, turn, sense, q_start, q_end, fraction) -> float:
+    """Crank angle in the working stroke where the output has travelled ``fraction``."""
+    lo, hi = 0.0, turn
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        pos = solve_positions(mech, [phi_start + sense * mid])
+        kind, q, _, _ = output_coordinate(mech, pos)
+        q = float(q[0])
+        if kind == "rocker":  # the same turn of the angle as the start
+            q += 2 * math.pi * round((q_start - q) / (2 * math.pi))
+        f = (q - q_start) / (q_end - q_start)
+        if f < fraction:
+            lo = mid
+        else:
+            hi = mid
+    return phi_start + sense * 0.5 * (lo + hi)

@@ -1,0 +1,660 @@
+"""Read a variant file (TOML) into a validated :class:`~graphplan.model.Mechanism`.
+
+Every error is an :class:`~graphplan.errors.InputError` whose one-line message
+names the file, the key path and what was expected, e.g.
+``examples/press.toml: dyads[0].length: must be > 0 (got -200)``.
+Units are converted here, at the edge: lengths by ``variant.length_unit``
+(``"m"`` or ``"mm"``), angles from degrees to radians. The key reference is
+``docs/variant-format.md``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .model import (
+    DYAD_KINDS,
+    JOINT_COUNT,
+    NEW_JOINTS,
+    Crank,
+    Dyad,
+    ExtraPosition,
+    Guide,
+    LinkProps,
+    Mechanism,
+    Output,
+    PointOnLink,
+    Positions,
+    Resistance,
+)
+
+LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
+NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
+LINK_RE = re.compile(r"^[0-9]{1,3}$")
+
+# Sections and keys each section accepts. Later stages (drawing, kinetostatics,
+# dynamics, title block) keep their settings here so that a typo is caught at load.
+SECTIONS: dict[str, set[str] | None] = {
+    "variant": {"name", "length_unit", "description"},
+    "frame": {"link", "points"},
+    "crank": {"link", "joints", "length", "rpm", "direction", "mass", "inertia", "centre"},
+    "dyads": None,
+    "points": None,
+    "links": None,
+    "gravity": {"enabled", "g", "angle"},
+    "loads": None,
+    "positions": {"count", "first", "number_from", "extra"},
+    "output": {"link", "working"},
+    "kinetostatics": {"neglect_below", "inertia", "shift_inertia_force"},
+    "dynamics": {
+        "delta",
+        "efficiency",
+        "crank_inertia",
+        "flywheel",
+        "grid",
+        "motor_series",
+        "motor_speed",
+    },
+    "drawing": {"format", "Kl", "Kv", "Ka", "Kp", "reading_mm", "language", "positions"},
+    "title_block": {
+        "title",
+        "designation",
+        "author",
+        "checker",
+        "teacher",
+        "group",
+        "school",
+        "sheet",
+        "sheets",
+        "date",
+        "litera",
+        "mass",
+        "scale",
+    },
+}
+
+
+class _Reader:
+    """Typed access to a TOML table that reports errors with the file and key path."""
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, path: str, message: str) -> InputError:
+        return InputError(f"{self.source}: {path}: {message}")
+
+    def table(self, value: Any, path: str) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(path, f"expected a table (got {_typename(value)})")
+        return value
+
+    def keys(self, table: dict, path: str, allowed: set[str], required: set[str] = frozenset()):
+        for k in table:
+            if k not in allowed:
+                hint = ", ".join(sorted(allowed))
+                raise self.fail(_join(path, k), f"unknown key (expected one of: {hint})")
+        for k in sorted(required):
+            if k not in table:
+                raise self.fail(_join(path, k), "missing required key")
+
+    def number(self, value: Any, path: str, *, positive=False, nonneg=False, lo=None, hi=None):
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise self.fail(path, f"expected a number (got {_typename(value)} {value!r})")
+        x = float(value)
+        if not math.isfinite(x):
+            raise self.fail(path, f"expected a finite number (got {value!r})")
+        if positive and not x > 0:
+            raise self.fail(path, f"must be > 0 (got {value!r})")
+        if nonneg and x < 0:
+            raise self.fail(path, f"must be >= 0 (got {value!r})")
+        if lo is not None and x < lo:
+            raise self.fail(path, f"must be >= {lo} (got {value!r})")
+        if hi is not None and x > hi:
+            raise self.fail(path, f"must be <= {hi} (got {value!r})")
+        return x
+
+    def integer(self, value: Any, path: str, lo: int, hi: int) -> int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise self.fail(path, f"expected a whole number (got {_typename(value)} {value!r})")
+        if not lo <= value <= hi:
+            raise self.fail(path, f"must be from {lo} to {hi} (got {value!r})")
+        return int(value)
+
+    def string(self, value: Any, path: str, choices=None) -> str:
+        if not isinstance(value, str):
+            raise self.fail(path, f"expected a string (got {_typename(value)} {value!r})")
+        if choices is not None and value not in choices:
+            raise self.fail(path, f"expected one of {', '.join(map(repr, choices))} (got {value!r})")
+        return value
+
+    def name(self, value: Any, path: str) -> str:
+        s = self.string(value, path)
+        if not NAME_RE.match(s):
+            raise self.fail(path, f"expected a point name like 'A', 'S2', 'O3' (got {s!r})")
+        return s
+
+    def link(self, value: Any, path: str) -> str:
+        if isinstance(value, int) and not isinstance(value, bool):
+            value = str(value)
+        s = self.string(value, path)
+        if not LINK_RE.match(s):
+            raise self.fail(path, f"expected a link number like \"2\" (got {s!r})")
+        return s
+
+    def boolean(self, value: Any, path: str) -> bool:
+        if not isinstance(value, bool):
+            raise self.fail(path, f"expected true or false (got {_typename(value)} {value!r})")
+        return value
+
+    def array(self, value: Any, path: str, length: int | None = None, minlen: int = 0) -> list:
+        if not isinstance(value, list):
+            raise self.fail(path, f"expected an array (got {_typename(value)})")
+        if length is not None and len(value) != length:
+            raise self.fail(path, f"expected {length} items (got {len(value)})")
+        if len(value) < minlen:
+            raise self.fail(path, f"expected at least {minlen} items (got {len(value)})")
+        return value
+
+    def xy(self, value: Any, path: str, unit: float) -> tuple[float, float]:
+        items = self.array(value, path, 2)
+        return (
+            self.number(items[0], f"{path}[0]") * unit,
+            self.number(items[1], f"{path}[1]") * unit,
+        )
+
+
+def _typename(value: Any) -> str:
+    return {dict: "table", list: "array", str: "string", bool: "boolean"}.get(
+        type(value), type(value).__name__
+    )
+
+
+def _join(path: str, key: str) -> str:
+    return f"{path}.{key}" if path else key
+
+
+def load(path: str | Path) -> Mechanism:
+    """Load and validate a variant file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML file.
+
+    Returns
+    -------
+    Mechanism
+        In SI units (m, kg, N, rad, rad/s).
+
+    Raises
+    ------
+    InputError
+        For any problem with the file, naming the file and the key.
+    """
+    path = Path(path)
+    source = str(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise InputError(f"{source}: file not found") from None
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{source}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise InputError(f"{source}: cannot read ({exc.strerror})") from None
+    return loads(text, source=source)
+
+
+def loads(text: str, source: str = "<string>") -> Mechanism:
+    """Validate a variant given as TOML text (see :func:`load`)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{source}: not valid TOML ({exc})") from None
+    return _build(data, _Reader(source))
+
+
+def _build(data: dict, r: _Reader) -> Mechanism:
+    r.keys(data, "", set(SECTIONS), {"frame", "crank", "dyads"})
+    for sec, allowed in SECTIONS.items():
+        if sec in data and allowed is not None:
+            r.keys(r.table(data[sec], sec), sec, allowed)
+
+    variant = r.table(data.get("variant", {}), "variant")
+    unit_name = r.string(variant.get("length_unit", "m"), "variant.length_unit", tuple(LENGTH_UNITS))
+    unit = LENGTH_UNITS[unit_name]
+    name = r.string(variant.get("name", Path(r.source).stem), "variant.name")
+
+    # -- frame
+    frame = r.table(data["frame"], "frame")
+    r.keys(frame, "frame", SECTIONS["frame"], {"link", "points"})
+    frame_link = r.link(frame["link"], "frame.link")
+    fpts = r.table(frame["points"], "frame.points")
+    frame_points: dict[str, tuple[float, float]] = {}
+    for k, v in fpts.items():
+        r.name(k, f"frame.points.{k}")
+        frame_points[k] = r.xy(v, f"frame.points.{k}", unit)
+    if not frame_points:
+        raise r.fail("frame.points", "expected at least one fixed point (the crank pivot)")
+
+    known_points: dict[str, str] = {p: frame_link for p in frame_points}  # point -> home link
+    link_points: dict[str, list[str]] = {frame_link: list(frame_points)}
+    link_order: list[str] = [frame_link]
+
+    def need_point(value: Any, path: str, *, known: bool) -> str:
+        p = r.name(value, path)
+        if known and p not in known_points:
+            have = ", ".join(known_points) or "none"
+            raise r.fail(path, f"point {p!r} is not defined before this (known: {have})")
+        if not known and p in known_points:
+            raise r.fail(path, f"point {p!r} is already defined; a new joint needs a new name")
+        return p
+
+    def need_link(value: Any, path: str, *, known: bool) -> str:
+        ln = r.link(value, path)
+        if known and ln not in link_points:
+            have = ", ".join(link_order)
+            raise r.fail(path, f"link {ln!r} is not defined before this (known: {have})")
+        return ln
+
+    # -- crank
+    crank_t = data["crank"]
+    r.keys(crank_t, "crank", SECTIONS["crank"], {"link", "joints", "length", "rpm"})
+    crank_link = r.link(crank_t["link"], "crank.link")
+    if crank_link == frame_link:
+        raise r.fail("crank.link", f"the crank cannot be the frame link {frame_link!r}")
+    cj = r.array(crank_t["joints"], "crank.joints", 2)
+    pivot = need_point(cj[0], "crank.joints[0]", known=True)
+    if known_points[pivot] != frame_link:
+        raise r.fail("crank.joints[0]", f"the crank pivot {pivot!r} must be a frame point")
+    pin = need_point(cj[1], "crank.joints[1]", known=False)
+    length = r.number(crank_t["length"], "crank.length", positive=True) * unit
+    rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True)
+    direction = r.string(crank_t.get("direction", "ccw"), "crank.direction", ("ccw", "cw"))
+    omega = math.pi * rpm / 30.0 * (1.0 if direction == "ccw" else -1.0)
+    crank = Crank(crank_link, pivot, pin, length, rpm, omega)
+    known_points[pin] = crank_link
+    link_points[crank_link] = [pivot, pin]
+    link_order.append(crank_link)
+
+    # -- extra points: defined in [[points]], placed as soon as their link is known
+    raw_points = data.get("points", [])
+    r.array(raw_points, "points")
+    pending: list[tuple[int, dict]] = []
+    for n, pt in enumerate(raw_points):
+        path = f"points[{n}]"
+        r.table(pt, path)
+        r.keys(pt, path, {"name", "link", "from", "toward", "along", "across", "fraction"},
+               {"name", "link", "from"})
+        pending.append((n, pt))
+    points: list[PointOnLink] = []
+
+    def place_points() -> None:
+        progress = True
+        while progress:
+            progress = False
+            for item in list(pending):
+                n, pt = item
+                path = f"points[{n}]"
+                ln = r.link(pt["link"], f"{path}.link")
+                if ln not in link_points:
+                    continue
+                nm = need_point(pt["name"], f"{path}.name", known=False)
+                origin = r.name(pt["from"], f"{path}.from")
+                if origin not in link_points[ln]:
+                    raise r.fail(f"{path}.from", f"point {origin!r} is not on link {ln!r} "
+                                 f"(its points: {', '.join(link_points[ln])})")
+                toward = None
+                if "toward" in pt:
+                    toward = r.name(pt["toward"], f"{path}.toward")
+                    if toward not in link_points[ln]:
+                        raise r.fail(f"{path}.toward", f"point {toward!r} is not on link {ln!r} "
+                                     f"(its points: {', '.join(link_points[ln])})")
+                    if toward == origin:
+                        raise r.fail(f"{path}.toward", "must differ from 'from'")
+                fraction = None
+                if "fraction" in pt:
+                    if toward is None:
+                        raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
+                    if "along" in pt:
+                        raise r.fail(f"{path}.fraction", "give either 'fraction' or 'along', not both")
+                    fraction = r.number(pt["fraction"], f"{path}.fraction")
+                along = r.number(pt.get("along", 0.0), f"{path}.along") * unit
+                across = r.number(pt.get("across", 0.0), f"{path}.across") * unit
+                points.append(PointOnLink(nm, ln, origin, toward, along, across, fraction))
+                known_points[nm] = ln
+                link_points[ln].append(nm)
+                pending.remove(item)
+                progress = True
+
+    if frame_link in link_points:
+        place_points()
+
+    # -- dyads
+    raw_dyads = r.array(data["dyads"], "dyads", minlen=1)
+    dyads: list[Dyad] = []
+    for n, dt in enumerate(raw_dyads):
+        path = f"dyads[{n}]"
+        r.table(dt, path)
+        kind = r.string(dt.get("kind"), f"{path}.kind", DYAD_KINDS) if "kind" in dt else None
+        if kind is None:
+            raise r.fail(f"{path}.kind", "missing required key")
+        allowed = {"kind", "links", "joints", "branch"}
+        required = {"kind", "links", "joints"}
+        extra = {
+            "RRR": ({"lengths"}, {"lengths"}),
+            "RRP": ({"length", "guide"}, {"length", "guide"}),
+            "RPR": ({"offset"}, set()),
+            "PRP": ({"guides"}, {"guides"}),
+            "RPP": ({"guide", "slot_angle"}, {"guide"}),
+        }[kind]
+        r.keys(dt, path, allowed | extra[0], required | extra[1])
+        lk = r.array(dt["links"], f"{path}.links", 2)
+        li = need_link(lk[0], f"{path}.links[0]", known=False)
+        lj = need_link(lk[1], f"{path}.links[1]", known=False)
+        jt = r.array(dt["joints"], f"{path}.joints", JOINT_COUNT[kind])
+        new_idx = NEW_JOINTS[kind]
+        joints = tuple(
+            need_point(v, f"{path}.joints[{m}]", known=m not in new_idx) for m, v in enumerate(jt)
+        )
+        if len(set(joints)) != len(joints):
+            raise r.fail(f"{path}.joints", f"joints must be distinct (got {list(joints)})")
+        branch_raw = dt.get("branch", "+")
+        branch_s = r.string(branch_raw, f"{path}.branch", ("+", "-"))
+        branch = 1 if branch_s == "+" else -1
+        lengths: tuple[float, ...] = ()
+        guides: tuple[Guide, ...] = ()
+        offset = 0.0
+        slot_angle = 0.0
+        if kind == "RRR":
+            ls = r.array(dt["lengths"], f"{path}.lengths", 2)
+            lengths = tuple(
+                r.number(v, f"{path}.lengths[{m}]", positive=True) * unit for m, v in enumerate(ls)
+            )
+        elif kind == "RRP":
+            lengths = (r.number(dt["length"], f"{path}.length", positive=True) * unit,)
+            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
+        elif kind == "RPR":
+            offset = r.number(dt.get("offset", 0.0), f"{path}.offset") * unit
+        elif kind == "PRP":
+            gs = r.array(dt["guides"], f"{path}.guides", 2)
+            guides = tuple(
+                _guide(r, g, f"{path}.guides[{m}]", link_points, frame_link, unit)
+                for m, g in enumerate(gs)
+            )
+        elif kind == "RPP":
+            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
+            slot_angle = math.radians(
+                r.number(dt.get("slot_angle", 90.0), f"{path}.slot_angle")
+            )
+            if abs(math.sin(slot_angle)) < 1e-6:
+                raise r.fail(f"{path}.slot_angle",
+                             "the slot must not be parallel to the guide (got "
+                             f"{dt.get('slot_angle', 90.0)!r}°)")
+        dyad = Dyad(kind, (li, lj), joints, lengths, guides, offset, slot_angle, branch)
+        dyads.append(dyad)
+        for p in dyad.new_points:
+            known_points[p] = li if kind != "RPP" else lj
+        for ln in (li, lj):
+            if ln not in link_points:
+                link_points[ln] = []
+                link_order.append(ln)
+        for ln, ps in zip((li, lj), dyad.points_on_links, strict=True):
+            for p in ps:
+                if p not in link_points[ln]:
+                    link_points[ln].append(p)
+        place_points()
+
+    if pending:
+        n, pt = pending[0]
+        raise r.fail(f"points[{n}].link", f"link {pt['link']!r} is not a link of this mechanism "
+                     f"(links: {', '.join(link_order)})")
+
+    # -- link properties
+    links: dict[str, LinkProps] = {}
+    raw_links = r.table(data.get("links", {}), "links")
+    crank_props = {k: crank_t[k] for k in ("mass", "inertia", "centre") if k in crank_t}
+    if crank_props:
+        raw_links = {**raw_links}
+        if crank_link in raw_links:
+            raise r.fail(f"links.{crank_link}", "crank mass given twice (in [crank] and [links])")
+        raw_links[crank_link] = crank_props
+    for ln, props in raw_links.items():
+        path = f"links.{ln}"
+        r.link(ln, path)
+        if ln not in link_points or ln == frame_link:
+            raise r.fail(path, f"not a moving link of this mechanism (moving links: "
+                         f"{', '.join(x for x in link_order if x != frame_link)})")
+        r.table(props, path)
+        r.keys(props, path, {"mass", "inertia", "centre"})
+        mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True)
+        inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True)
+        centre = None
+        if "centre" in props:
+            centre = r.name(props["centre"], f"{path}.centre")
+            if centre not in link_points[ln]:
+                raise r.fail(f"{path}.centre", f"point {centre!r} is not on link {ln!r} "
+                             f"(its points: {', '.join(link_points[ln])})")
+        elif mass > 0:
+            raise r.fail(f"{path}.centre", "a link with mass needs its centre of mass point")
+        links[ln] = LinkProps(mass, inertia, centre)
+
+    # -- gravity
+    grav = r.table(data.get("gravity", {}), "gravity")
+    g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
+    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True)
+    g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
+    gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
+    gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
+
+    # -- output
+    last = dyads[-1]
+    out_t = r.table(data.get("output", {}), "output")
+    out_link = last.links[1]
+    if "link" in out_t:
+        out_link = need_link(out_t["link"], "output.link", known=True)
+        if out_link in (frame_link,):
+            raise r.fail("output.link", "the output cannot be the frame")
+    working = 1 if r.string(out_t.get("working", "+"), "output.working", ("+", "-")) == "+" else -1
+    output = Output(out_link, working)
+
+    # -- loads
+    resistances: list[Resistance] = []
+    raw_loads = r.array(data.get("loads", []), "loads")
+    for n, lt in enumerate(raw_loads):
+        path = f"loads[{n}]"
+        r.table(lt, path)
+        r.keys(lt, path, {"kind", "link", "point", "max", "diagram"},
+               {"kind", "link", "max", "diagram"})
+        kind = r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
+        ln = need_link(lt["link"], f"{path}.link", known=True)
+        if ln == frame_link:
+            raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
+        point = None
+        if kind == "force":
+            if "point" not in lt:
+                raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
+            point = r.name(lt["point"], f"{path}.point")
+            if point not in link_points[ln]:
+                raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
+                             f"(its points: {', '.join(link_points[ln])})")
+            if not _translates_on_frame(ln, dyads, frame_link):
+                raise r.fail(f"{path}.link", f"a resistance force needs a slider moving on a frame "
+                             f"guide; link {ln!r} is not one")
+        elif "point" in lt:
+            raise r.fail(f"{path}.point", "a moment load has no point")
+        elif not _rotates_about_frame(ln, dyads, crank, known_points, frame_link):
+            raise r.fail(f"{path}.link", f"a resisting moment needs a rocker pivoted on the frame; "
+                         f"link {ln!r} is not one")
+        if ln != output.link:
+            raise r.fail(f"{path}.link", f"the resistance acts on the output link "
+                         f"({output.link!r}), whose stroke defines its diagram (got {ln!r})")
+        mx = r.number(lt["max"], f"{path}.max", nonneg=True)
+        diag = r.array(lt["diagram"], f"{path}.diagram", minlen=2)
+        pairs = []
+        for m, pr in enumerate(diag):
+            pp = r.array(pr, f"{path}.diagram[{m}]", 2)
+            s = r.number(pp[0], f"{path}.diagram[{m}][0]", lo=0.0, hi=1.0)
+            f = r.number(pp[1], f"{path}.diagram[{m}][1]", lo=0.0, hi=1.0)
+            if pairs and s < pairs[-1][0]:
+                raise r.fail(f"{path}.diagram[{m}][0]",
+                             f"travel fractions must not decrease (got {s} after {pairs[-1][0]})")
+            pairs.append((s, f))
+        resistances.append(Resistance(kind, ln, point, mx, tuple(pairs)))
+
+    # -- positions
+    pos_t = r.table(data.get("positions", {}), "positions")
+    count = r.integer(pos_t.get("count", 8), "positions.count", 1, 3600)
+    first_raw = pos_t.get("first", "start")
+    if isinstance(first_raw, str):
+        first: str | float = r.string(first_raw, "positions.first", ("start", "end"))
+    else:
+        first = math.radians(r.number(first_raw, "positions.first"))
+    number_from = r.integer(pos_t.get("number_from", 1), "positions.number_from", 0, 1)
+    extras: list[ExtraPosition] = []
+    labels = {str(number_from + k) for k in range(count)}
+    for n, et in enumerate(r.array(pos_t.get("extra", []), "positions.extra")):
+        path = f"positions.extra[{n}]"
+        r.table(et, path)
+        r.keys(et, path, {"label", "phi", "from", "turn", "stroke"}, {"label"})
+        label = r.string(et["label"], f"{path}.label")
+        if not label.strip():
+            raise r.fail(f"{path}.label", "must not be empty")
+        if label in labels:
+            raise r.fail(f"{path}.label", f"label {label!r} is already used")
+        labels.add(label)
+        ways = [k for k in ("phi", "from", "stroke") if k in et]
+        if len(ways) != 1:
+            raise r.fail(path, "give exactly one of 'phi' (crank angle, °), 'from' (dead centre "
+                         "with 'turn'), 'stroke' (travel fraction of the working stroke)")
+        if "turn" in et and "from" not in et:
+            raise r.fail(f"{path}.turn", "goes with 'from'")
+        if "phi" in et:
+            extras.append(ExtraPosition(label, phi=math.radians(r.number(et["phi"], f"{path}.phi"))))
+        elif "from" in et:
+            extras.append(ExtraPosition(
+                label,
+                from_dead_centre=r.string(et["from"], f"{path}.from", ("start", "end")),
+                turn=math.radians(r.number(et.get("turn", 0.0), f"{path}.turn", lo=-360, hi=360)),
+            ))
+        else:
+            extras.append(ExtraPosition(
+                label, stroke=r.number(et["stroke"], f"{path}.stroke", lo=0.0, hi=1.0)))
+    positions = Positions(count, first, number_from, tuple(extras))
+
+    settings = {
+        sec: data[sec]
+        for sec in ("kinetostatics", "dynamics", "drawing", "title_block", "variant")
+        if sec in data
+    }
+    _check_settings(r, settings)
+
+    return Mechanism(
+        name=name,
+        source=r.source,
+        frame_link=frame_link,
+        frame_points=frame_points,
+        crank=crank,
+        dyads=tuple(dyads),
+        points=tuple(points),
+        links=links,
+        gravity=gravity,
+        resistances=tuple(resistances),
+        positions=positions,
+        output=output,
+        length_unit=unit_name,
+        settings=settings,
+    )
+
+
+def _guide(r: _Reader, value: Any, path: str, link_points, frame_link: str, unit: float) -> Guide:
+    g = r.table(value, path)
+    r.keys(g, path, {"link", "through", "angle", "toward"}, {"link", "through"})
+    ln = r.link(g["link"], f"{path}.link")
+    if ln not in link_points:
+        raise r.fail(f"{path}.link", f"link {ln!r} is not defined before this dyad "
+                     f"(known: {', '.join(link_points)})")
+    through = None
+    xy = None
+    if isinstance(g["through"], list):
+        if ln != frame_link:
+            raise r.fail(f"{path}.through", "coordinates are allowed for a frame guide only; "
+                         "on a moving link name a point of it")
+        xy = r.xy(g["through"], f"{path}.through", unit)
+    else:
+        through = r.name(g["through"], f"{path}.through")
+        if through not in link_points[ln]:
+            raise r.fail(f"{path}.through", f"point {through!r} is not on link {ln!r} "
+                         f"(its points: {', '.join(link_points[ln])})")
+    if "angle" in g and "toward" in g:
+        raise r.fail(path, "give either 'angle' or 'toward', not both")
+    toward = None
+    if "toward" in g:
+        toward = r.name(g["toward"], f"{path}.toward")
+        if toward not in link_points[ln] or toward == through:
+            raise r.fail(f"{path}.toward", f"expected another point of link {ln!r} "
+                         f"(its points: {', '.join(link_points[ln])})")
+    angle = math.radians(r.number(g.get("angle", 0.0), f"{path}.angle"))
+    return Guide(ln, through, xy, angle, toward)
+
+
+def _translates_on_frame(link: str, dyads: list[Dyad], frame_link: str) -> bool:
+    for d in dyads:
+        if d.kind in ("RRP", "RPP") and d.links[1] == link:
+            return d.guides[0].link == frame_link
+        if d.kind == "PRP" and link in d.links:
+            return d.guides[d.links.index(link)].link == frame_link
+    return False
+
+
+def _rotates_about_frame(link, dyads, crank, known_points, frame_link) -> bool:
+    if link == crank.link:
+        return True
+    for d in dyads:
+        if d.kind in ("RRR", "RPR") and d.links[1] == link:
+            pivot = d.joints[-1]
+            return known_points.get(pivot) == frame_link
+    return False
+
+
+def _check_settings(r: _Reader, settings: dict) -> None:
+    """Validate the values of the settings that later stages read."""
+    kin = settings.get("kinetostatics", {})
+    if "neglect_below" in kin:
+        r.number(kin["neglect_below"], "kinetostatics.neglect_below", lo=0.0, hi=1.0)
+    if "inertia" in kin:
+        r.boolean(kin["inertia"], "kinetostatics.inertia")
+    if "shift_inertia_force" in kin:
+        r.boolean(kin["shift_inertia_force"], "kinetostatics.shift_inertia_force")
+    dyn = settings.get("dynamics", {})
+    if "delta" in dyn:
+        r.number(dyn["delta"], "dynamics.delta", positive=True, hi=1.0)
+    if "efficiency" in dyn:
+        r.number(dyn["efficiency"], "dynamics.efficiency", positive=True, hi=1.0)
+    if "crank_inertia" in dyn:
+        r.number(dyn["crank_inertia"], "dynamics.crank_inertia", nonneg=True)
+    if "grid" in dyn:
+        r.integer(dyn["grid"], "dynamics.grid", 12, 100000)
+    drw = settings.get("drawing", {})
+    for key in ("Kl", "Kv", "Ka", "Kp"):
+        if key in drw:
+            r.number(drw[key], f"drawing.{key}", positive=True)
+    if "reading_mm" in drw:
+        r.number(drw["reading_mm"], "drawing.reading_mm", nonneg=True, hi=5.0)
+    if "format" in drw:
+        r.string(drw["format"], "drawing.format", ("A1", "A2", "A3"))
+    if "language" in drw:
+        r.string(drw["language"], "drawing.language", ("ru", "en"))
+    tb = settings.get("title_block", {})
+    for key, value in tb.items():
+        if key in ("sheet", "sheets"):
+            r.integer(value, f"title_block.{key}", 1, 99)
+        else:
+            r.string(value, f"title_block.{key}")
+    var = settings.get("variant", {})
+    if "description" in var:
+        r.string(var["description"], "variant.description")

@@ -1,0 +1,1 @@
+"""Renderers: text tables here; SVG and plots import their heavy libraries lazily."""

@@ -1,0 +1,92 @@
+"""The command line: exit codes, one-line errors, the JSON contract."""
+
+import json
+import math
+
+import pytest
+
+from graphplan.cli import main
+
+POSITION_KEYS = {"label", "phi_deg", "points", "velocities", "accelerations", "omega", "epsilon"}
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_analyze_defaults_to_the_bundled_press(capsys):
+    code, out, err = run(capsys, "analyze")
+    assert code == 0 and err == ""
+    assert "I(4,1) → II₂(2,3)" in out
+    assert "W = 3·n − 2·p5 − p4 = 3·3 − 2·4 − 0 = 1" in out
+    assert "stroke H = 160.00 mm" in out
+
+
+def test_analyze_in_russian(capsys):
+    code, out, _ = run(capsys, "analyze", "--lang", "ru")
+    assert code == 0
+    assert "Структурный анализ" in out and "формула строения" in out
+
+
+def test_json_contract(capsys):
+    code, out, _ = run(capsys, "analyze", "--json")
+    assert code == 0
+    data = json.loads(out)
+    mech = data["mechanism"]
+    assert mech["mobility"] == 1
+    assert mech["groups"][0]["kind"] == "RRP" and mech["groups"][0]["links"] == ["2", "3"]
+    assert mech["links"]["2"] == ["A", "B", "S2"]
+    assert mech["stroke_m"] == pytest.approx(0.16)
+    assert mech["dead_centres_deg"] == pytest.approx([90.0, 270.0])
+    labels = [p["label"] for p in data["positions"]]
+    assert labels == ["1", "2", "3", "4", "5", "6", "7", "8", "(2)", "(3)"]
+    for p in data["positions"]:
+        assert POSITION_KEYS <= set(p)
+        assert set(p["omega"]) == {"1", "2", "3"} and set(p["epsilon"]) == {"1", "2", "3"}
+        for group in ("points", "velocities", "accelerations"):
+            for xy in p[group].values():
+                assert len(xy) == 2 and all(math.isfinite(c) for c in xy)
+    p2 = data["positions"][labels.index("(2)")]
+    assert p2["phi_deg"] == pytest.approx(250.0)
+    assert p2["points"]["B"][1] == pytest.approx(-0.2732949, abs=1e-7)
+    # the crank turns counter-clockwise at π·55/30 rad/s
+    assert p2["omega"]["1"] == pytest.approx(math.pi * 55 / 30)
+
+
+def test_missing_file_is_one_line(capsys, tmp_path):
+    code, out, err = run(capsys, "analyze", str(tmp_path / "nope.toml"))
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "nope.toml: file not found" in err
+
+
+def test_bad_key_is_one_line_naming_file_and_key(capsys, tmp_path):
+    bad = tmp_path / "v.toml"
+    src = (pytest.importorskip("graphplan.files").bundled_example("press")).read_text()
+    bad.write_text(src.replace("length = 200", "length = -200"), encoding="utf-8")
+    code, _, err = run(capsys, "analyze", str(bad))
+    assert code == 2
+    assert err.strip() == f"graphplan: error: {bad}: dyads[0].length: must be > 0 (got -200)"
+
+
+def test_output_file_is_written_and_input_protected(capsys, tmp_path):
+    out = tmp_path / "report.json"
+    code, stdout, _ = run(capsys, "analyze", "--json", "-o", str(out))
+    assert code == 0 and stdout == ""
+    assert json.loads(out.read_text())["mechanism"]["mobility"] == 1
+    variant = tmp_path / "v.toml"
+    from graphplan.files import bundled_example
+
+    variant.write_text(bundled_example("press").read_text(), encoding="utf-8")
+    before = variant.read_bytes()
+    code, _, err = run(capsys, "analyze", str(variant), "-o", str(variant))
+    assert code == 2 and "refusing to overwrite an input file" in err
+    assert variant.read_bytes() == before
+
+
+def test_debug_shows_the_traceback(tmp_path):
+    from graphplan.errors import InputError
+
+    with pytest.raises(InputError):
+        main(["--debug", "analyze", str(tmp_path / "nope.toml")])

@@ -1,0 +1,102 @@
+"""Mobility by Chebyshev's formula and the decomposition into Assur groups."""
+
+import pytest
+
+import graphplan as g
+
+FRAME = """
+[frame]
+link = "0"
+points = { O = [0, 0], C = [0.3, 0], O3 = [0, 0.5] }
+[crank]
+link = "1"
+joints = ["O", "A"]
+length = 0.1
+rpm = 60
+"""
+
+SHAPER = FRAME + """
+[[dyads]]
+kind = "RPR"
+links = ["2", "3"]
+joints = ["A", "O3"]
+[[points]]
+name = "B"
+link = "3"
+from = "O3"
+along = -0.7
+[[dyads]]
+kind = "RRP"
+links = ["4", "5"]
+joints = ["B", "D"]
+length = 0.25
+guide = { link = "0", through = [0, -0.25], angle = 0 }
+"""
+
+
+def test_shaper_formula_and_mobility():
+    m = g.loads(SHAPER, source="shaper.toml")
+    st = g.analyse_structure(m)
+    # n = 5 moving links, p5 = 7 lower pairs: W = 3·5 − 2·7 = 15 − 14 = 1
+    assert (st.n_moving, st.p5, st.mobility) == (5, 7, 1)
+    assert st.mobility_equation == "W = 3·n − 2·p5 − p4 = 3·5 − 2·7 − 0 = 1"
+    assert [(gr.kind, gr.links) for gr in st.groups] == [("RPR", ("2", "3")), ("RRP", ("4", "5"))]
+    assert st.formula == "I(0,1) → II₃(2,3) → II₂(4,5)"
+    assert [gr.kind_number for gr in st.groups] == [3, 2]
+
+
+def test_groups_are_found_on_the_pair_graph_not_copied():
+    m = g.loads(SHAPER, source="shaper.toml")
+    st = g.analyse_structure(m)
+    # the second group's outer pair is the revolute B between rod 4 and rocker 3
+    outer = st.groups[1].pairs[0]
+    assert (outer.kind, set(outer.links), outer.joint) == ("R", {"3", "4"}, "B")
+    kinds = sorted(p.kind for p in st.pairs)
+    assert kinds == ["P", "P", "R", "R", "R", "R", "R"]
+
+
+@pytest.mark.parametrize(
+    ("kind", "body", "expected"),
+    [
+        ("RRR", 'joints = ["A", "B", "C"]\nlengths = [0.3, 0.25]', "II₁(2,3)"),
+        ("RRP", 'joints = ["A", "B"]\nlength = 0.3\nguide = { link = "0", through = [0, 0], angle = 0 }',
+         "II₂(2,3)"),
+        ("RPR", 'joints = ["A", "C"]', "II₃(2,3)"),
+        ("RPP", 'joints = ["A", "D"]\nguide = { link = "0", through = [0, 0], angle = 0 }',
+         "II₅(2,3)"),
+    ],
+)
+def test_each_kind_is_recognised(kind, body, expected):
+    text = FRAME + f'[[dyads]]\nkind = "{kind}"\nlinks = ["2", "3"]\n{body}\n'
+    st = g.analyse_structure(g.loads(text, source="k.toml"))
+    assert st.groups[0].formula == expected
+    assert st.groups[0].kind == kind
+
+
+def test_prp_is_recognised_from_its_pairs():
+    text = FRAME + """
+[[dyads]]
+kind = "RPR"
+links = ["2", "3"]
+joints = ["A", "O3"]
+[[dyads]]
+kind = "PRP"
+links = ["4", "5"]
+joints = ["E"]
+guides = [{ link = "3", through = "O3", angle = 0 }, { link = "0", through = [0, -0.3], angle = 0 }]
+"""
+    st = g.analyse_structure(g.loads(text, source="prp.toml"))
+    assert [gr.kind for gr in st.groups] == ["RPR", "PRP"]
+    assert st.formula == "I(0,1) → II₃(2,3) → II₄(4,5)"
+
+
+def test_reused_link_number_breaks_mobility():
+    # links 2 and 1 for the dyad: link 1 (the crank) appears again, so n = 2 and
+    # p5 = 4 lower pairs: W = 3·2 − 2·4 = −2
+    text = FRAME + '[[dyads]]\nkind = "RRR"\nlinks = ["2", "1"]\njoints = ["A", "B", "C"]\nlengths = [0.3, 0.25]\n'
+    m = g.loads(text, source="bad.toml")
+    with pytest.raises(g.StructureError) as exc:
+        g.analyse_structure(m)
+    msg = str(exc.value)
+    assert msg.startswith("bad.toml: mobility W = 3·n − 2·p5 − p4 = 3·2 − 2·4 − 0 = -2")
+    assert "\n" not in msg
