@@ -86,7 +86,7 @@ class _Reader:
         self.source = source
 
     def fail(self, path: str, message: str) -> InputError:
-        return InputError(f"{self.source}: {path}: {message}")
+        return InputError(one_line(f"{self.source}: {path}: {message}"))
 
     def table(self, value: Any, path: str) -> dict:
         if not isinstance(value, dict):
@@ -105,7 +105,11 @@ class _Reader:
     def number(self, value: Any, path: str, *, positive=False, nonneg=False, lo=None, hi=None):
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.fail(path, f"expected a number (got {_typename(value)} {value!r})")
-        x = float(value)
+        try:
+            x = float(value)
+        except OverflowError:
+            raise self.fail(path, f"expected a finite number (got an integer of "
+                                  f"{len(str(abs(value)))} digits)") from None
         if not math.isfinite(x):
             raise self.fail(path, f"expected a finite number (got {value!r})")
         if positive and not x > 0:
@@ -168,6 +172,14 @@ class _Reader:
         )
 
 
+_CONTROL = re.compile(r"[\x00-\x1f\x7f\u2028\u2029\x85]")
+
+
+def one_line(text: str) -> str:
+    """Escape control characters (a quoted TOML key may hold a newline) to keep one line."""
+    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
+
+
 def _typename(value: Any) -> str:
     return {dict: "table", list: "array", str: "string", bool: "boolean"}.get(
         type(value), type(value).__name__
@@ -213,8 +225,8 @@ def loads(text: str, source: str = "<string>") -> Mechanism:
     """Validate a variant given as TOML text (see :func:`load`)."""
     try:
         data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{source}: not valid TOML ({exc})") from None
+    except (tomllib.TOMLDecodeError, ValueError) as exc:  # ValueError: e.g. a 5000-digit integer
+        raise InputError(one_line(f"{source}: not valid TOML ({exc})")) from None
     return _build(data, _Reader(source))
 
 

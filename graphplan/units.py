@@ -1,0 +1,113 @@
+"""Scale factors of the plans (μ, written Kl, Kv, Ka, Kp on Russian sheets).
+
+A scale factor is always the **physical value per millimetre of drawing**: a
+segment of ``x`` mm on the velocity plan stands for ``x·Kv`` m/s. Worked
+example: the press crank, l_OA = 0.08 m, drawn 80 mm long gives
+``Kl = lOA/OA = 0.08/80 = 0.001 m/mm``.
+
+Scales are chosen from the usual series 1, 2, 2.5, 4, 5 × 10^k, as students
+choose them, so that the largest vector just fits its place.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
+"""Mantissas of the usual scale factors."""
+
+
+def nice_ceil(value: float) -> float:
+    """The smallest member of the series 1, 2, 2.5, 4, 5 × 10^k that is ≥ ``value`` (> 0)."""
+    if not value > 0 or not math.isfinite(value):
+        raise ValueError(f"a scale needs a positive finite value (got {value!r})")
+    k = math.floor(math.log10(value))
+    for exp in (k, k + 1):
+        for m in SERIES:
+            s = m * 10.0**exp
+            if s >= value * (1 - 1e-12):
+                return float(f"{s:.12g}")
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def fmt(x: float, digits: int = 6) -> str:
+    """A number as a student writes it: no trailing zeros, up to ``digits`` significant."""
+    if x == 0:
+        return "0"
+    s = f"{x:.{digits}g}"
+    if "e" in s:
+        mant, exp = s.split("e")
+        return f"{mant}·10^{int(exp)}"
+    return s
+
+
+@dataclass(frozen=True, slots=True)
+class Scale:
+    """A scale factor: ``per_mm`` physical units per millimetre of the plan.
+
+    Attributes
+    ----------
+    symbol : str
+        ``"Kl"``, ``"Kv"``, ``"Ka"`` or ``"Kp"``.
+    per_mm : float
+        The factor μ (e.g. 0.001 for Kl in m/mm).
+    unit : str
+        Unit of ``per_mm`` (``"m/mm"``, ``"(m/s)/mm"``, ``"(m/s²)/mm"``, ``"N/mm"``).
+    quantity : str
+        What defined it, e.g. ``"lOA"``; with ``value`` and ``drawn_mm`` it is the
+        basis ``Kl = lOA/OA = 0.08/80``.
+    value : float
+        Physical size of the defining quantity.
+    drawn_mm : float
+        Its length on the drawing.
+    segment : str
+        Name of the drawn segment (``"OA"``, ``"pa"``, ``"πa"``).
+    """
+
+    symbol: str
+    per_mm: float
+    unit: str
+    quantity: str = ""
+    value: float = 0.0
+    drawn_mm: float = 0.0
+    segment: str = ""
+
+    def to_mm(self, value: float) -> float:
+        """Drawing length (mm) of a physical value."""
+        return value / self.per_mm
+
+    def to_value(self, mm: float) -> float:
+        """Physical value of a drawing length (mm)."""
+        return mm * self.per_mm
+
+    @property
+    def basis(self) -> str:
+        """How the scale is written on a sheet: ``Kl = lOA/OA = 0.08/80 = 0.001 m/mm``."""
+        if self.quantity and self.drawn_mm:
+            return (f"{self.symbol} = {self.quantity}/{self.segment} = {fmt(self.value, 5)}/"
+                    f"{fmt(self.drawn_mm, 5)} = {fmt(self.per_mm)} {self.unit}")
+        return f"{self.symbol} = {fmt(self.per_mm)} {self.unit}"
+
+
+def fit_scale(symbol: str, unit: str, largest: float, room_mm: float, *, quantity: str = "",
+              defining: float = 0.0, segment: str = "", fixed: float | None = None) -> Scale:
+    """Choose a scale so that ``largest`` (physical) is at most ``room_mm`` long.
+
+    Parameters
+    ----------
+    symbol, unit : str
+        E.g. ``"Kv"``, ``"(m/s)/mm"``.
+    largest : float
+        The largest value the plan must hold.
+    room_mm : float
+        The length available for it.
+    quantity, defining, segment
+        The quantity the student draws first and divides by (``"vA"``, its value,
+        ``"pa"``): recorded so the sheet can print the basis of the scale.
+    fixed : float, optional
+        A scale given in the variant file, used as is.
+    """
+    per_mm = fixed if fixed is not None else nice_ceil(max(largest, 1e-300) / room_mm)
+    drawn = defining / per_mm if defining else 0.0
+    return Scale(symbol, per_mm, unit, quantity, defining, drawn, segment)
