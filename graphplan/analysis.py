@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .constructions import acceleration_plan, plan_scales, velocity_plan
 from .cycle import Cycle, analyse_cycle, sweep
 from .kinematics import Kinematics
 from .model import Mechanism
@@ -69,6 +70,16 @@ class Analysis:
             },
         }
         positions = [self.kin.as_json(k, moving) for k in range(self.kin.n)]
+        kl, kv, ka = plan_scales(m, self.kin)
+        mechanism["scales"] = {s.symbol: {"value": s.per_mm, "unit": s.unit, "basis": s.basis}
+                               for s in (kl, kv, ka)}
+        for k, entry in enumerate(positions):
+            vp = velocity_plan(m, self.kin, k, kl, kv)
+            ap = acceleration_plan(m, self.kin, k, kl, ka, vp)
+            segments = {r.name: r.mm for r in vp.readings.values()}
+            segments.update({r.name: r.mm for r in ap.readings.values()})
+            entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
+                              "segments_mm": segments}
         return {"mechanism": mechanism, "positions": positions}
 
 

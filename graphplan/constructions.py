@@ -28,7 +28,7 @@ import numpy as np
 
 from .geometry import cross, perp
 from .model import Dyad, Mechanism
-from .units import Scale
+from .units import Scale, fit_scale
 
 Vec2 = np.ndarray
 
@@ -535,8 +535,9 @@ def _lay(b: _Builder, name: str, frm: str, vec_mm: Vec2, role: str, eq: str, wha
     length = b.reader(float(np.hypot(*vec_mm)))
     d = _unit(vec_mm)
     b.points[name] = b.points[frm] + length * d
+    b.read(name, frm, name, eq.split(" =")[0])
     b.add_step(eq, f"{what}: {length:.2f} mm from {frm}.", f"{what_ru}: {length:.2f} мм от {frm}.",
-               [Element("segment", name, _t(b.points[frm]), _t(b.points[name]), role)])
+               [Element("segment", name, _t(b.points[frm]), _t(b.points[name]), role)], (name,))
     return name
 
 
@@ -711,3 +712,30 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             _similar_points(mech, b, img, ln, P, rate_map, "acceleration")
     return b.build(kin.labels[k], eps, rel)
 
+
+
+PLAN_ROOM_MM = {"Kl": 250.0, "Kv": 100.0, "Ka": 100.0}
+"""Room for the largest vector of each plan when the variant fixes no scale."""
+
+
+def plan_scales(mech: Mechanism, kin) -> tuple[Scale, Scale, Scale]:
+    """Kl, Kv, Ka from the usual series, or as fixed in the variant's ``[drawing]``.
+
+    Kl fits the whole plan of positions (all points over the cycle) in its room;
+    Kv and Ka fit the largest velocity and acceleration of the positions.
+    """
+    fixed = mech.settings.get("drawing", {})
+    pts = np.concatenate([p for p in kin.pos.points.values()])
+    extent = float(np.max(np.ptp(pts, axis=0)))
+    cr = mech.crank
+    kl = fit_scale("Kl", "m/mm", extent, PLAN_ROOM_MM["Kl"], quantity=f"l{cr.pivot}{cr.pin}",
+                   defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+    vmax = max(float(np.max(np.hypot(v[:, 0], v[:, 1]))) for v in kin.vel.points.values())
+    amax = max(float(np.max(np.hypot(a[:, 0], a[:, 1]))) for a in kin.acc.points.values())
+    va = abs(cr.omega) * cr.length
+    kv = fit_scale("Kv", "(m/s)/mm", vmax, PLAN_ROOM_MM["Kv"], quantity=f"v{cr.pin}",
+                   defining=va, segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
+    kaa = cr.omega**2 * cr.length
+    ka = fit_scale("Ka", "(m/s²)/mm", amax, PLAN_ROOM_MM["Ka"], quantity=f"a{cr.pin}",
+                   defining=kaa, segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
+    return kl, kv, ka

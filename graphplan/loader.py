@@ -34,6 +34,9 @@ from .model import (
 )
 
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
+MAX_LENGTH_M = 1000.0
+"""No machine of a TMM project is a kilometre across; larger numbers are typos."""
+MAX_RPM = 1e5
 NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
 LINK_RE = re.compile(r"^[0-9]{1,3}$")
 
@@ -166,10 +169,18 @@ class _Reader:
 
     def xy(self, value: Any, path: str, unit: float) -> tuple[float, float]:
         items = self.array(value, path, 2)
+        lim = MAX_LENGTH_M / unit
         return (
-            self.number(items[0], f"{path}[0]") * unit,
-            self.number(items[1], f"{path}[1]") * unit,
+            self.number(items[0], f"{path}[0]", lo=-lim, hi=lim) * unit,
+            self.number(items[1], f"{path}[1]", lo=-lim, hi=lim) * unit,
         )
+
+    def length(self, value: Any, path: str, unit: float, *, signed: bool = False) -> float:
+        """A length in the variant's unit, converted to metres, at most 1 km."""
+        lim = MAX_LENGTH_M / unit
+        if signed:
+            return self.number(value, path, lo=-lim, hi=lim) * unit
+        return self.number(value, path, positive=True, hi=lim) * unit
 
 
 _CONTROL = re.compile(r"[\x00-\x1f\x7f\u2028\u2029\x85]")
@@ -284,8 +295,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
     if known_points[pivot] != frame_link:
         raise r.fail("crank.joints[0]", f"the crank pivot {pivot!r} must be a frame point")
     pin = need_point(cj[1], "crank.joints[1]", known=False)
-    length = r.number(crank_t["length"], "crank.length", positive=True) * unit
-    rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True)
+    length = r.length(crank_t["length"], "crank.length", unit)
+    rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True, hi=MAX_RPM)
     direction = r.string(crank_t.get("direction", "ccw"), "crank.direction", ("ccw", "cw"))
     omega = math.pi * rpm / 30.0 * (1.0 if direction == "ccw" else -1.0)
     crank = Crank(crank_link, pivot, pin, length, rpm, omega)
@@ -334,9 +345,9 @@ def _build(data: dict, r: _Reader) -> Mechanism:
                         raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
                     if "along" in pt:
                         raise r.fail(f"{path}.fraction", "give either 'fraction' or 'along', not both")
-                    fraction = r.number(pt["fraction"], f"{path}.fraction")
-                along = r.number(pt.get("along", 0.0), f"{path}.along") * unit
-                across = r.number(pt.get("across", 0.0), f"{path}.across") * unit
+                    fraction = r.number(pt["fraction"], f"{path}.fraction", lo=-100, hi=100)
+                along = r.length(pt.get("along", 0.0), f"{path}.along", unit, signed=True)
+                across = r.length(pt.get("across", 0.0), f"{path}.across", unit, signed=True)
                 points.append(PointOnLink(nm, ln, origin, toward, along, across, fraction))
                 known_points[nm] = ln
                 link_points[ln].append(nm)
@@ -384,14 +395,12 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         slot_angle = 0.0
         if kind == "RRR":
             ls = r.array(dt["lengths"], f"{path}.lengths", 2)
-            lengths = tuple(
-                r.number(v, f"{path}.lengths[{m}]", positive=True) * unit for m, v in enumerate(ls)
-            )
+            lengths = tuple(r.length(v, f"{path}.lengths[{m}]", unit) for m, v in enumerate(ls))
         elif kind == "RRP":
-            lengths = (r.number(dt["length"], f"{path}.length", positive=True) * unit,)
+            lengths = (r.length(dt["length"], f"{path}.length", unit),)
             guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
         elif kind == "RPR":
-            offset = r.number(dt.get("offset", 0.0), f"{path}.offset") * unit
+            offset = r.length(dt.get("offset", 0.0), f"{path}.offset", unit, signed=True)
         elif kind == "PRP":
             gs = r.array(dt["guides"], f"{path}.guides", 2)
             guides = tuple(
@@ -443,8 +452,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
                          f"{', '.join(x for x in link_order if x != frame_link)})")
         r.table(props, path)
         r.keys(props, path, {"mass", "inertia", "centre"})
-        mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True)
-        inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True)
+        mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
+        inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True, hi=1e12)
         centre = None
         if "centre" in props:
             centre = r.name(props["centre"], f"{path}.centre")
@@ -458,7 +467,7 @@ def _build(data: dict, r: _Reader) -> Mechanism:
     # -- gravity
     grav = r.table(data.get("gravity", {}), "gravity")
     g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
-    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True)
+    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
     g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
     gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
     gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
@@ -505,7 +514,7 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         if ln != output.link:
             raise r.fail(f"{path}.link", f"the resistance acts on the output link "
                          f"({output.link!r}), whose stroke defines its diagram (got {ln!r})")
-        mx = r.number(lt["max"], f"{path}.max", nonneg=True)
+        mx = r.number(lt["max"], f"{path}.max", nonneg=True, hi=1e12)
         diag = r.array(lt["diagram"], f"{path}.diagram", minlen=2)
         pairs = []
         for m, pr in enumerate(diag):

@@ -59,6 +59,9 @@ def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: i
         base = np.broadcast_to(np.asarray(g.xy, float), (n, 2))
     if g.toward is not None:
         d = points[g.toward] - base
+        if not np.all(norm(d) > 0):
+            raise AssemblyError(f"guide of link {g.link}: {g.through} and {g.toward} coincide, "
+                                "so its direction is undefined")
         u = d / norm(d)[:, None]
     else:
         u = unit_of_angle(theta[g.link] + g.angle)
@@ -114,14 +117,14 @@ def solve_positions(mech: Mechanism, phi, labels=None) -> PositionState:
     cr = mech.crank
     pts[cr.pin] = pts[cr.pivot] + cr.length * unit_of_angle(phi)
     theta[cr.link] = phi.copy()
-    _place_extra(mech, pts, theta, n)
+    _place_extra(mech, pts, theta, n, phi)
     for d in mech.dyads:
         _place_dyad(mech, d, pts, theta, guides, phi, labels)
-        _place_extra(mech, pts, theta, n)
+        _place_extra(mech, pts, theta, n, phi)
     return PositionState(phi, pts, theta, guides)
 
 
-def _place_extra(mech: Mechanism, pts, theta, n: int) -> None:
+def _place_extra(mech: Mechanism, pts, theta, n: int, phi) -> None:
     for p in mech.points:
         if p.name in pts or p.link not in theta or p.origin not in pts:
             continue
@@ -131,6 +134,11 @@ def _place_extra(mech: Mechanism, pts, theta, n: int) -> None:
         if p.toward is not None:
             d = pts[p.toward] - origin
             dist = norm(d)
+            if not np.all(dist > 0):
+                k = int(np.argmin(dist))
+                raise AssemblyError(
+                    f"{mech.source}: point {p.name}: the direction from {p.origin} toward "
+                    f"{p.toward} is undefined at {where(phi, k)} (the two points coincide)")
             u = d / dist[:, None]
             along = p.fraction * dist if p.fraction is not None else np.full(n, p.along)
         else:

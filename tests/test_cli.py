@@ -90,3 +90,20 @@ def test_debug_shows_the_traceback(tmp_path):
 
     with pytest.raises(InputError):
         main(["--debug", "analyze", str(tmp_path / "nope.toml")])
+
+
+def test_json_plans_per_position(capsys):
+    code, out, _ = run(capsys, "analyze", "--json")
+    data = json.loads(out)
+    assert data["mechanism"]["scales"]["Kl"]["basis"] == "Kl = lOA/OA = 0.08/80 = 0.001 m/mm"
+    for p in data["positions"]:
+        plans = p["plans"]
+        assert plans["Kl"] == 0.001 and plans["Kv"] > 0 and plans["Ka"] > 0
+        seg = plans["segments_mm"]
+        # read back at the scales, the plans give the exact velocities and accelerations
+        vb = math.hypot(*p["velocities"]["B"])
+        ab = math.hypot(*p["accelerations"]["B"])
+        assert seg["pb"] * plans["Kv"] == pytest.approx(vb, rel=1e-6, abs=1e-12)
+        assert seg["πb"] * plans["Ka"] == pytest.approx(ab, rel=1e-6, abs=1e-12)
+        # the normal component of the rod: n_BA = ω2²·l_AB / Ka
+        assert seg["n_BA"] * plans["Ka"] == pytest.approx(p["omega"]["2"] ** 2 * 0.2, rel=1e-6, abs=1e-12)
