@@ -23,7 +23,8 @@ from numpy.typing import NDArray
 from .errors import InputError, SingularPoseError
 from .kinematics import Kinematics, solve
 from .model import Mechanism
-from .positions import slide_key, solve_positions
+from .positions import solve_positions
+from .structure import analyse as analyse_structure
 from .velocities import LOCKUP_SINE, solve_velocities
 
 Array = NDArray[np.float64]
@@ -113,7 +114,10 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
         If some dyad cannot be assembled, or locks up, anywhere in the turn.
     InputError
         If the positions refer to dead centres that the output does not have.
+    StructureError
+        If the mobility is not 1 (e.g. a dyad reuses a link number).
     """
+    analyse_structure(mech)  # W = 1 and class-II groups, before any link angle is trusted
     sense = 1.0 if mech.crank.omega > 0 else -1.0
     grid = np.linspace(0.0, 2 * math.pi, CHECK_GRID, endpoint=False)
     pos = solve_positions(mech, grid)

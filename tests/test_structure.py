@@ -100,3 +100,11 @@ def test_reused_link_number_breaks_mobility():
     msg = str(exc.value)
     assert msg.startswith("bad.toml: mobility W = 3·n − 2·p5 − p4 = 3·2 − 2·4 − 0 = -2")
     assert "\n" not in msg
+
+
+def test_cycle_refuses_a_frame_link_reused_by_a_dyad():
+    # an RRR with links ["2", "0"] would turn the frame: the cycle must not run
+    text = FRAME + '[[dyads]]\nkind = "RRR"\nlinks = ["2", "0"]\njoints = ["A", "B", "C"]\nlengths = [0.3, 0.25]\n'
+    m = g.loads(text, source="bad.toml")
+    with pytest.raises(g.StructureError):
+        g.analyse_cycle(m)
