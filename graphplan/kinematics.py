@@ -13,8 +13,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .accelerations import AccelerationState, solve_accelerations
+from .errors import SingularPoseError
 from .model import Mechanism
-from .positions import PositionState, solve_positions
+from .positions import PositionState, solve_positions, where
 from .velocities import VelocityState, solve_velocities
 
 Array = NDArray[np.float64]
@@ -89,8 +90,22 @@ def solve(mech: Mechanism, phi, labels=None) -> Kinematics:
         Naming the dyad and the position where it fails.
     """
     phi = np.atleast_1d(np.asarray(phi, float))
-    labels = tuple(labels) if labels is not None else tuple(str(k) for k in range(len(phi)))
-    pos = solve_positions(mech, phi, labels)
-    vel = solve_velocities(mech, pos, labels)
+    named = tuple(labels) if labels is not None else None  # unnamed angles: errors say φ only
+    pos = solve_positions(mech, phi, named)
+    vel = solve_velocities(mech, pos, named)
     acc = solve_accelerations(mech, pos, vel)
-    return Kinematics(phi, labels, pos, vel, acc)
+    _check_finite(mech, phi, named, vel, acc)
+    return Kinematics(phi, named or tuple(str(k) for k in range(len(phi))), pos, vel, acc)
+
+
+def _check_finite(mech: Mechanism, phi, labels, vel, acc) -> None:
+    """No NaN or infinity leaves the solver: a non-finite rate marks a singular pose."""
+    for kind, table in (("ω", vel.omega), ("ε", acc.epsilon), ("v", vel.points),
+                        ("a", acc.points)):
+        for name, arr in table.items():
+            ok = np.isfinite(arr).reshape(len(phi), -1).all(axis=1)
+            if not ok.all():
+                k = int(np.argmin(ok))
+                raise SingularPoseError(
+                    f"{mech.source}: {kind} of {name} is not finite at {where(phi, k, labels)} "
+                    "(a singular pose: some link's rate is unbounded there)")

@@ -37,8 +37,8 @@ LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
 MAX_LENGTH_M = 1000.0
 """No machine of a TMM project is a kilometre across; larger numbers are typos."""
 MAX_RPM = 1e5
-NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_']*$")
-LINK_RE = re.compile(r"^[0-9]{1,3}$")
+NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_']*")  # used with fullmatch: no trailing newline
+LINK_RE = re.compile(r"[0-9]{1,3}")
 
 # Sections and keys each section accepts. Later stages (drawing, kinetostatics,
 # dynamics, title block) keep their settings here so that a typo is caught at load.
@@ -141,7 +141,7 @@ class _Reader:
 
     def name(self, value: Any, path: str) -> str:
         s = self.string(value, path)
-        if not NAME_RE.match(s):
+        if not NAME_RE.fullmatch(s):
             raise self.fail(path, f"expected a point name like 'A', 'S2', 'O3' (got {s!r})")
         return s
 
@@ -149,7 +149,7 @@ class _Reader:
         if isinstance(value, int) and not isinstance(value, bool):
             value = str(value)
         s = self.string(value, path)
-        if not LINK_RE.match(s):
+        if not LINK_RE.fullmatch(s):
             raise self.fail(path, f"expected a link number like \"2\" (got {s!r})")
         return s
 

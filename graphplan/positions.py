@@ -51,8 +51,12 @@ class PositionState:
     guides: dict[str, tuple[Array, Array]]
 
 
-def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: int):
-    """Point and unit direction of a guide at each position."""
+def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: int,
+               where_: str = ""):
+    """Point and unit direction of a guide at each position.
+
+    ``where_`` (e.g. ``"press.toml: dyad RRP(2-3)"``) prefixes an error message.
+    """
     if g.through is not None:
         base = points[g.through]
     else:
@@ -60,8 +64,10 @@ def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: i
     if g.toward is not None:
         d = points[g.toward] - base
         if not np.all(norm(d) > 0):
-            raise AssemblyError(f"guide of link {g.link}: {g.through} and {g.toward} coincide, "
-                                "so its direction is undefined")
+            k = int(np.argmin(norm(d)))
+            raise AssemblyError(f"{where_}: guide on link {g.link}: the direction from "
+                                f"{g.through or g.xy} toward {g.toward} is undefined at position {k} "
+                                "(the two points coincide)")
         u = d / norm(d)[:, None]
     else:
         u = unit_of_angle(theta[g.link] + g.angle)
@@ -179,7 +185,7 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
         a_name, b_name = d.joints
         A = pts[a_name]
         (l1,) = d.lengths
-        G, u = guide_line(d.guides[0], pts, theta, n)
+        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
         w = A - G
         h = cross(u, w)  # signed distance of A to the left of the guide
         bad = ~(np.abs(h) <= l1)
@@ -199,10 +205,13 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
         dv = A - C
         dist = norm(dv)
         e = d.offset
-        bad = ~(dist > abs(e))
+        # the pin on the slot axis's foot (or on the pivot) leaves the rocker's angle undefined
+        tol = 1e-9 * max(mech.crank.length, abs(e))
+        bad = ~(np.sqrt(np.maximum(dist**2 - e**2, 0.0)) > tol)
         if bad.any():
             _fail(bad, lambda k: (
-                f"|{c_name}{a_name}| = {dist[k]:.6g} m must exceed the slot offset {abs(e):.6g} m"))
+                f"|{c_name}{a_name}| = {dist[k]:.6g} m must exceed the slot offset {abs(e):.6g} m "
+                f"(the pin {a_name} passes through the foot of the slot axis from {c_name})"))
         along = s * np.sqrt(dist**2 - e**2)
         th = angle_of(dv) - np.arctan2(e, along)
         theta[i] = th
@@ -211,8 +220,8 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
                                    unit_of_angle(th))
     elif d.kind == "PRP":
         (b_name,) = d.joints
-        G1, u1 = guide_line(d.guides[0], pts, theta, n)
-        G2, u2 = guide_line(d.guides[1], pts, theta, n)
+        G1, u1 = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
+        G2, u2 = guide_line(d.guides[1], pts, theta, n, f"{mech.source}: dyad {d.name}")
         den = cross(u1, u2)
         bad = ~(np.abs(den) > 1e-12)
         if bad.any():
@@ -226,7 +235,7 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
     elif d.kind == "RPP":
         a_name, d_name = d.joints
         A = pts[a_name]
-        G, u = guide_line(d.guides[0], pts, theta, n)
+        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
         th_j = angle_of(u)
         w = unit_of_angle(th_j + d.slot_angle)
         t = cross(w, A - G) / cross(w, u)
