@@ -154,7 +154,8 @@ def test_central_slider_crank_textbook_formulas(direction):
     xb = r * np.cos(phi) + l * np.cos(beta)
     vb = -w * r * np.sin(phi + beta) / np.cos(beta)
     dbeta = w * lam * np.cos(phi) / np.cos(beta)
-    ab = -(w**2) * r * (np.cos(phi + beta) / np.cos(beta) + lam * np.cos(phi) ** 2 / np.cos(beta) ** 3)
+    cb = np.cos(beta)
+    ab = -(w**2) * r * (np.cos(phi + beta) / cb + lam * np.cos(phi) ** 2 / cb**3)
     ddbeta = -(w**2) * lam * np.sin(phi) * (1 - lam**2) / np.cos(beta) ** 3
 
     P, V, A = k.pos.points["B"], k.vel.points["B"], k.acc.points["B"]
@@ -221,7 +222,8 @@ def _check_offset_slider(k, r, l, e, alpha, s, w):
     rpm=st.floats(10.0, 1500.0),
 )
 def test_random_offset_slider_crank_exact(r, lam, e_frac, alpha_deg, branch, direction, rpm):
-    """Random valid crank–sliders: |e| ≤ 0.6(l − r) keeps |e − r sin ψ| < l (no lock-up)."""
+    """Random valid crank–sliders: |e| ≤ 0.6(l − r) keeps |e − r sin ψ| < l (no lock-up
+    for either branch)."""
     l = r / lam
     e = e_frac * (l - r)
     w = omega1(rpm, direction)
@@ -289,7 +291,8 @@ def test_press_position_2_by_hand():
       dβ/dt = ω λ cos ψ/cos β = 5.759587·0.4·0.939693/0.990598 = 2.185445 rad/s;
           in the guide's frame the rod angle is θ2 − (−90°) = −β, so ω2 = −dβ/dt
           = −2.185445 rad/s (clockwise);
-      d²β/dt² = −ω² λ sin ψ (1−λ²)/cos³β = −33.17284·0.4·(−0.342020)·0.84/0.972066
+      d²β/dt² = −ω² λ sin ψ (1−λ²)/cos³β
+              = −33.17284·0.4·(−0.342020)·0.84/0.972066
           = +3.921767 rad/s²  → ε2 = −3.921767 rad/s².
     """
     m = g.loads(PRESS, source="press.toml")
@@ -444,7 +447,8 @@ def test_fourbar_crank_rocker_both_branches(branch, direction):
 
 @pytest.mark.parametrize("branch", ["+", "-"])
 def test_fourbar_double_crank(branch):
-    """Drag-link (frame shortest, d + c < a + b … Grashof with the frame shortest)."""
+    """Drag link (double crank): the frame is the shortest link and s + L < p + q
+    (0.07 + 0.28 < 0.20 + 0.24), so the "rocker" turns fully too; clockwise crank."""
     _check_fourbar(0.20, 0.28, 0.24, 0.07, -30.0, branch, "cw", 40.0)
 
 
