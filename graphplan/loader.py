@@ -545,6 +545,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         label = r.string(et["label"], f"{path}.label")
         if not label.strip():
             raise r.fail(f"{path}.label", "must not be empty")
+        if _CONTROL.search(label):
+            raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
         if label in labels:
             raise r.fail(f"{path}.label", f"label {label!r} is already used")
         labels.add(label)

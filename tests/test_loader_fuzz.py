@@ -963,10 +963,6 @@ def test_guide_toward_a_coincident_point_names_the_crank_angle():
     assert "φ = " in str(exc), str(exc)
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError,
-                   reason="BUG: a position label may hold a line break (the loader only checks "
-                          "it is not blank) and positions.where() prints it raw, so an error at "
-                          "that position spans two lines")
 def test_position_label_with_a_line_break():
     # the sweep fails at the labelled position (see the xfail above), naming its label
     a = math.radians(33.33)
