@@ -552,7 +552,8 @@ CASES = [
     ("output-working", P, [set_("output.working", "down")],
      "output.working", "expected one of '+', '-' (got 'down')"),
     # loads
-    ("loads-table", P, [set_("loads", {"kind": "force"})], "loads", "expected an array (got table)"),
+    ("loads-table", P, [set_("loads", {"kind": "force"})],
+     "loads", "expected an array (got table)"),
     ("load-not-table", P, [set_("loads[0]", 600000)], "loads[0]", "expected a table (got int)"),
     ("load-unknown-key", P, [set_("loads[0].maximum", 1)],
      "loads[0].maximum", "unknown key (expected one of: diagram, kind, link, max, point)"),
@@ -628,6 +629,8 @@ CASES = [
      "positions.extra[0].label", "expected a string (got int 2)"),
     ("extra-label-blank", P, [set_("positions.extra[0].label", "  ")],
      "positions.extra[0].label", "must not be empty"),
+    ("extra-label-two-lines", P, [set_("positions.extra[0].label", "(2)\nbis")],
+     "positions.extra[0].label", "expected a one-line label (got '(2)\\nbis')"),
     ("extra-label-duplicates-numbered", P, [set_("positions.extra[0].label", "8")],
      "positions.extra[0].label", "label '8' is already used"),
     ("extra-label-duplicates-extra", P, [set_("positions.extra[1].label", "(2)")],
