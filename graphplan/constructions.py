@@ -179,6 +179,7 @@ class _Builder:
         self.points: dict[str, Vec2] = {pole: np.zeros(2)}
         self.steps: list[Step] = []
         self.readings: dict[str, Reading] = {}
+        self.ends: dict[str, tuple[str, str]] = {}  # reading name -> (from point, to point)
 
     def add_step(self, equation, text, text_ru, elements, readings=(), angle=None):
         err = None
@@ -197,6 +198,7 @@ class _Builder:
     def read(self, name: str, a: str, b: str, quantity: str) -> Reading:
         exact = float(np.hypot(*(self.points[b] - self.points[a])))
         mm = self.reader(exact)
+        self.ends[name] = (a, b)
         r = Reading(name, mm, exact, quantity, mm * self.scale.per_mm,
                     self.scale.unit.split("/")[0].strip("()"), self.scale.symbol)
         self.readings[name] = r
@@ -382,7 +384,7 @@ def _result(b: _Builder, eq: str, segments) -> None:
 def _turn(b: _Builder, name: str, r_m: Vec2, length: float) -> float:
     """Rate of a link from its relative segment ``name``: (segment·K)/l, CCW positive."""
     rd = b.readings[name]
-    frm, to = _ends(b, name)
+    frm, to = b.ends[name]
     rel = b.points[to] - b.points[frm]
     if rd.mm == 0 or length <= 0:
         return 0.0
@@ -392,30 +394,14 @@ def _turn(b: _Builder, name: str, r_m: Vec2, length: float) -> float:
 def _slide(b: _Builder, name: str, u: Vec2) -> float:
     """Signed sliding speed along u from the segment ``name``."""
     rd = b.readings[name]
-    frm, to = _ends(b, name)
+    frm, to = b.ends[name]
     rel = b.points[to] - b.points[frm]
     return math.copysign(rd.value, float(np.dot(rel, u))) if rd.mm else 0.0
-
-
-def _ends(b: _Builder, name: str) -> tuple[str, str]:
-    for st in reversed(b.steps):
-        for el in st.elements:
-            if el.kind == "segment" and el.name == name:
-                return _find(b, el.start), _find(b, el.end)
-    raise KeyError(name)  # pragma: no cover
-
-
-def _find(b: _Builder, xy) -> str:
-    for n, q in b.points.items():
-        if abs(q[0] - xy[0]) < 1e-12 and abs(q[1] - xy[1]) < 1e-12:
-            return n
-    raise KeyError(xy)  # pragma: no cover
 
 
 def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, sliding,
                    rate_map, length_m) -> None:
     lower = b.key
-    p = b.pole
     i, j = dy.links
     kl = img.kl
     if dy.kind == "RRR":
@@ -491,8 +477,8 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         sliding[k1], sliding[k2] = _slide(b, n1, u1), _slide(b, n2, u2)
         img.add(i, B, bb), img.add(j, B, bb)
     elif dy.kind == "RPP":
-        A, D = dy.joints
-        a, dd = lower(A), lower(D)
+        A = dy.joints[0]  # the yoke's point D follows by similarity, with the links' points
+        a = lower(A)
         g = dy.guides[0]
         kj, ki = f"{j}/{g.link}", f"{i}/{j}"
         u, w = _guide_dir(kin, k, kj), _guide_dir(kin, k, ki)
@@ -601,7 +587,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
-        return _lay(b, name, frm, vec, "coriolis", f"aᵏ = 2·ω·v_r",
+        return _lay(b, name, frm, vec, "coriolis", "aᵏ = 2·ω·v_r",
                     f"Coriolis aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = {abs(2 * omega_k * v_r):.4g} "
                     "m/s², the relative velocity turned 90° in the sense of ω",
                     f"Кориолисово aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = "

@@ -120,9 +120,8 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
     analyse_structure(mech)  # W = 1 and class-II groups, before any link angle is trusted
     sense = 1.0 if mech.crank.omega > 0 else -1.0
     grid = np.linspace(0.0, 2 * math.pi, CHECK_GRID, endpoint=False)
-    solve(mech, grid)  # assembles, checks lock-ups and finiteness over the whole turn
-    pos = solve_positions(mech, grid)
-    vel = solve_velocities(mech, pos)
+    turn = solve(mech, grid)  # assembles, checks lock-ups and finiteness over the whole turn
+    pos, vel = turn.pos, turn.vel
     min_cond = {}
     for name, s in vel.conditioning.items():
         k = int(np.argmin(s))

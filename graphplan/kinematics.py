@@ -94,14 +94,14 @@ def solve(mech: Mechanism, phi, labels=None) -> Kinematics:
     pos = solve_positions(mech, phi, named)
     vel = solve_velocities(mech, pos, named)
     acc = solve_accelerations(mech, pos, vel)
-    _check_finite(mech, phi, named, vel, acc)
+    _check_finite(mech, phi, named, pos, vel, acc)
     return Kinematics(phi, named or tuple(str(k) for k in range(len(phi))), pos, vel, acc)
 
 
-def _check_finite(mech: Mechanism, phi, labels, vel, acc) -> None:
+def _check_finite(mech: Mechanism, phi, labels, pos, vel, acc) -> None:
     """No NaN or infinity leaves the solver: a non-finite rate marks a singular pose."""
-    for kind, table in (("ω", vel.omega), ("ε", acc.epsilon), ("v", vel.points),
-                        ("a", acc.points)):
+    for kind, table in (("position", pos.points), ("ω", vel.omega), ("ε", acc.epsilon),
+                        ("v", vel.points), ("a", acc.points)):
         for name, arr in table.items():
             ok = np.isfinite(arr).reshape(len(phi), -1).all(axis=1)
             if not ok.all():
