@@ -17,7 +17,8 @@ from .errors import (
 from .kinematics import Kinematics, solve
 from .loader import load, loads
 from .model import Mechanism
-from .structure import Structure, analyse as analyse_structure
+from .structure import Structure
+from .structure import analyse as analyse_structure
 
 __version__ = "0.1.0"
 

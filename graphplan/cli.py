@@ -1,4 +1,8 @@
-"""Command line: ``graphplan analyze [VARIANT.toml] [--json] [--lang ru|en] [-o FILE]``.
+"""Command line.
+
+``graphplan analyze [VARIANT.toml] [--json] [--lang ru|en] [-o FILE]`` — structure and
+exact kinematics; ``graphplan sheets [VARIANT.toml ...] -o DIR`` — the sheets, the
+tables and the JSON report of each variant (see :mod:`graphplan.project`).
 
 A thin layer over the library: every :class:`GraphplanError` becomes one line
 on standard error and exit status 2 (a traceback only with ``--debug``).
@@ -30,6 +34,16 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--json", action="store_true", help="print one JSON object for scripts")
     a.add_argument("--lang", choices=("en", "ru"), default="en", help="language of the tables")
     a.add_argument("-o", "--output", help="write the report to this file (atomically)")
+    s = sub.add_parser("sheets", help="draw the sheets and write the tables and the JSON report")
+    s.add_argument("variants", nargs="*", metavar="VARIANT",
+                   help="variant files (default: the bundled press example)")
+    s.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder (with several variants: one sub-folder per variant)")
+    s.add_argument("--lang", choices=("en", "ru"), default=None,
+                   help="lettering of the sheets (default: the variant's drawing.language, ru)")
+    s.add_argument("--precision", type=float, default=None, metavar="MM",
+                   help="reading precision of the drafting tables, mm (default: the "
+                   "variant's drawing.reading_mm, 0.5)")
     return p
 
 
@@ -59,7 +73,23 @@ def _analyze(args) -> int:
     return 0
 
 
-COMMANDS = {"analyze": _analyze}
+def _sheets(args) -> int:
+    from .errors import InputError
+    from .project import write_project
+
+    if args.precision is not None and not (0 <= args.precision <= 5):
+        raise InputError(f"--precision: expected a reading precision of 0 … 5 mm "
+                         f"(got {args.precision:g})")
+    variants = [Path(v) for v in args.variants] or [_variant_path(None)]
+    out = Path(args.output)
+    for v in variants:
+        target = out / v.stem if len(variants) > 1 else out
+        done = write_project(v, target, lang=args.lang, precision=args.precision)
+        print(f"{v}: " + ", ".join(str(f) for f in done.files))
+    return 0
+
+
+COMMANDS = {"analyze": _analyze, "sheets": _sheets}
 
 
 def main(argv: list[str] | None = None) -> int:

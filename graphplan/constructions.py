@@ -28,7 +28,7 @@ import numpy as np
 
 from .geometry import cross, perp
 from .model import Dyad, Mechanism
-from .units import Scale, fit_scale
+from .units import Scale
 
 Vec2 = np.ndarray
 
@@ -200,7 +200,7 @@ class _Builder:
         mm = self.reader(exact)
         self.ends[name] = (a, b)
         r = Reading(name, mm, exact, quantity, mm * self.scale.per_mm,
-                    self.scale.unit.split("/")[0].strip("()"), self.scale.symbol)
+                    self.scale.unit.rsplit("/", 1)[0].strip("()"), self.scale.symbol)
         self.readings[name] = r
         return r
 
@@ -587,7 +587,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
-        return _lay(b, name, frm, vec, "coriolis", "aᵏ = 2·ω·v_r",
+        return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω·v_r",
                     f"Coriolis aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = {abs(2 * omega_k * v_r):.4g} "
                     "m/s², the relative velocity turned 90° in the sense of ω",
                     f"Кориолисово aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = "
@@ -668,7 +668,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             r2 = f"r_{B}{j}{g2.link}" if c2 != "π" else "π" + pb
             for r, c in ((r1, c1), (r2, c2)):
                 if r != "π" + pb:
-                    segs.append((r, c, pb, "sliding", "aʳ"))
+                    segs.append((r, c, pb, "sliding", f"aʳ_{r[2:]}"))
             _result(b, eq, segs)
             eps[i], eps[j] = eps[g1.link], eps[g2.link]
             rel[k1], rel[k2] = _slide(b, r1, u1), _slide(b, r2, u2)
@@ -687,8 +687,10 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             _close_two_lines(b, eq, aj, b.points[cs], u, f"∥ guide through {cs}",
                              b.points[cr_], w, f"∥ slot through {cr_}")
             rs = f"r_{A}{j}{g.link}" if cs != "π" else "π" + aj
-            _result(b, eq, [(rs, cs, aj, "sliding" if cs != "π" else "absolute", "aʳ"),
-                            (f"r_{A}{i}{j}", aj, cr_, "sliding", "aʳ")])
+            slid = cs != "π"
+            _result(b, eq, [(rs, cs, aj, "sliding" if slid else "absolute",
+                             f"aʳ_{A}{j}{g.link}" if slid else f"a_{A}{j}"),
+                            (f"r_{A}{i}{j}", aj, cr_, "sliding", f"aʳ_{A}{i}{j}")])
             eps[j] = eps[g.link]
             eps[i] = eps[j]
             rel[kj] = _slide(b, rs, u)
@@ -700,28 +702,14 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
 
 
 
-PLAN_ROOM_MM = {"Kl": 250.0, "Kv": 100.0, "Ka": 100.0}
-"""Room for the largest vector of each plan when the variant fixes no scale."""
-
-
 def plan_scales(mech: Mechanism, kin) -> tuple[Scale, Scale, Scale]:
-    """Kl, Kv, Ka from the usual series, or as fixed in the variant's ``[drawing]``.
+    """Kl, Kv, Ka as sheet 1 draws them (see :func:`graphplan.scales.sheet_scales`).
 
-    Kl fits the whole plan of positions (all points over the cycle) in its room;
-    Kv and Ka fit the largest velocity and acceleration of the positions.
+    Kl fits the plan of positions in its column of the sheet, Kv and Ka fit the
+    largest plan of all positions in one cell of the grid of plans; a scale fixed
+    in the variant's ``[drawing]`` section is used as given.
     """
-    fixed = mech.settings.get("drawing", {})
-    pts = np.concatenate([p for p in kin.pos.points.values()])
-    extent = float(np.max(np.ptp(pts, axis=0)))
-    cr = mech.crank
-    kl = fit_scale("Kl", "m/mm", extent, PLAN_ROOM_MM["Kl"], quantity=f"l{cr.pivot}{cr.pin}",
-                   defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
-    vmax = max(float(np.max(np.hypot(v[:, 0], v[:, 1]))) for v in kin.vel.points.values())
-    amax = max(float(np.max(np.hypot(a[:, 0], a[:, 1]))) for a in kin.acc.points.values())
-    va = abs(cr.omega) * cr.length
-    kv = fit_scale("Kv", "(m/s)/mm", vmax, PLAN_ROOM_MM["Kv"], quantity=f"v{cr.pin}",
-                   defining=va, segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
-    kaa = cr.omega**2 * cr.length
-    ka = fit_scale("Ka", "(m/s²)/mm", amax, PLAN_ROOM_MM["Ka"], quantity=f"a{cr.pin}",
-                   defining=kaa, segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
-    return kl, kv, ka
+    from .scales import sheet_scales
+
+    s = sheet_scales(mech, kin)
+    return s.kl, s.kv, s.ka

@@ -27,6 +27,12 @@ def bundled_example(name: str = "press") -> Path:
     return path
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def write_atomic(path: str | Path, data: str | bytes, protect: tuple[Path, ...] = ()) -> Path:
     """Write ``data`` to ``path`` through a temporary file and a rename.
 
@@ -42,6 +48,10 @@ def write_atomic(path: str | Path, data: str | bytes, protect: tuple[Path, ...] 
     raw = data.encode("utf-8") if isinstance(data, str) else data
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
     try:
+        # mkstemp makes the file private (0600); give it the mode a plain open() would
+        # (or keep the mode of the file it replaces)
+        mode = target.stat().st_mode & 0o7777 if target.exists() else 0o666 & ~_umask()
+        os.chmod(tmp, mode)
         with os.fdopen(fd, "wb") as fh:
             fh.write(raw)
             fh.flush()

@@ -40,7 +40,7 @@ import sys
 import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 from types import MappingProxyType
 
@@ -157,7 +157,7 @@ def _fc_list(family: str) -> Path | None:
     return Path(files[0][0]) if files else None
 
 
-@lru_cache(maxsize=None)
+@cache
 def find_font_file(family: str) -> Path | None:
     """Path of the installed font file of ``family`` (one of FONT_CHAIN), or None.
 
@@ -198,7 +198,7 @@ def glyph_is_blank(glyph_set, glyph_name: str, char: str) -> bool:
     return char.isalpha() and char not in _SIMPLE_LETTERS and contours == 1 and points <= 4
 
 
-@lru_cache(maxsize=None)
+@cache
 def load_font(family: str) -> FontInfo | None:
     """Read the metrics and the real glyph coverage of ``family``; None if not installed."""
     path = find_font_file(family)

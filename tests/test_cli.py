@@ -43,7 +43,7 @@ def test_json_contract(capsys):
     labels = [p["label"] for p in data["positions"]]
     assert labels == ["1", "2", "3", "4", "5", "6", "7", "8", "(2)", "(3)"]
     for p in data["positions"]:
-        assert POSITION_KEYS <= set(p)
+        assert set(p) >= POSITION_KEYS
         assert set(p["omega"]) == {"1", "2", "3"} and set(p["epsilon"]) == {"1", "2", "3"}
         for group in ("points", "velocities", "accelerations"):
             for xy in p[group].values():
@@ -107,3 +107,63 @@ def test_json_plans_per_position(capsys):
         assert seg["πb"] * plans["Ka"] == pytest.approx(ab, rel=1e-6, abs=1e-12)
         # the normal component of the rod: n_BA = ω2²·l_AB / Ka
         assert seg["n_BA"] * plans["Ka"] == pytest.approx(p["omega"]["2"] ** 2 * 0.2, rel=1e-6, abs=1e-12)
+
+
+def test_sheets_writes_the_sheet_tables_and_report(capsys, tmp_path):
+    code, out, err = run(capsys, "sheets", "-o", str(tmp_path / "press"))
+    assert code == 0 and err == ""
+    names = sorted(p.name for p in (tmp_path / "press").iterdir())
+    assert names == ["analysis.json", "plans.csv", "plans.en.md", "plans.ru.md", "sheet1.svg"]
+    svg = (tmp_path / "press" / "sheet1.svg").read_text(encoding="utf-8")
+    assert 'width="841mm"' in svg and "План скоростей" in svg
+    report = json.loads((tmp_path / "press" / "analysis.json").read_text(encoding="utf-8"))
+    # the JSON's scales are the sheet's: Kl as the seed fixes it, Kv and Ka as printed
+    assert report["positions"][0]["plans"]["Kl"] == 0.001
+    kv = report["positions"][0]["plans"]["Kv"]
+    assert f"= {kv:g} (м/с)/мм</text>" in svg
+    assert not any(p.name.endswith(".tmp") for p in (tmp_path / "press").iterdir())
+
+
+def test_sheets_of_several_variants_go_into_subfolders(capsys, tmp_path):
+    from graphplan.files import bundled_example
+
+    code, _, _ = run(capsys, "sheets", str(bundled_example("fourbar")),
+                     str(bundled_example("scotch_yoke")), "-o", str(tmp_path))
+    assert code == 0
+    assert (tmp_path / "fourbar" / "sheet1.svg").is_file()
+    assert (tmp_path / "scotch_yoke" / "plans.csv").is_file()
+
+
+@pytest.mark.parametrize("argv, expected", [
+    (["--precision", "-1"], "--precision: expected a reading precision of 0 … 5 mm (got -1)"),
+    (["--precision", "nan"], "--precision: expected a reading precision"),
+])
+def test_sheets_bad_options_are_one_line_errors(capsys, tmp_path, argv, expected):
+    code, out, err = run(capsys, "sheets", "-o", str(tmp_path), *argv)
+    assert code == 2 and out == ""
+    assert err.startswith("graphplan: error: " + expected) and err.count("\n") == 1
+
+
+def test_sheets_refuses_a_file_as_output_folder(capsys, tmp_path):
+    f = tmp_path / "taken"
+    f.write_text("x")
+    code, _, err = run(capsys, "sheets", "-o", str(f))
+    assert code == 2 and "the output must be a directory" in err
+    assert f.read_text() == "x"
+
+
+def test_written_files_get_the_usual_permissions(tmp_path):
+    """mkstemp's private 0600 must not leak into the outputs: a plain file's mode."""
+    import os
+
+    from graphplan.files import write_atomic
+
+    mask = os.umask(0o022)
+    try:
+        p = write_atomic(tmp_path / "a.txt", "x")
+        assert p.stat().st_mode & 0o777 == 0o644  # 0666 & ~0022
+        p.chmod(0o600)
+        write_atomic(p, "y")  # replacing a file keeps its mode
+        assert p.stat().st_mode & 0o777 == 0o600
+    finally:
+        os.umask(mask)

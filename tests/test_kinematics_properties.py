@@ -439,7 +439,7 @@ def sweep_phi(case: Case, n: int) -> np.ndarray:
     return np.radians(np.linspace(lo, hi, n))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def solved(case_id: str):
     """Mechanism, solutions at φ, φ ± ω1·dt, and dt (cached per case)."""
     case = CASES[IDS.index(case_id)]

@@ -3,7 +3,6 @@
 import glob
 import math
 
-import numpy as np
 import pytest
 
 import graphplan as g

@@ -14,6 +14,7 @@ The output has no timestamps: the same sheet always gives the same bytes.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import svgwrite
@@ -27,6 +28,7 @@ from ..sheet import (
     Arc,
     Arrow,
     Circle,
+    Figure,
     Group,
     Hatch,
     Item,
@@ -38,6 +40,7 @@ from ..sheet import (
     arc_point,
     arrow_parts,
     hatch_segments,
+    iter_leaves,
 )
 
 _INKSCAPE = "http://www.inkscape.org/namespaces/inkscape"
@@ -159,6 +162,8 @@ def _element(dwg: svgwrite.Drawing, item: Item):
         return dwg.path(**_with_id({"d": d or "M0,0", **_stroke(item.style)}, item.id))
     if isinstance(item, Text):
         return dwg.text(item.text, **_with_id(_text_attrs(item), item.id))
+    if isinstance(item, Figure):  # an empty placeholder; render_svg puts the picture in
+        return dwg.g(id=item.id, **{"class": "figure"})
     raise TypeError(f"cannot draw {type(item).__name__}")
 
 
@@ -205,7 +210,42 @@ def render_svg(sheet: Sheet) -> str:
         dwg.add(groups[name])
     for it in items:
         groups[it.layer].add(_element(dwg, it))
-    return dwg.tostring() + "\n"
+    text = dwg.tostring()
+    for fig in (it for it in iter_leaves(items) if isinstance(it, Figure)):
+        placeholder = f'<g class="figure" id="{fig.id}" />'
+        if text.count(placeholder) != 1:
+            raise LayoutError(f"figure {fig.id!r}: its placeholder is not unique in the SVG")
+        text = text.replace(placeholder, f'<g class="figure" id="{fig.id}">'
+                            f"{embedded_svg(fig)}</g>")
+    return text + "\n"
+
+
+_XML_PROLOGUE = re.compile(r"<\?xml[^>]*\?>|<!DOCTYPE[^>]*>|<!--.*?-->", re.S)
+_ROOT = re.compile(r"<svg\b([^>]*)>(.*)</svg>\s*$", re.S)
+
+
+def embedded_svg(fig: Figure) -> str:
+    """The picture of ``fig`` as a nested ``<svg>`` filling its box (x, y, w, h in mm).
+
+    The picture keeps its own viewBox and is stretched to the box; every id in it is
+    prefixed with the figure's id (and references follow), so pictures never clash.
+    """
+    body = _XML_PROLOGUE.sub("", fig.svg).strip()
+    m = _ROOT.search(body)
+    if not m:
+        raise LayoutError(f"figure {fig.id!r}: its picture is not an <svg> document")
+    vb = re.search(r'viewBox="([^"]+)"', m.group(1))
+    if not vb:
+        raise LayoutError(f"figure {fig.id!r}: its picture has no viewBox")
+    inner = m.group(2)
+    pre = fig.id + "-"
+    inner = re.sub(r'\bid="([^"]+)"', lambda g: f'id="{pre}{g.group(1)}"', inner)
+    inner = re.sub(r'(href=")#([^"]+)"', lambda g: f'{g.group(1)}#{pre}{g.group(2)}"', inner)
+    inner = re.sub(r"url\(#([^)]+)\)", lambda g: f"url(#{pre}{g.group(1)})", inner)
+    x, y = fig.origin
+    return (f'<svg x="{num(x)}" y="{num(y)}" width="{num(fig.width)}" '
+            f'height="{num(fig.height)}" viewBox="{vb.group(1)}" '
+            f'preserveAspectRatio="none">{inner}</svg>')
 
 
 def write_svg(sheet: Sheet, path: str | Path, protect: tuple[Path, ...] = ()) -> Path:

@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import math
 
-
-
 from ..analysis import Analysis
 from ..geometry import norm
 

@@ -1,0 +1,101 @@
+"""Where things go on sheet 1 (kinematics): the regions of an A1/A2/A3 page.
+
+The page is cut as a student cuts it:
+
+* a **left column** holding the plan of positions (top) and the kinematic
+  diagrams s(φ), v(φ), a(φ) (below it);
+* a **grid** to its right with one cell per plan: the velocity plans of all
+  positions, then their acceleration plans, in reading order;
+* a **bottom strip** under the grid with the table of the plans, and the block of
+  scales above the title block.
+
+The cell size fixes the scales Kv and Ka (each plan fills its cell), so the
+layout is computed before the plans are drawn, from sizes only. Paper mm, y down.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import LayoutError
+from .sheet import GRAPH26_SIZE, TITLE_BLOCK_SIZE, Page, Rect
+
+GAP = 8.0  #: clearance between regions, mm
+CAPTION = 7.0  #: caption strip above a plan cell, mm
+ROW = 7.0  #: row height of the table (3.5 mm lettering)
+SCALES_BLOCK = 27.0  #: height of the block of scales (three lines of 3.5 mm + title)
+DIAGRAM_MIN = (200.0, 130.0)  #: smallest useful box of the three diagrams, mm
+DIAGRAM_MAX_H = 240.0
+
+
+@dataclass(frozen=True, slots=True)
+class Sheet1Layout:
+    """Regions of sheet 1 (mm on paper, y down).
+
+    ``plan_box`` is where the plan of positions goes (its own size, centred in the
+    left column), ``diagrams`` the box of the three diagrams, ``cells`` the plan
+    cells in order (velocity plans of positions 0…N−1, then acceleration plans),
+    ``table`` the top-left corner and width available for the table of the plans,
+    ``scales`` the box of the list of scales.
+    """
+
+    page: Page
+    plan_box: Rect
+    diagrams: Rect
+    cells: tuple[Rect, ...]
+    table: Rect
+    scales: Rect
+
+    @property
+    def cell_inner(self) -> tuple[float, float]:
+        """Room for one plan in a cell (below its caption, with a margin for letters)."""
+        c = self.cells[0]
+        return c.width - 2 * 6.0, c.height - CAPTION - 2 * 6.0
+
+
+def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int) -> Sheet1Layout:
+    """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
+
+    The grid takes the column count that gives the largest square-ish cells for
+    2·N plans. Raises LayoutError when the plan of positions leaves no room.
+    """
+    f = page.frame
+    top = f.y0 + GRAPH26_SIZE[1] + 4.0
+    left_w = max(plan_w, DIAGRAM_MIN[0])
+    if plan_h + GAP + DIAGRAM_MIN[1] > f.y1 - top - 4.0 or left_w > f.width * 0.55:
+        raise LayoutError(
+            f"the plan of positions ({plan_w:.0f}×{plan_h:.0f} mm) does not leave room for the "
+            f"plans on {page.format}: choose a smaller Kl (drawing.Kl) or a larger format"
+        )
+    x0 = f.x0 + 4.0
+    plan_box = Rect(x0 + (left_w - plan_w) / 2, top, x0 + (left_w + plan_w) / 2, top + plan_h)
+    d_h = min(f.y1 - 4.0 - (plan_box.y1 + GAP), DIAGRAM_MAX_H)
+    diagrams = Rect(x0, f.y1 - 4.0 - d_h, x0 + left_w, f.y1 - 4.0)
+
+    gx0, gx1 = x0 + left_w + GAP + 4.0, f.x1 - 4.0
+    table_h = ROW * (n_positions + 1) + CAPTION
+    tb_w, tb_h = TITLE_BLOCK_SIZE
+    strip = max(table_h, tb_h + GAP + SCALES_BLOCK)
+    gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
+    n_cells = 2 * n_positions
+    best = None
+    for ncol in range(1, n_cells + 1):
+        nrow = math.ceil(n_cells / ncol)
+        w, h = (gx1 - gx0) / ncol, (gy1 - gy0) / nrow
+        room = min(w - 12.0, h - CAPTION - 12.0)
+        if best is None or room > best[0]:
+            best = (room, ncol, nrow, w, h)
+    room, ncol, nrow, w, h = best  # type: ignore[misc]
+    if room < 30.0:
+        raise LayoutError(
+            f"{n_cells} plans leave cells of {room:.0f} mm on {page.format}: draw fewer "
+            "positions or use a larger format"
+        )
+    cells = tuple(Rect(gx0 + (i % ncol) * w, gy0 + (i // ncol) * h,
+                       gx0 + (i % ncol + 1) * w, gy0 + (i // ncol + 1) * h)
+                  for i in range(n_cells))
+    tbx = f.x1 - tb_w
+    table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
+    scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
+    return Sheet1Layout(page, plan_box, diagrams, cells, table, scales)

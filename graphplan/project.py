@@ -1,0 +1,66 @@
+"""The project's output files for one variant: the sheets, the tables and the JSON report.
+
+``graphplan sheets VARIANT.toml -o DIR`` writes into DIR:
+
+* ``sheet1.svg`` — sheet 1, kinematic analysis (A1 unless the variant says otherwise);
+* ``plans.ru.md``, ``plans.en.md`` — the tables of the plans, as a hand calculation;
+* ``plans.csv`` — the same readings, one row per segment, for scripts;
+* ``analysis.json`` — the report of ``graphplan analyze --json``.
+
+Every file is written atomically; the variant file is never overwritten. With
+several variants, each goes into ``DIR/<variant name>/``.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from .errors import InputError
+
+
+@dataclass(frozen=True, slots=True)
+class Written:
+    """Files written for one variant."""
+
+    variant: Path
+    files: tuple[Path, ...]
+
+
+def project_files(analysis, *, lang: str = "ru", precision: float | None = None) -> dict[str, str]:
+    """Name → text of every output file of a variant (nothing is written here)."""
+    from .kinematics_sheet import kinematics_sheet
+    from .render.plan_tables import plans_csv, plans_markdown
+    from .render.svg import render_svg
+
+    drawing = analysis.mech.settings.get("drawing", {})
+    prec = float(drawing.get("reading_mm", 0.5)) if precision is None else precision
+    out = {
+        "sheet1.svg": render_svg(kinematics_sheet(analysis, lang=lang)),
+        "plans.ru.md": plans_markdown(analysis, "ru", prec),
+        "plans.en.md": plans_markdown(analysis, "en", prec),
+        "plans.csv": plans_csv(analysis, "en", prec),
+        "analysis.json": json.dumps(analysis.to_json(), ensure_ascii=False, indent=1,
+                                    allow_nan=False) + "\n",
+    }
+    return out
+
+
+def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,
+                  precision: float | None = None) -> Written:
+    """Analyse ``variant`` and write its output files into ``out_dir``."""
+    from .analysis import analyze
+    from .files import write_atomic
+    from .loader import load
+
+    variant = Path(variant)
+    mech = load(variant)
+    lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
+    texts = project_files(analyze(mech), lang=lang, precision=precision)
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"{out}: the output must be a directory")
+    written = tuple(write_atomic(out / name, text, protect=(variant,))
+                    for name, text in texts.items())
+    return Written(variant, written)

@@ -1,0 +1,108 @@
+"""The scales of sheet 1: Kl so the plan of positions fits its column, Kv and Ka so
+every plan fits its cell of the grid (see :mod:`graphplan.layout`).
+
+One function, :func:`sheet_scales`, decides them; the JSON report, the tables and
+the sheet all use it, so a segment in the tables is the segment on the sheet.
+A scale fixed in the variant's ``[drawing]`` section is used as given.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .layout import DIAGRAM_MIN, GAP, Sheet1Layout, sheet1_layout
+from .model import Mechanism
+from .sheet import GRAPH26_SIZE, Page
+from .units import Scale, fit_scale
+
+PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
+LINE_OVERSHOOT = 8.0  #: construction lines run this far past their intersection, mm
+TRAJECTORY_POINTS = 360
+
+
+@dataclass(frozen=True, slots=True)
+class Sheet1Scales:
+    """Kl, Kv, Ka of sheet 1, the layout they were chosen for and the plan's extent."""
+
+    kl: Scale
+    kv: Scale
+    ka: Scale
+    layout: Sheet1Layout
+    extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the plan of positions
+
+
+def trajectories(mech: Mechanism, kin) -> dict[str, np.ndarray]:
+    """Paths of the centres of mass and of every joint over one turn (m), closed."""
+    from .kinematics import solve
+
+    phi = kin.phi[0] + np.linspace(0.0, 2 * math.pi, TRAJECTORY_POINTS + 1)
+    fine = solve(mech, phi)
+    return {name: p for name, p in fine.pos.points.items()}
+
+
+def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple[float, ...]:
+    """Bounding box (m) of everything the plan of positions draws, about the crank pivot."""
+    o = kin.pos.points[mech.crank.pivot][0]
+    pts = [p for p in paths.values()] + [p for p in kin.pos.points.values()]
+    allp = np.concatenate(pts) - o
+    (x0, y0), (x1, y1) = allp.min(axis=0), allp.max(axis=0)
+    return float(x0), float(y0), float(x1), float(y1)
+
+
+def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale) -> tuple[float, float, float, float]:
+    """Largest width and height (mm) of the velocity and of the acceleration plans."""
+    from .constructions import acceleration_plan, velocity_plan
+
+    vw = vh = aw = ah = 0.0
+    for k in range(kin.n):
+        vp = velocity_plan(mech, kin, k, kl, kv)
+        ap = acceleration_plan(mech, kin, k, kl, ka, vp)
+        for plan, is_v in ((vp, True), (ap, False)):
+            pts = np.array(list(plan.points.values()))
+            w, h = np.ptp(pts, axis=0)
+            if is_v:
+                vw, vh = max(vw, w), max(vh, h)
+            else:
+                aw, ah = max(aw, w), max(ah, h)
+    return vw, vh, aw, ah
+
+
+def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales:
+    """Choose Kl, Kv, Ka for sheet 1 from the usual series (1, 2, 2.5, 4, 5 × 10^k).
+
+    Kl: the plan of positions (all positions, the trajectories) fits the left column,
+    at most 42 % of the frame's width and the height left above the diagrams.
+    Kv, Ka: the largest velocity (acceleration) plan of all positions fits the
+    room of one grid cell, construction lines included.
+    """
+    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    fixed = mech.settings.get("drawing", {})
+    paths = trajectories(mech, kin)
+    ext = position_extent(mech, kin, paths)
+    f = page.frame
+    room_w = 0.42 * f.width - 2 * PLAN_MARGIN
+    room_h = f.height - GRAPH26_SIZE[1] - 8.0 - GAP - DIAGRAM_MIN[1] - 2 * PLAN_MARGIN
+    need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
+    cr = mech.crank
+    kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}", defining=cr.length,
+                   segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+    plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
+    plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n)
+    iw, ih = layout.cell_inner
+    iw, ih = iw - 2 * LINE_OVERSHOOT, ih - 2 * LINE_OVERSHOOT
+    va = abs(cr.omega) * cr.length
+    aa = cr.omega**2 * cr.length
+    trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
+    trial_a = Scale("Ka", aa / 50.0, "(m/s²)/mm")
+    vw, vh, aw, ah = _plan_extent_mm(mech, kin, kl, trial_v, trial_a)
+    need_v = trial_v.per_mm * max(vw / iw, vh / ih, 1e-9)
+    need_a = trial_a.per_mm * max(aw / iw, ah / ih, 1e-9)
+    kv = fit_scale("Kv", "(m/s)/mm", need_v, 1.0, quantity=f"v{cr.pin}", defining=va,
+                   segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
+    ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
+                   segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
+    return Sheet1Scales(kl, kv, ka, layout, ext)

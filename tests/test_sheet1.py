@@ -1,0 +1,177 @@
+"""Sheet 1 (kinematics): the drawing is the construction, laid out by the standards.
+
+The plans on the sheet are read back from the SVG like a draftsman reads a
+drawing (a vector's length in mm times its scale) and compared with the exact
+kinematics; the layout is checked with shapely (no overlaps, nothing outside
+the frame, plans inside their cells); the title block sits at its GOST place.
+"""
+
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from graphplan.analysis import analyze
+from graphplan.constructions import acceleration_plan, velocity_plan
+from graphplan.files import bundled_example
+from graphplan.kinematics_sheet import kinematics_sheet
+from graphplan.loader import load
+from graphplan.render.svg import render_svg
+from graphplan.scales import sheet_scales
+from graphplan.sheet import Arrow, Figure, Text, check_layout, iter_leaves, text_box
+
+SVG = "{http://www.w3.org/2000/svg}"
+EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
+            "offset_slider"]
+_cache: dict = {}
+
+
+def built(name):
+    if name not in _cache:
+        a = analyze(load(bundled_example(name)))
+        sheet = kinematics_sheet(a)
+        _cache[name] = (a, sheet, render_svg(sheet))
+    return _cache[name]
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_layout_has_no_problems(name):
+    _, sheet, _ = built(name)
+    assert check_layout(sheet) == []
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_plans_stay_in_their_cells_and_cells_do_not_overlap(name):
+    a, sheet, _ = built(name)
+    sc = sheet_scales(a.mech, a.kin)
+    cells = sc.layout.cells
+    assert len(cells) == 2 * a.kin.n
+    polys = [c.polygon() for c in cells]
+    for i in range(len(polys)):
+        for j in range(i + 1, len(polys)):
+            assert polys[i].intersection(polys[j]).area < 1e-6
+    leaves = list(iter_leaves(sheet.items))
+    for k in range(a.kin.n):
+        for prefix, cell in ((f"vp{k}-", cells[k]), (f"ap{k}-", cells[a.kin.n + k])):
+            mine = [it for it in leaves if it.id and it.id.startswith(prefix)]
+            assert mine, prefix
+            for it in mine:
+                if isinstance(it, Text):
+                    assert cell.polygon().contains(text_box(it)), (prefix, it.text)
+                elif isinstance(it, Arrow):
+                    for p in (it.p0, it.p1):
+                        assert cell.x0 <= p[0] <= cell.x1 and cell.y0 <= p[1] <= cell.y1
+
+
+def _arrow_length(root, ident):
+    """Length (mm) of a drawn vector, from its shaft start to its arrowhead's tip."""
+    g = root.find(f".//{SVG}g[@id='{ident}']")
+    assert g is not None, ident
+    tip = g.find(f"{SVG}polygon").get("points").split()[0].split(",")
+    line = g.find(f"{SVG}line")
+    start = (line.get("x1"), line.get("y1")) if line is not None else tip
+    return math.dist(tuple(map(float, start)), tuple(map(float, tip)))
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "shaper_prp", "scotch_yoke", "fourbar"])
+def test_vectors_read_off_the_svg_give_the_exact_kinematics(name):
+    """pb (mm, measured between the SVG's coordinates) · Kv = |v_B| of the solver.
+
+    The SVG rounds coordinates to 0.01 mm, so a length is good to about 0.015 mm:
+    on a 40 mm vector that is 4e-4 relative.
+    """
+    a, _, svg = built(name)
+    root = ET.fromstring(svg)
+    sc = sheet_scales(a.mech, a.kin)
+    kin = a.kin
+    checked = 0
+    for k in range(kin.n):
+        vp = velocity_plan(a.mech, kin, k, sc.kl, sc.kv)
+        ap = acceleration_plan(a.mech, kin, k, sc.kl, sc.ka, vp)
+        for plan, pole, table, prefix in ((vp, "p", kin.vel.points, "vp"),
+                                          (ap, "π", kin.acc.points, "ap")):
+            for rd in plan.readings.values():
+                if not rd.name.startswith(pole) or rd.mm < 4.0:
+                    continue
+                point = rd.quantity.split("_", 1)[1]
+                if point not in table:
+                    continue  # a coincident point of another link (a3): no solver array
+                mm = _arrow_length(root, f"{prefix}{k}-{rd.name}")
+                exact = float(np.hypot(*table[point][k]))
+                assert mm * plan.scale.per_mm == pytest.approx(exact, rel=2e-3, abs=0.02 * plan.scale.per_mm)
+                checked += 1
+    assert checked >= 2 * kin.n
+
+
+def test_svg_is_a1_in_millimetres_with_the_title_block_in_place():
+    _, sheet, svg = built("press")
+    root = ET.fromstring(svg)
+    assert root.get("width") == "841mm" and root.get("height") == "594mm"
+    assert root.get("viewBox") == "0 0 841 594"
+    # form 1: 185×55 in the bottom-right corner of the frame (836, 589): its top-left
+    # line runs from x = 836 − 185 = 651 at y = 589 − 55 = 534
+    line = root.find(f".//{SVG}line[@id='tb-line-01']")
+    assert (line.get("x1"), line.get("y1"), line.get("x2"), line.get("y2")) == \
+        ("651", "534", "836", "534")
+    texts = {t.get("id"): "".join(t.itertext()) for t in root.iter(f"{SVG}text") if t.get("id")}
+    assert texts["tb-designation"] == "ТММ.КП.00.00.00"
+    assert texts["tb-sheet"] == "1"
+    assert "Кривошипный пресс" in " ".join(v for k, v in texts.items() if k.startswith("tb-title"))
+
+
+def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed():
+    a, sheet, svg = built("press")
+    texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
+    # Kl is the seed's: the crank, 0.08 m, drawn 80 mm
+    assert "Kl = lOA/OA = 0.08/80 = 0.001 м/мм" in texts
+    for lab in a.kin.labels:  # 8 positions and the working positions (2), (3)
+        assert any(t == f"План скоростей, пол. {lab}" for t in texts)
+        assert any(t == f"План ускорений, пол. {lab}" for t in texts)
+    # the crank pin is numbered in every position on the plan of positions
+    pp = [t.text for t in iter_leaves(sheet.items)
+          if isinstance(t, Text) and t.id and t.id.startswith("pp-label")]
+    for lab in a.kin.labels:
+        assert any(lab in s.split(", ") for s in pp), lab
+
+
+def test_first_position_is_drawn_in_main_line_and_dead_centres_dash_dot_dot():
+    a, sheet, _ = built("press")
+    leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
+    assert leaves["pp-0-link-1"].style.width == 0.7  # position 1, main line S = 0.7
+    # position 5 is the top dead centre of the press (φ = 90°): an extreme position
+    k5 = a.kin.labels.index("5")
+    assert leaves[f"pp-{k5}-link-1"].style.dasharray == (15.0, 3.0, 1.0, 3.0, 1.0, 3.0)
+    k3 = a.kin.labels.index("3")
+    assert leaves[f"pp-{k3}-link-1"].style.width == 0.25
+
+
+def test_plan_of_positions_is_at_scale():
+    """The crank drawn on the sheet is l_OA/Kl = 0.08/0.001 = 80 mm long in every position."""
+    a, sheet, _ = built("press")
+    leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
+    for k in range(a.kin.n):
+        ln = leaves[f"pp-{k}-link-1"]
+        assert math.dist(ln.p0, ln.p1) == pytest.approx(80.0, abs=1e-9)
+
+
+def test_diagrams_are_embedded_as_vector_graphics():
+    _, sheet, svg = built("press")
+    figs = [it for it in iter_leaves(sheet.items) if isinstance(it, Figure)]
+    assert len(figs) == 1
+    root = ET.fromstring(svg)
+    g = root.find(f".//{SVG}g[@id='kin-diagrams']")
+    nested = g.find(f"{SVG}svg")
+    assert nested is not None and nested.get("viewBox")
+    assert len(nested.findall(f".//{SVG}path")) > 20
+    assert root.find(f".//{SVG}image") is None  # nothing raster
+    ids = [e.get("id") for e in root.iter() if e.get("id")]
+    assert len(ids) == len(set(ids))
+
+
+def test_english_lettering():
+    a, _, _ = built("fourbar")
+    sheet = kinematics_sheet(a, lang="en", diagrams=False)
+    texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
+    assert any(t.startswith("Velocity plan, pos.") for t in texts)
+    assert check_layout(sheet) == []
