@@ -41,6 +41,8 @@ def _parser() -> argparse.ArgumentParser:
                    help="output folder (with several variants: one sub-folder per variant)")
     s.add_argument("--lang", choices=("en", "ru"), default=None,
                    help="lettering of the sheets (default: the variant's drawing.language, ru)")
+    s.add_argument("--page", choices=("A1", "A2", "A3"), default=None,
+                   help="sheet format (default: the variant's drawing.format, A1)")
     s.add_argument("--precision", type=float, default=None, metavar="MM",
                    help="reading precision of the drafting tables, mm (default: the "
                    "variant's drawing.reading_mm, 0.5)")
@@ -84,7 +86,8 @@ def _sheets(args) -> int:
     out = Path(args.output)
     for v in variants:
         target = out / v.stem if len(variants) > 1 else out
-        done = write_project(v, target, lang=args.lang, precision=args.precision)
+        done = write_project(v, target, lang=args.lang, precision=args.precision,
+                             page=args.page)
         print(f"{v}: " + ", ".join(str(f) for f in done.files))
     return 0
 

@@ -27,6 +27,7 @@ from .sheet import (
     MAIN,
     MEDIUM,
     THIN,
+    Arc,
     Arrow,
     Circle,
     Figure,
@@ -41,6 +42,7 @@ from .sheet import (
     Style,
     Text,
     TitleBlock,
+    arc_point,
     item_geometry,
     iter_leaves,
     signatures,
@@ -180,6 +182,9 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
 
     for fp in mech.frame_points:
         items += _support(P(mech.frame_points[fp]), f"pp-support-{fp}")
+    items += _rotation_arrow(P(pivot), mech.crank, float(kin.phi[0]), kl)
+    labels.insert(0, LabelRequest(_rotation_label_anchor(P(pivot), mech.crank, float(kin.phi[0]),
+                                                         kl), "ω1", 5.0, group="omega"))
     # letters of the first position
     first = 0
     pc = P(pivot)
@@ -268,6 +273,30 @@ def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
     hl, hw = SLIDER[0] / 2, SLIDER[1] / 2
     return tuple(tuple(map(float, c + sx * hl * du + sy * hw * dn))
                  for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1)))
+
+
+def _rotation_radius(crank, kl: float) -> float:
+    return max(6.0, min(12.0, 0.4 * crank.length / kl))
+
+
+def _rotation_arrow(c: Pt, crank, phi0: float, kl: float) -> list[Item]:
+    """The sense of rotation of the crank: a 70° arc about its pivot with an arrowhead.
+
+    Drawn opposite the first position of the crank (model angles are sheet angles:
+    the plan is only flipped in y, so counter-clockwise stays counter-clockwise).
+    """
+    r = _rotation_radius(crank, kl)
+    a0 = math.degrees(phi0) + 145.0
+    a1 = a0 + 70.0
+    arc = Arc(c, r, a0, a1, THIN, layer="position_plan", id="pp-omega-arc")
+    tip_deg, back = (a1, -1.0) if crank.omega > 0 else (a0, 1.0)
+    tip = arc_point(c, r, tip_deg)
+    tail = arc_point(c, r, tip_deg + back * 25.0)
+    return [arc, Arrow(tail, tip, THIN, 3.0, 1.0, layer="position_plan", id="pp-omega-head")]
+
+
+def _rotation_label_anchor(c: Pt, crank, phi0: float, kl: float) -> Pt:
+    return arc_point(c, _rotation_radius(crank, kl) + 1.0, math.degrees(phi0) + 180.0)
 
 
 def _support(c: Pt, ident: str) -> list[Item]:
@@ -382,14 +411,14 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
     items: list[Item] = []
     items += position_plan_items(analysis, sc, lang)
     reader = Reader(precision)
-    n = kin.n
-    for k in range(n):
+    n = len(sc.plans)
+    for c, k in enumerate(sc.plans):
         vp = velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
         ap = acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp, reader)
         lab = kin.labels[k]
-        items += plan_items(vp, sc.layout.cells[k], f"{w['velocity']}, {w['pos']} {lab}",
+        items += plan_items(vp, sc.layout.cells[c], f"{w['velocity']}, {w['pos']} {lab}",
                             f"vp{k}")
-        items += plan_items(ap, sc.layout.cells[n + k], f"{w['acceleration']}, {w['pos']} {lab}",
+        items += plan_items(ap, sc.layout.cells[n + c], f"{w['acceleration']}, {w['pos']} {lab}",
                             f"ap{k}")
     items += scales_items(sc, lang)
     items += table_block(analysis, sc, lang)

@@ -29,6 +29,12 @@ DIAGRAM_MIN = (200.0, 130.0)  #: smallest useful box of the three diagrams, mm
 DIAGRAM_MAX_H = 240.0
 
 
+def diagram_min(page: Page) -> tuple[float, float]:
+    """Smallest box of the diagrams on ``page``: DIAGRAM_MIN on A1, in proportion below."""
+    k = min(1.0, page.frame.height / 584.0)
+    return DIAGRAM_MIN[0] * k, DIAGRAM_MIN[1] * k
+
+
 @dataclass(frozen=True, slots=True)
 class Sheet1Layout:
     """Regions of sheet 1 (mm on paper, y down).
@@ -54,16 +60,19 @@ class Sheet1Layout:
         return c.width - 2 * 6.0, c.height - CAPTION - 2 * 6.0
 
 
-def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int) -> Sheet1Layout:
+def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
+                  n_plans: int | None = None) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
     The grid takes the column count that gives the largest square-ish cells for
-    2·N plans. Raises LayoutError when the plan of positions leaves no room.
+    2·``n_plans`` plans (default: every position); the table has a row per position.
+    Raises LayoutError when the plan of positions leaves no room.
     """
     f = page.frame
     top = f.y0 + GRAPH26_SIZE[1] + 4.0
-    left_w = max(plan_w, DIAGRAM_MIN[0])
-    if plan_h + GAP + DIAGRAM_MIN[1] > f.y1 - top - 4.0 or left_w > f.width * 0.55:
+    dmin_w, dmin_h = diagram_min(page)
+    left_w = max(plan_w, dmin_w)
+    if plan_h + GAP + dmin_h > f.y1 - top - 4.0 or left_w > f.width * 0.55:
         raise LayoutError(
             f"the plan of positions ({plan_w:.0f}×{plan_h:.0f} mm) does not leave room for the "
             f"plans on {page.format}: choose a smaller Kl (drawing.Kl) or a larger format"
@@ -78,7 +87,7 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int) ->
     tb_w, tb_h = TITLE_BLOCK_SIZE
     strip = max(table_h, tb_h + GAP + SCALES_BLOCK)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
-    n_cells = 2 * n_positions
+    n_cells = 2 * (n_positions if n_plans is None else n_plans)
     best = None
     for ncol in range(1, n_cells + 1):
         nrow = math.ceil(n_cells / ncol)
@@ -89,8 +98,8 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int) ->
     room, ncol, nrow, w, h = best  # type: ignore[misc]
     if room < 30.0:
         raise LayoutError(
-            f"{n_cells} plans leave cells of {room:.0f} mm on {page.format}: draw fewer "
-            "positions or use a larger format"
+            f"{n_cells} plans leave cells of {room:.0f} mm on {page.format}: choose the "
+            "positions to draw (drawing.positions) or a larger format"
         )
     cells = tuple(Rect(gx0 + (i % ncol) * w, gy0 + (i // ncol) * h,
                        gx0 + (i % ncol + 1) * w, gy0 + (i // ncol + 1) * h)

@@ -672,6 +672,12 @@ def _check_settings(r: _Reader, settings: dict) -> None:
         r.string(drw["format"], "drawing.format", ("A1", "A2", "A3"))
     if "language" in drw:
         r.string(drw["language"], "drawing.language", ("ru", "en"))
+    if "positions" in drw:
+        labels = r.array(drw["positions"], "drawing.positions", minlen=1)
+        for i, lab in enumerate(labels):
+            r.string(lab, f"drawing.positions[{i}]")
+        if len(set(labels)) != len(labels):
+            raise r.fail("drawing.positions", "expected each position label once")
     tb = settings.get("title_block", {})
     for key, value in tb.items():
         if key in ("sheet", "sheets"):

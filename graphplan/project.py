@@ -14,7 +14,7 @@ several variants, each goes into ``DIR/<variant name>/``.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .errors import InputError
@@ -48,14 +48,20 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
 
 
 def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,
-                  precision: float | None = None) -> Written:
-    """Analyse ``variant`` and write its output files into ``out_dir``."""
+                  precision: float | None = None, page: str | None = None) -> Written:
+    """Analyse ``variant`` and write its output files into ``out_dir``.
+
+    ``page`` ("A1", "A2", "A3") overrides the variant's ``drawing.format``.
+    """
     from .analysis import analyze
     from .files import write_atomic
     from .loader import load
 
     variant = Path(variant)
     mech = load(variant)
+    if page:  # the format decides the scales: the sheet, tables and JSON must agree
+        drawing = {**mech.settings.get("drawing", {}), "format": page}
+        mech = replace(mech, settings={**mech.settings, "drawing": drawing})
     lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
     texts = project_files(analyze(mech), lang=lang, precision=precision)
     out = Path(out_dir)

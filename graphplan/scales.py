@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .layout import DIAGRAM_MIN, GAP, Sheet1Layout, sheet1_layout
+from .errors import InputError
+from .layout import GAP, Sheet1Layout, diagram_min, sheet1_layout
 from .model import Mechanism
 from .sheet import GRAPH26_SIZE, Page
 from .units import Scale, fit_scale
@@ -31,7 +32,8 @@ class Sheet1Scales:
     kv: Scale
     ka: Scale
     layout: Sheet1Layout
-    extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the plan of positions
+    extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the positions, m
+    plans: tuple[int, ...] = ()  # positions whose plans are drawn, in cell order
 
 
 def trajectories(mech: Mechanism, kin) -> dict[str, np.ndarray]:
@@ -52,12 +54,25 @@ def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple
     return float(x0), float(y0), float(x1), float(y1)
 
 
-def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale) -> tuple[float, float, float, float]:
+def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
+    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or all)."""
+    wanted = mech.settings.get("drawing", {}).get("positions")
+    if wanted is None:
+        return tuple(range(kin.n))
+    for lab in wanted:
+        if lab not in kin.labels:
+            raise InputError(f"{mech.source}: drawing.positions: expected a position label "
+                             f"({', '.join(kin.labels)}), got {lab!r}")
+    return tuple(kin.labels.index(lab) for lab in wanted)
+
+
+def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale,
+                    which: tuple[int, ...]) -> tuple[float, float, float, float]:
     """Largest width and height (mm) of the velocity and of the acceleration plans."""
     from .constructions import acceleration_plan, velocity_plan
 
     vw = vh = aw = ah = 0.0
-    for k in range(kin.n):
+    for k in which:
         vp = velocity_plan(mech, kin, k, kl, kv)
         ap = acceleration_plan(mech, kin, k, kl, ka, vp)
         for plan, is_v in ((vp, True), (ap, False)):
@@ -84,25 +99,26 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
     ext = position_extent(mech, kin, paths)
     f = page.frame
     room_w = 0.42 * f.width - 2 * PLAN_MARGIN
-    room_h = f.height - GRAPH26_SIZE[1] - 8.0 - GAP - DIAGRAM_MIN[1] - 2 * PLAN_MARGIN
+    room_h = f.height - GRAPH26_SIZE[1] - 8.0 - GAP - diagram_min(page)[1] - 2 * PLAN_MARGIN
     need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
     cr = mech.crank
     kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}", defining=cr.length,
                    segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
-    layout = sheet1_layout(page, plan_w, plan_h, kin.n)
+    which = plan_positions(mech, kin)
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which))
     iw, ih = layout.cell_inner
     iw, ih = iw - 2 * LINE_OVERSHOOT, ih - 2 * LINE_OVERSHOOT
     va = abs(cr.omega) * cr.length
     aa = cr.omega**2 * cr.length
     trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
     trial_a = Scale("Ka", aa / 50.0, "(m/s²)/mm")
-    vw, vh, aw, ah = _plan_extent_mm(mech, kin, kl, trial_v, trial_a)
+    vw, vh, aw, ah = _plan_extent_mm(mech, kin, kl, trial_v, trial_a, which)
     need_v = trial_v.per_mm * max(vw / iw, vh / ih, 1e-9)
     need_a = trial_a.per_mm * max(aw / iw, ah / ih, 1e-9)
     kv = fit_scale("Kv", "(m/s)/mm", need_v, 1.0, quantity=f"v{cr.pin}", defining=va,
                    segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
     ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
                    segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
-    return Sheet1Scales(kl, kv, ka, layout, ext)
+    return Sheet1Scales(kl, kv, ka, layout, ext, which)

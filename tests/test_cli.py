@@ -167,3 +167,25 @@ def test_written_files_get_the_usual_permissions(tmp_path):
         assert p.stat().st_mode & 0o777 == 0o600
     finally:
         os.umask(mask)
+
+
+def test_sheets_on_a2(capsys, tmp_path):
+    from graphplan.files import bundled_example
+
+    code, _, err = run(capsys, "sheets", str(bundled_example("fourbar")), "--page", "A2",
+                       "-o", str(tmp_path))
+    assert code == 0, err
+    svg = (tmp_path / "sheet1.svg").read_text(encoding="utf-8")
+    assert 'width="594mm"' in svg and 'height="420mm"' in svg
+    # the report's scales are the A2 sheet's, not the A1 default's
+    kv = json.loads((tmp_path / "analysis.json").read_text(encoding="utf-8"))[
+        "mechanism"]["scales"]["Kv"]["value"]
+    assert f"= {kv:g} (м/с)/мм</text>" in svg
+
+
+def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
+    code, out, err = run(capsys, "sheets", "--page", "A3", "-o", str(tmp_path))
+    assert code == 2 and out == ""
+    assert "choose a smaller Kl (drawing.Kl) or a larger format" in err
+    assert err.count("\n") == 1
+    assert not (tmp_path / "sheet1.svg").exists()

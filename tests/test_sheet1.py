@@ -175,3 +175,61 @@ def test_english_lettering():
     texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
     assert any(t.startswith("Velocity plan, pos.") for t in texts)
     assert check_layout(sheet) == []
+
+
+def _variant_with(tmp_path, extra: str, name="press"):
+    text = bundled_example(name).read_text(encoding="utf-8")
+    text = text.replace("[drawing]\n", "[drawing]\n" + extra + "\n")
+    p = tmp_path / f"{name}.toml"
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_a3_sheet_draws_the_chosen_positions(tmp_path):
+    """On A3 the press fits at Kl = 0.004 with the plans of (2) and (3) only."""
+    from graphplan.sheet import Page
+
+    p = _variant_with(tmp_path, 'positions = ["(2)", "(3)"]').read_text(encoding="utf-8")
+    p = p.replace("Kl = 0.001", "Kl = 0.004")
+    (tmp_path / "a3.toml").write_text(p, encoding="utf-8")
+    a = analyze(load(tmp_path / "a3.toml"))
+    sheet = kinematics_sheet(a, page=Page("A3"))
+    assert sheet.page.format == "A3"
+    assert check_layout(sheet) == []
+    caps = sorted(t.text for t in iter_leaves(sheet.items)
+                  if isinstance(t, Text) and t.id and t.id.endswith("-caption")
+                  and t.id[:2] in ("vp", "ap"))
+    assert caps == ["План скоростей, пол. (2)", "План скоростей, пол. (3)",
+                    "План ускорений, пол. (2)", "План ускорений, пол. (3)"]
+
+
+def test_unknown_position_to_draw_is_a_one_line_error(tmp_path):
+    from graphplan.errors import InputError
+
+    a = analyze(load(_variant_with(tmp_path, 'positions = ["1", "9"]')))
+    with pytest.raises(InputError, match=r"press.toml: drawing.positions: expected a position "
+                       r"label \(1, 2, .*\), got '9'"):
+        kinematics_sheet(a, diagrams=False)
+
+
+def test_a_plan_of_positions_too_large_for_the_format_is_a_layout_error():
+    from graphplan.errors import LayoutError
+    from graphplan.sheet import Page
+
+    a, _, _ = built("press")  # Kl = 0.001 fixed: 388 mm tall
+    with pytest.raises(LayoutError, match="choose a smaller Kl"):
+        kinematics_sheet(a, page=Page("A3"))
+
+
+@pytest.mark.parametrize("name, ccw", [("press", True), ("offset_slider", False)])
+def test_sense_of_rotation_is_drawn_at_the_crank(name, ccw):
+    """The arrowhead of ω1 points counter-clockwise for a ccw crank, clockwise for cw."""
+    _, sheet, _ = built(name)
+    leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
+    arc, head = leaves["pp-omega-arc"], leaves["pp-omega-head"]
+    c = np.array(arc.centre)
+    t0, t1 = np.array(head.p0) - c, np.array(head.p1) - c
+    # on paper (y down) a counter-clockwise turn as seen has a negative cross product
+    turn = t0[0] * t1[1] - t0[1] * t1[0]
+    assert (turn < 0) == ccw
+    assert any(isinstance(t, Text) and t.text == "ω1" for t in iter_leaves(sheet.items))

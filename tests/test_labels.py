@@ -1,0 +1,37 @@
+"""Letters of points: coincident points written together, no two letters overlapping."""
+
+from shapely.geometry import LineString
+
+from graphplan.labels import LabelRequest, merge_coincident, place_labels
+from graphplan.sheet import text_box
+
+
+def test_coincident_points_are_written_together():
+    reqs = [LabelRequest((10, 10), "p", group="v"), LabelRequest((10.5, 10), "b", group="v"),
+            LabelRequest((10.2, 10), "b", group="v"), LabelRequest((10, 10), "π", group="a"),
+            LabelRequest((30, 10), "a", group="v")]
+    out = merge_coincident(reqs, 1.0)
+    # "b" twice is written once; another group's point is not merged
+    assert [r.text for r in out] == ["p, b", "π", "a"]
+
+
+def test_crowded_letters_do_not_overlap_and_avoid_lines():
+    # twelve points 3 mm apart on a line: every letter must find its own spot
+    reqs = [LabelRequest((50 + 3 * i, 50), f"s{i}") for i in range(12)]
+    line = LineString([(40, 50), (100, 50)])
+    texts = place_labels(reqs, [line], layer="text", id_prefix="t")
+    boxes = [text_box(t) for t in texts]
+    for i in range(len(boxes)):
+        for j in range(i + 1, len(boxes)):
+            assert boxes[i].intersection(boxes[j]).area < 1e-9
+    assert sum(b.intersects(line) for b in boxes) == 0
+    assert len({t.id for t in texts}) == 12
+
+
+def test_keep_out_is_respected():
+    from shapely.geometry import box
+
+    wall = box(0, 0, 100, 48)  # everything above y = 48 is taken
+    texts = place_labels([LabelRequest((50, 50), "A", 5.0)], [], layer="text", id_prefix="k",
+                         keep_out=[wall])
+    assert not text_box(texts[0]).intersects(wall)
