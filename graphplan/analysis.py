@@ -78,7 +78,24 @@ class Analysis:
             segments.update({r.name: r.mm for r in ap.readings.values()})
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
                               "segments_mm": segments}
+        self._add_forces(positions)
         return {"mechanism": mechanism, "positions": positions}
+
+    def _add_forces(self, positions: list[dict]) -> None:
+        """Per position: the exact kinetostatics (``forces``) with the variant's rules, and
+        ``M_bal_full``, the balancing moment with nothing neglected (N·m, CCW+)."""
+        from .applied_loads import compute_loads
+        from .kinetostatics import solve_forces
+
+        loads = compute_loads(self.mech, self.kin, self.cycle)
+        forces = solve_forces(self.mech, self.kin, loads)
+        full = solve_forces(self.mech, self.kin,
+                            compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0))
+        for k, entry in enumerate(positions):
+            f = forces.as_json(k)
+            del f["label"], f["phi_deg"]
+            entry["forces"] = f
+            entry["M_bal_full"] = float(full.M_bal[k])
 
 
 def analyze(mech: Mechanism) -> Analysis:

@@ -189,3 +189,18 @@ def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
     assert "choose a smaller Kl (drawing.Kl) or a larger format" in err
     assert err.count("\n") == 1
     assert not (tmp_path / "sheet1.svg").exists()
+
+
+def test_json_carries_reactions_and_balancing_moments(capsys):
+    """The seed's working position (2): R12 = 424 kN, h21 = 37.39 mm, Mур = 15.85 kN·m
+    (the seed: Kp = 10 kN/mm, R12 = 42.4 mm · 10 = 424 kN, Mур = 424·37.39·0.001)."""
+    code, out, _ = run(capsys, "analyze", "--json")
+    assert code == 0
+    pos = {p["label"]: p for p in json.loads(out)["positions"]}
+    f2 = pos["(2)"]["forces"]
+    assert f2["reactions"]["R12"]["magnitude"] == pytest.approx(424.0e3, rel=2e-3)
+    assert f2["crank_arms_m"]["R21"] == pytest.approx(0.03739, rel=2e-3)
+    assert f2["M_bal"] == pytest.approx(15.85e3, rel=2e-3)
+    assert set(f2["loads"]["neglected"]) >= {"G3", "Pи3"}  # the seed's 10 % rule
+    # with nothing neglected the moment differs (weights and inertia count again)
+    assert pos["(2)"]["M_bal_full"] != pytest.approx(f2["M_bal"], rel=1e-3)
