@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import InputError, SingularPoseError
+from .errors import AssemblyError, InputError, SingularPoseError
 from .kinematics import Kinematics, solve
 from .model import Mechanism
 from .positions import solve_positions
@@ -134,6 +134,7 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
                 "become parallel)"
             )
         min_cond[name] = (min(s_min, float(s[k])), phi_min if s_min < s[k] else float(grid[k]))
+    _check_slot_clearance(mech, grid, pos)
 
     kind, q, rate, point = output_coordinate(mech, pos, vel)
     dead: tuple[float, ...] = ()
@@ -220,6 +221,39 @@ def in_working_stroke(mech: Mechanism, cycle: Cycle, phi) -> NDArray[np.bool_]:
 def sweep(mech: Mechanism, cycle: Cycle) -> Kinematics:
     """Kinematics at the cycle's positions, labelled."""
     return solve(mech, cycle.phi, cycle.labels)
+
+
+def _check_slot_clearance(mech: Mechanism, grid, pos) -> None:
+    """An RPR pin must not reach the foot of the slot axis between two grid angles either.
+
+    On the grid, ``√(|CA|² − e²)`` may stay positive while the pin runs through the
+    foot (the pivot, for e = 0) between two angles; its minimum is refined by a golden
+    section search around the grid's minimum, as for the lock-ups.
+    """
+    step = 2 * math.pi / CHECK_GRID
+    for d in mech.dyads:
+        if d.kind != "RPR":
+            continue
+        a_name, c_name = d.joints
+        e = d.offset
+        tol = 1e-9 * max(mech.crank.length, abs(e))
+
+        def clearance(x, a_name=a_name, c_name=c_name, e=e):
+            try:
+                p = solve_positions(mech, np.atleast_1d(x))
+            except AssemblyError:
+                return np.zeros(1)
+            dist = np.hypot(*(p.points[a_name] - p.points[c_name]).T)
+            return np.sqrt(np.maximum(dist**2 - e**2, 0.0))
+
+        dist = np.hypot(*(pos.points[a_name] - pos.points[c_name]).T)
+        k = int(np.argmin(dist))
+        phi_min, c_min = _golden_min(clearance, grid[k] - step, grid[k] + step)
+        if c_min <= tol:
+            raise AssemblyError(
+                f"{mech.source}: dyad {d.name}: the pin {a_name} passes through the foot of the "
+                f"slot axis from {c_name} at φ = {math.degrees(phi_min) % 360:.2f}° (the "
+                "rocker's angle is undefined there)")
 
 
 def _cond(mech, x, name):

@@ -52,10 +52,11 @@ class PositionState:
 
 
 def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: int,
-               where_: str = ""):
+               where_: str = "", phi: Array | None = None, labels=None):
     """Point and unit direction of a guide at each position.
 
-    ``where_`` (e.g. ``"press.toml: dyad RRP(2-3)"``) prefixes an error message.
+    ``where_`` (e.g. ``"press.toml: dyad RRP(2-3)"``) prefixes an error message, which
+    names the position by its label and crank angle when ``phi`` is given.
     """
     if g.through is not None:
         base = points[g.through]
@@ -65,8 +66,9 @@ def guide_line(g: Guide, points: dict[str, Array], theta: dict[str, Array], n: i
         d = points[g.toward] - base
         if not np.all(norm(d) > 0):
             k = int(np.argmin(norm(d)))
+            at = where(phi, k, labels) if phi is not None else f"position {k}"
             raise AssemblyError(f"{where_}: guide on link {g.link}: the direction from "
-                                f"{g.through or g.xy} toward {g.toward} is undefined at position {k} "
+                                f"{g.through or g.xy} toward {g.toward} is undefined at {at} "
                                 "(the two points coincide)")
         u = d / norm(d)[:, None]
     else:
@@ -185,7 +187,8 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
         a_name, b_name = d.joints
         A = pts[a_name]
         (l1,) = d.lengths
-        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
+        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}",
+                          phi, labels)
         w = A - G
         h = cross(u, w)  # signed distance of A to the left of the guide
         bad = ~(np.abs(h) <= l1)
@@ -220,8 +223,10 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
                                    unit_of_angle(th))
     elif d.kind == "PRP":
         (b_name,) = d.joints
-        G1, u1 = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
-        G2, u2 = guide_line(d.guides[1], pts, theta, n, f"{mech.source}: dyad {d.name}")
+        G1, u1 = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}",
+                          phi, labels)
+        G2, u2 = guide_line(d.guides[1], pts, theta, n, f"{mech.source}: dyad {d.name}",
+                            phi, labels)
         den = cross(u1, u2)
         bad = ~(np.abs(den) > 1e-12)
         if bad.any():
@@ -235,7 +240,8 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
     elif d.kind == "RPP":
         a_name, d_name = d.joints
         A = pts[a_name]
-        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}")
+        G, u = guide_line(d.guides[0], pts, theta, n, f"{mech.source}: dyad {d.name}",
+                          phi, labels)
         th_j = angle_of(u)
         w = unit_of_angle(th_j + d.slot_angle)
         t = cross(w, A - G) / cross(w, u)

@@ -949,14 +949,11 @@ def test_position_label_with_a_control_character(label):
     assert str(exc).startswith(f"{SRC}: positions.extra[0].label: expected a one-line label")
 
 
-# -- bugs found: kept failing until graphplan is fixed ----------------------------------------
+# -- bugs found by the fuzzing, now fixed: regressions ----------------------------------------
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError,
-                   reason="BUG: analyse_cycle passes a turn in which the RPR pin runs through "
-                          "the rocker pivot between two check-grid angles; sweep then fails at "
-                          "a named position (|CA| = 0) that the cycle check said was fine")
 def test_rpr_pivot_on_the_crank_circle_is_caught_by_the_cycle_check():
+    """The pivot C on the crank circle at 33.33°, between two check-grid angles (0.1° apart)."""
     a = math.radians(33.33)
     mech = g.loads(dumps(rpr_through_pivot([0.5 * math.cos(a), 0.5 * math.sin(a)], 33.33)),
                    source=SRC)
@@ -965,14 +962,11 @@ def test_rpr_pivot_on_the_crank_circle_is_caught_by_the_cycle_check():
     except g.AssemblyError as exc:
         assert_clean(exc)
         assert "RPR(2-3)" in str(exc)
+        assert "φ = 33.33°" in str(exc)
         return
     raise AssertionError("analyse_cycle passed a turn in which A runs through C")
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError,
-                   reason="BUG: a guide whose 'toward' point coincides with its 'through' "
-                          "names the position by its index in the sweep ('at position 0'), "
-                          "not by label and crank angle like every other assembly error")
 def test_guide_toward_a_coincident_point_names_the_crank_angle():
     doc = press()
     doc["frame"]["points"]["G"] = [0, 0]
