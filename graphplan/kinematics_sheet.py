@@ -442,17 +442,32 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
         widths.append(max(text_width(Text((0, 0), c, 3.5, layer="tables")) for c in cells
                           if c.strip()) + 3.0)
     total = sum(widths)
-    if total > avail:  # keep the columns that fit
+    shown_of = None
+    if total > avail:  # keep the columns that fit, and say so under the title
         keep = []
         acc = 0.0
         for j, wd in enumerate(widths):
             if acc + wd <= avail:
                 keep.append(j)
                 acc += wd
+        shown_of = (len(keep), len(header))
         header = [header[j] for j in keep]
         rows = [[row[j] for j in keep] for row in rows]
         widths = [widths[j] for j in keep]
-    items: list[Item] = [Text((r.x0, r.y0 + 5.0), WORDS[lang]["table"], 5.0, layer="text",
+    title, height = WORDS[lang]["table"], 5.0
+    if shown_of:
+        n, m = shown_of
+        notes = ((f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)")
+                 if lang == "ru" else
+                 (f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)"))
+        for note in notes:
+            for h in (3.5, 2.5):
+                if text_width(Text((0, 0), title + note, h, layer="text")) <= r.width:
+                    title, height = title + note, h
+                    break
+            if height < 5.0:
+                break
+    items: list[Item] = [Text((r.x0, r.y0 + 5.0), title, height, layer="text",
                               id="table-title")]
     items += table_items((r.x0, r.y0 + CAPTION), widths, rows, header, 3.5, id="plans-table")
     return items

@@ -201,6 +201,9 @@ def test_a3_sheet_draws_the_chosen_positions(tmp_path):
                   and t.id[:2] in ("vp", "ap"))
     assert caps == ["План скоростей, пол. (2)", "План скоростей, пол. (3)",
                     "План ускорений, пол. (2)", "План ускорений, пол. (3)"]
+    # the A3 table has no room for every column, and says where the full table is
+    title = next(t.text for t in iter_leaves(sheet.items) if t.id == "table-title")
+    assert title.startswith("Таблица планов (") and "plans.ru.md" in title
 
 
 def test_unknown_position_to_draw_is_a_one_line_error(tmp_path):
