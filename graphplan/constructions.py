@@ -167,10 +167,16 @@ def intersect_lines(p1: Vec2, d1: Vec2, p2: Vec2, d2: Vec2) -> tuple[Vec2, float
     return p1 + t * d1, angle
 
 
+POLES = ("p", "π")
+"""Names of the poles of the velocity and acceleration plans."""
+
+
 class _Builder:
     """Accumulates the steps, points and readings of one plan."""
 
-    def __init__(self, kind: str, pole: str, scale: Scale, reader: Reader, fixed=()):
+    def __init__(self, kind: str, pole: str, scale: Scale, reader: Reader, fixed=(),
+                 home=None):
+        self.home = home
         self.kind = kind
         self.pole = pole
         self.fixed = set(fixed)
@@ -192,8 +198,17 @@ class _Builder:
                                err))
 
     def key(self, point: str) -> str:
-        """Plan name of a model point: the pole for a frame point, else lowercase."""
-        return self.pole if point in self.fixed else point.lower()
+        """Plan name of a model point: the pole for a frame point, else lowercase.
+
+        A point whose letter is a pole's (the punch ``P`` → ``p``) takes its link's
+        number, ``p5``, so it never reads as the pole.
+        """
+        if point in self.fixed:
+            return self.pole
+        name = point.lower()
+        if name in POLES and self.home is not None:
+            name += self.home(point)
+        return name
 
     def read(self, name: str, a: str, b: str, quantity: str) -> Reading:
         exact = float(np.hypot(*(self.points[b] - self.points[a])))
@@ -290,7 +305,7 @@ def velocity_plan(mech: Mechanism, kin, k: int, kl: Scale, kv: Scale,
     Plan
     """
     P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
-    b = _Builder("velocity", "p", kv, reader, mech.frame_points)
+    b = _Builder("velocity", "p", kv, reader, mech.frame_points, mech.home_link)
     img = _Images(mech, P, kl.per_mm, "p")
     lower = b.key
     rates: dict[str, float] = {mech.frame_link: 0.0}
@@ -539,7 +554,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
     constant ω1, so ``a_A = ω1²·l_OA`` directed from A to O.
     """
     P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
-    b = _Builder("acceleration", "π", ka, reader, mech.frame_points)
+    b = _Builder("acceleration", "π", ka, reader, mech.frame_points, mech.home_link)
     img = _Images(mech, P, kl.per_mm, "π")
     W = vplan.rates
     eps: dict[str, float] = {mech.frame_link: 0.0}
