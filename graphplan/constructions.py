@@ -142,11 +142,11 @@ def lower(name: str) -> str:
     return name.lower()
 
 
-def _t(v) -> tuple[float, float]:
+def as_xy(v) -> tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-def _unit(v: Vec2) -> Vec2:
+def unit_vector(v: Vec2) -> Vec2:
     n = float(np.hypot(*v))
     return v / n if n > 0 else np.zeros(2)
 
@@ -220,14 +220,14 @@ class _Builder:
         return r
 
     def segment(self, name: str, a: str, b: str, role: str) -> Element:
-        return Element("segment", name, _t(self.points[a]), _t(self.points[b]), role)
+        return Element("segment", name, as_xy(self.points[a]), as_xy(self.points[b]), role)
 
     def line(self, name: str, through: Vec2, direction: Vec2, hit: Vec2) -> Element:
         """A construction line through ``through`` drawn past the point ``hit`` it meets."""
-        d = _unit(direction)
+        d = unit_vector(direction)
         t_hit = float(np.dot(hit - through, d))
         lo, hi = min(0.0, t_hit) - 8.0, max(0.0, t_hit) + 8.0
-        return Element("line", name, _t(through + lo * d), _t(through + hi * d), "line")
+        return Element("line", name, as_xy(through + lo * d), as_xy(through + hi * d), "line")
 
     def build(self, label: str, rates, sliding) -> Plan:
         return Plan(self.kind, label, self.scale, dict(self.points), tuple(self.steps),
@@ -328,7 +328,7 @@ def velocity_plan(mech: Mechanism, kin, k: int, kl: Scale, kv: Scale,
     o, a = cr.pivot, cr.pin
     va = abs(cr.omega) * cr.length
     pa_mm = reader(va / kv.per_mm)
-    d = _unit(perp(P[a] - P[o])) * math.copysign(1.0, cr.omega)
+    d = unit_vector(perp(P[a] - P[o])) * math.copysign(1.0, cr.omega)
     b.points[lower(a)] = pa_mm * d
     b.read("p" + lower(a), "p", lower(a), f"v_{a}")
     b.add_step(f"v_{a} = ω1·l_{o}{a}",
@@ -379,7 +379,7 @@ def _close_two_lines(b: _Builder, eq: str, new: str, p1: Vec2, d1: Vec2, n1: str
                f"Линия {n1}, линия {n2}; пересекаются в точке {new} под углом "
                f"{math.degrees(ang):.1f}°.",
                [b.line(n1, p1, d1, x), b.line(n2, p2, d2, x),
-                Element("point", new, _t(x), _t(x), "point")], angle=ang)
+                Element("point", new, as_xy(x), as_xy(x), "point")], angle=ang)
 
 
 def _result(b: _Builder, eq: str, segments) -> None:
@@ -524,7 +524,7 @@ def _coincident(b: _Builder, img: _Images, link: str, X: str, P, rate_map) -> st
         b.add_step(f"{name}: similarity on link {link}",
                    f"Point {name} of link {link} coinciding with {X}, by similarity.",
                    f"Точка {name} звена {link}, совпадающая с {X}, по теореме подобия.",
-                   [Element("point", name, _t(b.points[name]), _t(b.points[name]), "point")])
+                   [Element("point", name, as_xy(b.points[name]), as_xy(b.points[name]), "point")])
     return name
 
 
@@ -534,11 +534,11 @@ def _lay(b: _Builder, name: str, frm: str, vec_mm: Vec2, role: str, eq: str, wha
          what_ru: str) -> str:
     """Lay off a known component (normal, Coriolis) of length read to the reader's precision."""
     length = b.reader(float(np.hypot(*vec_mm)))
-    d = _unit(vec_mm)
+    d = unit_vector(vec_mm)
     b.points[name] = b.points[frm] + length * d
     b.read(name, frm, name, eq.split(" =")[0])
     b.add_step(eq, f"{what}: {length:.2f} mm from {frm}.", f"{what_ru}: {length:.2f} мм от {frm}.",
-               [Element("segment", name, _t(b.points[frm]), _t(b.points[name]), role)], (name,))
+               [Element("segment", name, as_xy(b.points[frm]), as_xy(b.points[name]), role)], (name,))
     return name
 
 
@@ -576,7 +576,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
     o, a = cr.pivot, cr.pin
     aa = W[cr.link] ** 2 * cr.length
     length = reader(aa / ka.per_mm)
-    b.points[key(a)] = length * _unit(P[o] - P[a])
+    b.points[key(a)] = length * unit_vector(P[o] - P[a])
     b.read("π" + key(a), "π", key(a), f"a_{a}")
     b.add_step(f"a_{a} = ω1²·l_{o}{a}",
                f"a_{a} = ω1²·l_{o}{a} = {W[cr.link] ** 2:.4g}·{cr.length:.4g} = {aa:.4g} m/s²; "
@@ -592,7 +592,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
     def normal(frm: str, tip: str, base: str, link: str, l_m: float) -> str:
         """aⁿ of ``tip`` about ``base`` on ``link``: ω²·l, from tip toward base."""
         name = f"n_{tip}{base}"
-        vec = _unit(P[base] - P[tip]) * (W[link] ** 2 * l_m / ka.per_mm)
+        vec = unit_vector(P[base] - P[tip]) * (W[link] ** 2 * l_m / ka.per_mm)
         _lay(b, name, frm, vec, "normal", f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base}",
              f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {W[link] ** 2 * l_m:.4g} m/s², ∥ {tip}{base}",
              f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {W[link] ** 2 * l_m:.4g} м/с², ∥ {tip}{base}")

@@ -170,7 +170,7 @@ class Forces:
         if name in self.reactions:
             return self.reactions[name].vector
         for r in self.reactions.values():
-            if name == _name(r.on, r.by):
+            if name == reaction_name(r.on, r.by):
                 return -r.vector
         raise KeyError(name)
 
@@ -181,7 +181,7 @@ class Forces:
             if r.on == link:
                 out.append((r.name, r.vector, r.ref, r.couple))
             elif r.by == link:
-                out.append((_name(r.on, r.by), -r.vector, r.ref, -r.couple))
+                out.append((reaction_name(r.on, r.by), -r.vector, r.ref, -r.couple))
         return out
 
     def crank_arms(self) -> dict[str, Array]:
@@ -191,7 +191,7 @@ class Forces:
         for r in self.reactions.values():
             if r.by == self.crank:
                 m = norm(r.vector)
-                arms[_name(r.on, r.by)] = np.where(
+                arms[reaction_name(r.on, r.by)] = np.where(
                     m > 0, np.abs(cross(r.at - pivot_xy, r.vector)) / np.where(m > 0, m, 1), 0.0)
         return arms
 
@@ -219,7 +219,7 @@ class Forces:
         }
 
 
-def _name(by: str, on: str) -> str:
+def reaction_name(by: str, on: str) -> str:
     return f"R{by}{on}" if len(by) == 1 and len(on) == 1 else f"R{by},{on}"
 
 
@@ -232,7 +232,7 @@ class _Pair:
     guide: str | None = None
 
 
-def _pairs(mech: Mechanism, d: Dyad) -> tuple[_Pair, _Pair, _Pair]:
+def dyad_pairs(mech: Mechanism, d: Dyad) -> tuple[_Pair, _Pair, _Pair]:
     """The three pairs of a dyad, each as the force of ``by`` on the dyad's link ``on``."""
     i, j = d.links
     jt = d.joints
@@ -300,7 +300,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
                                  f"{where(kin.phi, k, kin.labels)}")
 
     for d in reversed(mech.dyads):
-        pairs = _pairs(mech, d)
+        pairs = dyad_pairs(mech, d)
         X = [P[p.point] for p in pairs]
         c = (X[0] + X[1] + X[2]) / 3.0
         L = np.full(n, mech.crank.length)
@@ -357,7 +357,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
                 defined = np.abs(a) > 1e-12 * big
                 offset = np.where(defined, couple / np.where(defined, a, 1.0), 0.0)
                 at = xp + scale(u, offset)
-            name = _name(pr.by, pr.on)
+            name = reaction_name(pr.by, pr.on)
             while name in reactions:
                 name += "'"
             reactions[name] = Reaction(name, pr.by, pr.on, pr.kind, pr.point, pr.guide, vec, at,
@@ -371,7 +371,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
     F = sum((v for v, _ in ext_f[cr.link]), np.zeros((n, 2)))
     M = sum((cross(at - pivot, v) for v, at in ext_f[cr.link]), np.zeros(n))
     M = M + sum(ext_m[cr.link], np.zeros(n))
-    name = _name(mech.frame_link, cr.link)
+    name = reaction_name(mech.frame_link, cr.link)
     reactions[name] = Reaction(name, mech.frame_link, cr.link, "R", cr.pivot, None, -F,
                                np.asarray(pivot, float), norm(F), np.zeros(n), np.zeros(n),
                                np.ones(n, bool), np.asarray(pivot, float))

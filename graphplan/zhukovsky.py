@@ -62,7 +62,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from .applied_loads import Loads, compute_loads, power_balance_moment
-from .constructions import EXACT, Element, Plan, Reader, Reading, Step, position_mm, velocity_plan
+from .constructions import (
+    EXACT,
+    Element,
+    Plan,
+    Reader,
+    Reading,
+    Step,
+    as_xy,
+    position_mm,
+    velocity_plan,
+)
 from .geometry import cross, perp
 from .kinematics import Kinematics
 from .model import Mechanism
@@ -183,10 +193,6 @@ def discrepancy_pct(m_ref: float, m_lever: float) -> float:
     return 0.0 if big == 0 else abs(m_ref - m_lever) / big * 100.0
 
 
-def _t(v) -> tuple[float, float]:
-    return (float(v[0]), float(v[1]))
-
-
 class _LinkImages:
     """Images on the (untouched) velocity plan of arbitrary points of each link."""
 
@@ -305,7 +311,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
          f"Turn the velocity plan of position {plan.label} by 90° counter-clockwise about p.",
          f"Поворачиваем план скоростей положения {plan.label} на 90° против часовой стрелки "
          "вокруг полюса p.",
-         [Element("segment", "p" + n, (0.0, 0.0), _t(v), "absolute")
+         [Element("segment", "p" + n, (0.0, 0.0), as_xy(v), "absolute")
           for n, v in turned.items() if n != "p"])
 
     # the forces to apply: (name, load, link, kind, point, X position mm, F)
@@ -361,7 +367,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
         total += moment
         rd = Reading(f"h_{name}", h, h_exact, f"h_{name}", h * mu, "m", "μ")
         readings[rd.name] = rd
-        forces.append(LeverForce(name, load, link, kind, point, image, _t(x), _t(F), mag, rd,
+        forces.append(LeverForce(name, load, link, kind, point, image, as_xy(x), as_xy(F), mag, rd,
                                  moment))
         e = F / mag
         foot = x - float(np.dot(x, e)) * e
@@ -370,8 +376,8 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
              f"M_p = {moment:+.5g} N·mm.",
              f"Сила {name} = {mag:.4g} Н {how_ru}; плечо h_{name} = {h:.2f} мм, "
              f"M_p = {moment:+.5g} Н·мм.",
-             [Element("segment", name, _t(x), _t(x + F / kf.per_mm), "force"),
-              Element("segment", f"h_{name}", (0.0, 0.0), _t(foot), "arm")], (rd.name,))
+             [Element("segment", name, as_xy(x), as_xy(x + F / kf.per_mm), "force"),
+              Element("segment", f"h_{name}", (0.0, 0.0), as_xy(foot), "arm")], (rd.name,))
 
     f_bal = abs(total) / pa.mm
     m_bal = math.copysign(1.0, cr.omega) * mu * total
@@ -384,7 +390,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
          f"Σ M_p(F_i) = {total:+.5g} Н·мм; F_ур = |Σ M_p|/pa = {abs(total):.5g}/{pa.mm:.2f} = "
          f"{f_bal:.5g} Н в точке {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
          f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_bal:+.5g} Н·м (против часовой — плюс).",
-         [Element("segment", "F_ур", _t(a_t), _t(a_t + fvec / kf.per_mm), "force")])
+         [Element("segment", "F_ур", as_xy(a_t), as_xy(a_t + fvec / kf.per_mm), "force")])
     power = float(power_balance_moment(mech, kin, loads)[k])
     return Lever(plan.label, k, plan, turned, tuple(forces), tuple(steps), readings, total, mu,
                  f_bal, m_bal, power, reference,
