@@ -91,11 +91,27 @@ class Analysis:
         forces = solve_forces(self.mech, self.kin, loads)
         full = solve_forces(self.mech, self.kin,
                             compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0))
+        from .force_plans import force_plans
+        from .scales import sheet_scales
+        from .zhukovsky import zhukovsky_lever
+
+        sc = sheet_scales(self.mech, self.kin)
         for k, entry in enumerate(positions):
             f = forces.as_json(k)
             del f["label"], f["phi_deg"]
             entry["forces"] = f
             entry["M_bal_full"] = float(full.M_bal[k])
+            entry["force_plans"] = [
+                {"group": fp.group, "Kp": fp.scale.per_mm, "basis": fp.scale.basis,
+                 "segments_mm": {r.name: r.mm for r in fp.readings.values()},
+                 "values": {q: r.value for q, r in fp.readings.items()},
+                 "equations": list(fp.equations),
+                 "M_bal": fp.M_bal}
+                for fp in force_plans(self.mech, self.kin, forces, loads, k, sc.kl)]
+            lever = zhukovsky_lever(self.mech, self.kin, loads, k, sc.kl, sc.kv,
+                                    reference=float(forces.M_bal[k]))
+            entry["zhukovsky"] = {"M_bal": lever.M_bal, "discrepancy_pct": lever.discrepancy_pct,
+                                  "arms_mm": {r.name: r.mm for r in lever.readings.values()}}
 
 
 def analyze(mech: Mechanism) -> Analysis:

@@ -204,3 +204,19 @@ def test_json_carries_reactions_and_balancing_moments(capsys):
     assert set(f2["loads"]["neglected"]) >= {"G3", "Pи3"}  # the seed's 10 % rule
     # with nothing neglected the moment differs (weights and inertia count again)
     assert pos["(2)"]["M_bal_full"] != pytest.approx(f2["M_bal"], rel=1e-3)
+
+
+def test_json_carries_force_plans_and_the_lever(capsys):
+    """(2): the polygon of group 2-3 at Kp = 4000 N/mm, R12 = ca·Kp = 105.98·4000 = 423.9 kN;
+    the crank's plan gives Mур, and Zhukovsky's lever agrees exactly (exact mode)."""
+    code, out, _ = run(capsys, "analyze", "--json")
+    assert code == 0
+    p2 = next(p for p in json.loads(out)["positions"] if p["label"] == "(2)")
+    group, crank = p2["force_plans"]
+    assert group["group"] == "RRP(2-3)" and group["Kp"] == 4000.0
+    assert group["segments_mm"]["ca"] * group["Kp"] == pytest.approx(group["values"]["R12"])
+    assert group["values"]["R12"] == pytest.approx(p2["forces"]["reactions"]["R12"]["magnitude"],
+                                                   rel=1e-9)
+    assert crank["M_bal"] == pytest.approx(p2["forces"]["M_bal"], rel=1e-9)
+    assert p2["zhukovsky"]["M_bal"] == pytest.approx(p2["forces"]["M_bal"], rel=1e-9)
+    assert p2["zhukovsky"]["discrepancy_pct"] < 1e-6
