@@ -5,6 +5,9 @@
 * ``sheet1.svg`` — sheet 1, kinematic analysis (A1 unless the variant says otherwise);
 * ``plans.ru.md``, ``plans.en.md`` — the tables of the plans, as a hand calculation;
 * ``plans.csv`` — the same readings, one row per segment, for scripts;
+* ``forces.ru.md``, ``forces.en.md``, ``forces.csv`` — the force analysis in the layout of
+  the seed: loads, what was neglected, moment equations, Kp, polygon segments, reactions,
+  h21, Mур from the force plans and from Zhukovsky's lever (exact and drafted);
 * ``analysis.json`` — the report of ``graphplan analyze --json``.
 
 Every file is written atomically; the variant file is never overwritten. With
@@ -31,6 +34,7 @@ class Written:
 def project_files(analysis, *, lang: str = "ru", precision: float | None = None) -> dict[str, str]:
     """Name → text of every output file of a variant (nothing is written here)."""
     from .kinematics_sheet import kinematics_sheet
+    from .render.force_tables import forces_csv, forces_markdown
     from .render.plan_tables import plans_csv, plans_markdown
     from .render.svg import render_svg
 
@@ -41,6 +45,9 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
         "plans.ru.md": plans_markdown(analysis, "ru", prec),
         "plans.en.md": plans_markdown(analysis, "en", prec),
         "plans.csv": plans_csv(analysis, "en", prec),
+        "forces.ru.md": forces_markdown(analysis, "ru", prec),
+        "forces.en.md": forces_markdown(analysis, "en", prec),
+        "forces.csv": forces_csv(analysis, prec),
         "analysis.json": json.dumps(analysis.to_json(), ensure_ascii=False, indent=1,
                                     allow_nan=False) + "\n",
     }
