@@ -243,6 +243,9 @@ def load_font(family: str) -> FontInfo | None:
                 covered.add(cp)
     except Exception:  # a broken or unreadable file counts as not installed
         return None
+    finally:
+        if "font" in locals():
+            font.close()  # a lazy TTFont keeps its file open until closed
     return FontInfo(
         family=family, path=path, units_per_em=upem, cap_height=cap,
         advances=MappingProxyType(advances), covered=frozenset(covered), blank=frozenset(blank),

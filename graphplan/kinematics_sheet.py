@@ -313,9 +313,20 @@ def _support(c: Pt, ident: str) -> list[Item]:
 # ------------------------------------------------------------------------- plans
 
 
-def plan_items(plan: Plan, cell: Rect, caption: str, ident: str) -> list[Item]:
-    """A velocity or acceleration plan centred in its cell, with its caption and letters."""
-    layer = "velocity_plan" if plan.kind == "velocity" else "acceleration_plan"
+PLAN_LAYERS = {"velocity": "velocity_plan", "acceleration": "acceleration_plan",
+               "force": "force_plan", "lever": "force_plan"}
+
+
+def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
+               segment_labels: bool = False) -> list[Item]:
+    """A plan centred in its cell, with its caption and letters.
+
+    Any construction with ``kind``, ``points`` and ``steps`` is drawn: velocity and
+    acceleration plans, force plans, Zhukovsky's lever. With ``segment_labels`` every
+    vector is also named at its middle (a force plan names its forces, not only its
+    vertices).
+    """
+    layer = PLAN_LAYERS[getattr(plan, "kind", "lever")]
     pts = np.array(list(plan.points.values()))
     elems = [e for s in plan.steps for e in s.elements]
     ends = np.array([q for e in elems if e.kind != "point" for q in (e.start, e.end)] or pts)
@@ -338,10 +349,17 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str) -> list[Item]:
             if key in drawn or math.dist(e.start, e.end) < 1e-9:
                 continue
             drawn.add(key)
-            style = MEDIUM if e.role in ("absolute", "relative") else THIN
+            style = MEDIUM if e.role in ("absolute", "relative", "load", "reaction",
+                                         "force") else THIN
             items.append(Arrow(to(e.start), to(e.end), style, 3.0, 1.0, layer=layer,
                                id=f"{ident}-{e.name}"))
     reqs = [LabelRequest(to(q), _label(name), 3.5, group=ident) for name, q in plan.points.items()]
+    if segment_labels:
+        named = {e.name: e for e in elems if e.kind == "segment"
+                 and e.role not in ("absolute", "arm") and math.dist(e.start, e.end) > 1e-9}
+        reqs += [LabelRequest(to(((e.start[0] + e.end[0]) / 2, (e.start[1] + e.end[1]) / 2)),
+                              _label(name), 3.5, group=f"{ident}-seg")
+                 for name, e in named.items()]
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
     keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),
                      (cell.x0, cell.y1)]).exterior.buffer(0.5)]

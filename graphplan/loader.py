@@ -53,7 +53,7 @@ SECTIONS: dict[str, set[str] | None] = {
     "loads": None,
     "positions": {"count", "first", "number_from", "extra"},
     "output": {"link", "working"},
-    "kinetostatics": {"neglect_below", "inertia", "shift_inertia_force"},
+    "kinetostatics": {"neglect_below", "inertia", "shift_inertia_force", "positions"},
     "dynamics": {
         "delta",
         "efficiency",
@@ -672,12 +672,14 @@ def _check_settings(r: _Reader, settings: dict) -> None:
         r.string(drw["format"], "drawing.format", ("A1", "A2", "A3"))
     if "language" in drw:
         r.string(drw["language"], "drawing.language", ("ru", "en"))
-    if "positions" in drw:
-        labels = r.array(drw["positions"], "drawing.positions", minlen=1)
+    for sec, table in (("kinetostatics", settings.get("kinetostatics", {})), ("drawing", drw)):
+        if "positions" not in table:
+            continue
+        labels = r.array(table["positions"], f"{sec}.positions", minlen=1)
         for i, lab in enumerate(labels):
-            r.string(lab, f"drawing.positions[{i}]")
+            r.string(lab, f"{sec}.positions[{i}]")
         if len(set(labels)) != len(labels):
-            raise r.fail("drawing.positions", "expected each position label once")
+            raise r.fail(f"{sec}.positions", "expected each position label once")
     tb = settings.get("title_block", {})
     for key, value in tb.items():
         if key in ("sheet", "sheets"):

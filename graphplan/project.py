@@ -3,6 +3,8 @@
 ``graphplan sheets VARIANT.toml -o DIR`` writes into DIR:
 
 * ``sheet1.svg`` — sheet 1, kinematic analysis (A1 unless the variant says otherwise);
+* ``sheet2.svg`` — sheet 2, force analysis: schemes with loads and reactions, force plans,
+  Zhukovsky's lever of the chosen positions, the curve Mур(φ), the table;
 * ``plans.ru.md``, ``plans.en.md`` — the tables of the plans, as a hand calculation;
 * ``plans.csv`` — the same readings, one row per segment, for scripts;
 * ``forces.ru.md``, ``forces.en.md``, ``forces.csv`` — the force analysis in the layout of
@@ -34,6 +36,7 @@ class Written:
 def project_files(analysis, *, lang: str = "ru", precision: float | None = None) -> dict[str, str]:
     """Name → text of every output file of a variant (nothing is written here)."""
     from .kinematics_sheet import kinematics_sheet
+    from .kinetostatics_sheet import kinetostatics_sheet
     from .render.force_tables import forces_csv, forces_markdown
     from .render.plan_tables import plans_csv, plans_markdown
     from .render.svg import render_svg
@@ -42,6 +45,7 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
     prec = float(drawing.get("reading_mm", 0.5)) if precision is None else precision
     out = {
         "sheet1.svg": render_svg(kinematics_sheet(analysis, lang=lang)),
+        "sheet2.svg": render_svg(kinetostatics_sheet(analysis, lang=lang)),
         "plans.ru.md": plans_markdown(analysis, "ru", prec),
         "plans.en.md": plans_markdown(analysis, "en", prec),
         "plans.csv": plans_csv(analysis, "en", prec),

@@ -114,7 +114,7 @@ def test_sheets_writes_the_sheet_tables_and_report(capsys, tmp_path):
     assert code == 0 and err == ""
     names = sorted(p.name for p in (tmp_path / "press").iterdir())
     assert names == ["analysis.json", "forces.csv", "forces.en.md", "forces.ru.md", "plans.csv",
-                     "plans.en.md", "plans.ru.md", "sheet1.svg"]
+                     "plans.en.md", "plans.ru.md", "sheet1.svg", "sheet2.svg"]
     svg = (tmp_path / "press" / "sheet1.svg").read_text(encoding="utf-8")
     assert 'width="841mm"' in svg and "План скоростей" in svg
     report = json.loads((tmp_path / "press" / "analysis.json").read_text(encoding="utf-8"))

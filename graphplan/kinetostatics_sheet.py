@@ -1,0 +1,329 @@
+"""Sheet 2, kinetostatic analysis: for the chosen positions, the scheme of the mechanism
+with its loads and reactions, the force plan of every Assur group and of the crank, and
+Zhukovsky's lever; below them the curve Mур(φ) and the table of the force analysis.
+
+The positions are the variant's ``kinetostatics.positions`` (labels), by default its
+extra positions (the press: the working positions (2), (3)) or, without any, the
+position of the largest |Mур|. Every plan is the construction of
+:mod:`graphplan.force_plans` / :mod:`graphplan.zhukovsky`, placed by a translation and
+the flip of y, as on sheet 1. The scheme is drawn at the plan of positions' Kl when it
+fits its cell, else at the next coarser scale of the series (printed in its caption);
+the arrows of loads and reactions on it show directions, not magnitudes.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from shapely.geometry import Point
+
+from .applied_loads import compute_loads
+from .errors import InputError, LayoutError
+from .force_plans import force_plans
+from .kinematics_sheet import (
+    JOINT_R,
+    WHITE_FILL,
+    _joints,
+    _link_outline,
+    _Paper,
+    _slider_block,
+    _support,
+    _units,
+    plan_items,
+    title_block,
+)
+from .kinetostatics import solve_forces
+from .labels import LabelRequest, place_labels
+from .layout import CAPTION, GAP
+from .scales import sheet_scales
+from .sheet import (
+    MAIN,
+    THIN,
+    Arc,
+    Arrow,
+    Circle,
+    Figure,
+    Item,
+    Line,
+    Page,
+    Polyline,
+    Rect,
+    Sheet,
+    Style,
+    Text,
+    arc_point,
+    item_geometry,
+    table_items,
+    text_at_centre,
+    text_width,
+)
+from .units import Scale, fmt, nice_ceil
+from .zhukovsky import zhukovsky_lever
+
+ARROW_MM = 16.0  #: length of a load's or reaction's arrow on the scheme (direction only)
+STRIP = 120.0  #: height of the bottom strip (Mур(φ) and the table), mm
+MAX_ROWS = 3
+
+WORDS = {
+    "ru": {"scheme": "Схема, пол.", "plan": "План сил", "crank": "Кривошип", "lever":
+           "Рычаг Жуковского", "curve": "Уравновешивающий момент Mур(φ)",
+           "table": "Силовой расчёт", "sheet": "Силовой анализ", "pos": "Пол.",
+           "cols": ("Пол.", "φ, °", "R12, кН", "h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
+    "en": {"scheme": "Scheme, pos.", "plan": "Force plan", "crank": "Crank", "lever":
+           "Zhukovsky's lever", "curve": "Balancing moment Mур(φ)",
+           "table": "Force analysis", "sheet": "Force analysis", "pos": "Pos.",
+           "cols": ("Pos.", "φ, °", "R12, kN", "h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
+}
+
+
+def sheet2_positions(mech, kin, forces) -> tuple[int, ...]:
+    """Indices of the positions sheet 2 analyses in full (see the module docstring)."""
+    wanted = mech.settings.get("kinetostatics", {}).get("positions")
+    if wanted is not None:
+        for lab in wanted:
+            if lab not in kin.labels:
+                raise InputError(f"{mech.source}: kinetostatics.positions: expected a position "
+                                 f"label ({', '.join(kin.labels)}), got {lab!r}")
+        which = tuple(kin.labels.index(lab) for lab in wanted)
+    else:
+        extra = {ex.label for ex in mech.positions.extra}
+        which = tuple(k for k, lab in enumerate(kin.labels) if lab in extra)
+        if not which:
+            which = (int(np.argmax(np.abs(forces.M_bal))),)
+    if len(which) > MAX_ROWS:
+        raise LayoutError(f"{mech.source}: sheet 2 draws at most {MAX_ROWS} positions in full "
+                          f"(got {len(which)}): choose them in kinetostatics.positions")
+    return which
+
+
+def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang: str,
+                  ident: str) -> list[Item]:
+    """The mechanism at position k with every load and reaction on it (directions)."""
+    mech, kin = analysis.mech, analysis.kin
+    pts = {n: p[k] for n, p in kin.pos.points.items()}
+    allp = np.array(list(pts.values()))
+    ext = np.ptp(allp, axis=0)
+    room = np.array([cell.width, cell.height - CAPTION]) - 2 * (ARROW_MM + 8.0)
+    kl = kl1.per_mm
+    if np.any(ext / kl > room):
+        kl = nice_ceil(float(np.max(ext / room)))
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    centre = np.array([(cell.x0 + cell.x1) / 2, (cell.y0 + CAPTION + cell.y1) / 2])
+    pivot = kin.pos.points[mech.crank.pivot][k]
+    mid = (lo + hi) / 2
+    origin = (float(centre[0] + (pivot[0] - mid[0]) / kl),
+              float(centre[1] - (pivot[1] - mid[1]) / kl))
+    P = _Paper(origin, kl, pivot)
+    L = "force_plan"
+    items: list[Item] = []
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    for link in mech.moving_links:
+        names = _link_outline(mech, link, centres)
+        if len(names) >= 2:
+            q = [P(pts[n]) for n in names]
+            items.append(Polyline(tuple(q), MAIN, len(q) > 2, layer=L, id=f"{ident}-link-{link}"))
+    for key, (G, u) in kin.pos.guides.items():
+        slider, carrier = key.split("/")
+        corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
+        if corners:
+            items.append(Polyline(corners, Style(0.5, fill="white"), True, layer=L,
+                                  id=f"{ident}-slider-{key.replace('/', '-')}"))
+        if carrier == mech.frame_link:
+            d = np.array([u[k][0], -u[k][1]])
+            c = np.asarray(P(G[k] + np.dot(pts[_nearest(mech, kin, k, slider, G, u)] - G[k],
+                                            u[k]) * u[k]))
+            items.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
+                              layer=L, id=f"{ident}-guide-{slider}"))
+    for j in _joints(mech):
+        items.append(Circle(P(pts[j]), JOINT_R, WHITE_FILL, layer=L, id=f"{ident}-joint-{j}"))
+    for fp in mech.frame_points:
+        items += [replace(it, layer=L)
+                  for it in _support(P(mech.frame_points[fp]), f"{ident}-sup-{fp}")]
+    reqs: list[LabelRequest] = []
+    arrows = []
+    for f in loads.all_forces():
+        if np.hypot(*f.vector[k]) > 0:
+            arrows.append((f.name, f.at[k], f.vector[k], False))
+    inner = cell.polygon().buffer(-(ARROW_MM + 4.0))
+    for r in forces.reactions.values():
+        if r.on in analysis.mech.moving_links and np.hypot(*r.vector[k]) > 0:
+            at = r.at[k]
+            if not inner.contains(Point(P(at))):  # a slide's line of action far off: at X
+                at = r.ref[k]
+            arrows.append((r.name, at, r.vector[k], True))
+    for n, (name, at, vec, reaction) in enumerate(arrows):
+        tip = np.asarray(P(at))
+        d = np.array([vec[0], -vec[1]]) / float(np.hypot(*vec))
+        # a load starts at its point; a reaction ends at the joint it acts on
+        p0, p1 = (tip - ARROW_MM * d, tip) if reaction else (tip, tip + ARROW_MM * d)
+        items.append(Arrow(tuple(p0), tuple(p1), Style(0.35), 3.0, 1.0, layer=L,
+                           id=f"{ident}-f{n}"))
+        reqs.append(LabelRequest(tuple((p0 + p1) / 2), name, 3.5, group=ident))
+    # the arm h21 of R21 about the crank's pivot: its line of action through the pin and
+    # the perpendicular from the pivot
+    r21 = forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k] \
+        if _has(forces, f"R{mech.dyads[0].links[0]}{mech.crank.link}") else None
+    if r21 is not None and np.hypot(*r21) > 0:
+        a = np.asarray(P(pts[mech.crank.pin]))
+        o = np.asarray(P(pivot))
+        d = np.array([r21[0], -r21[1]]) / float(np.hypot(*r21))
+        foot = a + float(np.dot(o - a, d)) * d
+        ends = sorted([0.0, float(np.dot(foot - a, d))])
+        items.append(Line(tuple(a + (ends[0] - 6.0) * d), tuple(a + (ends[1] + 6.0) * d),
+                          Style(0.25, (4.0, 1.5)), layer=L, id=f"{ident}-r21-line"))
+        if math.dist(foot, o) > 0.5:
+            items.append(Line(tuple(o), tuple(foot), THIN, layer=L, id=f"{ident}-h21"))
+            reqs.append(LabelRequest(tuple((o + foot) / 2), "h21", 3.5, group=ident))
+    # the balancing moment: a turning arrow about the crank's pivot
+    c = P(pivot)
+    sense = 1.0 if float(forces.M_bal[k]) >= 0 else -1.0
+    a0 = math.degrees(float(kin.phi[k])) + 150.0
+    items.append(Arc(c, 9.0, a0, a0 + 60.0, THIN, layer=L, id=f"{ident}-mbal-arc"))
+    tip_deg = a0 + 60.0 if sense > 0 else a0
+    items.append(Arrow(arc_point(c, 9.0, tip_deg - sense * 20.0), arc_point(c, 9.0, tip_deg),
+                       THIN, 3.0, 1.0, layer=L, id=f"{ident}-mbal-head"))
+    reqs.insert(0, LabelRequest(arc_point(c, 13.0, a0 + 30.0), "Mур", 3.5, group=ident))
+    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    keep = [cell.polygon().exterior.buffer(0.5)]
+    items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{ident}-t", keep_out=keep)
+    scale = Scale("Kl", kl, "m/mm").basis
+    items.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2),
+                                f"{WORDS[lang]['scheme']} {kin.labels[k]}, {_units(scale, lang)}",
+                                3.5, layer="text", id=f"{ident}-caption"))
+    return items
+
+
+def _has(forces, name: str) -> bool:
+    try:
+        forces.vector(name)
+    except KeyError:
+        return False
+    return True
+
+
+def _nearest(mech, kin, k, slider, G, u) -> str:
+    names = [p for p in mech.points_of(slider) if p in kin.pos.points]
+    n = np.array([-u[k][1], u[k][0]])
+    return min(names, key=lambda p: abs(float(np.dot(kin.pos.points[p][k] - G[k], n))))
+
+
+def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None) -> Sheet:
+    """Sheet 2 of the project for ``analysis`` (see the module docstring)."""
+    mech, kin = analysis.mech, analysis.kin
+    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    sc = sheet_scales(mech, kin, page)
+    loads = compute_loads(mech, kin, analysis.cycle)
+    forces = solve_forces(mech, kin, loads)
+    rows = sheet2_positions(mech, kin, forces)
+    w = WORDS[lang]
+    f = page.frame
+    x0, y0, x1 = f.x0 + 4.0, f.y0 + 18.0 + 4.0, f.x1 - 4.0
+    y1 = f.y1 - STRIP - GAP
+    n_groups = len(mech.dyads)
+    ncol = n_groups + 3  # scheme, the groups' plans, the crank's plan, the lever
+    cw, ch = (x1 - x0) / ncol, (y1 - y0) / len(rows)
+    if min(cw, ch) < 60.0:
+        raise LayoutError(f"sheet 2 leaves cells of {min(cw, ch):.0f} mm on {page.format}: "
+                          "choose fewer positions (kinetostatics.positions) or a larger format")
+    items: list[Item] = []
+    summary = []
+    mmax = float(np.max(np.abs(forces.M_bal)))
+    for r, k in enumerate(rows):
+        cells = [Rect(x0 + i * cw, y0 + r * ch, x0 + (i + 1) * cw, y0 + (r + 1) * ch)
+                 for i in range(ncol)]
+        ident = f"s2p{k}"
+        items += _scheme_items(analysis, loads, forces, k, cells[0], sc.kl, lang, ident)
+        plans = force_plans(mech, kin, forces, loads, k, sc.kl)
+        for i, fp in enumerate(plans):
+            title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])
+            cap = f"{title}, {_units(_kp(fp.scale), lang)}"
+            items += plan_items(fp, cells[1 + i], cap, f"{ident}-fp{i}", segment_labels=True)
+        lever = zhukovsky_lever(mech, kin, loads, k, sc.kl, _lever_scale(kin, k, cells[-1]),
+                                reference=float(forces.M_bal[k]))
+        cap = f"{w['lever']}, {_units(lever.plan.scale.basis, lang)}"
+        items += plan_items(lever, cells[-1], cap, f"{ident}-lever", segment_labels=True)
+        crank = plans[-1]
+        h21 = next(iter(crank.arms_mm.values()), float("nan"))
+        r12 = forces.reactions.get(f"R{mech.crank.link}{mech.dyads[0].links[0]}")
+        summary.append([kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.1f}",
+                        fmt(float(r12.magnitude[k]) / 1000.0, 5) if r12 is not None else "—",
+                        f"{h21:.2f}" if math.isfinite(h21) else "—",
+                        _moment(float(crank.M_bal), mmax), _moment(float(lever.M_bal), mmax),
+                        f"{lever.discrepancy_pct:.2f}"
+                        if abs(float(crank.M_bal)) >= 1e-9 * max(mmax, 1.0) else "—"])
+    strip = Rect(x0, f.y1 - STRIP, f.x1 - 185.0 - GAP, f.y1 - 4.0)
+    items += _curve_items(analysis, Rect(strip.x0, strip.y0, strip.x0 + 250.0, strip.y1), lang)
+    tx = strip.x0 + 250.0 + GAP
+    widths = [max(text_width(Text((0, 0), str(c), 3.5, layer="tables")) + 3.0
+                  for c in [w["cols"][j]] + [row[j] for row in summary]) for j in range(7)]
+    items.append(Text((tx, strip.y0 + 5.0), w["table"], 5.0, layer="text", id="s2-table-title"))
+    items += table_items((tx, strip.y0 + CAPTION), widths, summary, list(w["cols"]), 3.5,
+                         id="s2-table")
+    return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]))
+
+
+def _lever_scale(kin, k: int, cell: Rect) -> Scale:
+    """Kv of the lever: the turned velocity plan fills its cell (any scale gives the same Mур)."""
+    v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
+    ext = float(np.max(np.ptp(v, axis=0)))
+    room = min(cell.width, cell.height - CAPTION) - 40.0
+    return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
+
+
+def _moment(m: float, scale: float) -> str:
+    """A moment as written in the table: 0 where it is round-off next to the largest."""
+    return "0" if abs(m) < 1e-9 * max(scale, 1.0) else fmt(m, 5)
+
+
+def _kp(scale: Scale) -> str:
+    return f"Kp = {fmt(scale.per_mm)} {scale.unit}"
+
+
+def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
+    """Mур(φ) over the turn (exact), the positions marked: matplotlib, embedded as vector."""
+    from .render.force_tables import moment_curve
+
+    curve = moment_curve(analysis)
+    svg = moment_svg(curve, box.width, box.height, lang)
+    return [Figure((box.x0, box.y0), box.width, box.height, svg, layer="diagrams",
+                   id="s2-moment-curve")]
+
+
+def moment_svg(curve, width_mm: float, height_mm: float, lang: str) -> str:
+    """The curve Mур(φ) of crank travel, positions numbered, as a matplotlib SVG."""
+    import io
+
+    import matplotlib
+    from matplotlib.figure import Figure as MplFigure
+
+    from .render.figures import HASH_SALT, MM, _font
+
+    rc = {"svg.fonttype": "path", "svg.hashsalt": HASH_SALT, "axes.unicode_minus": False}
+    title = WORDS[lang]["curve"]
+    unit = "Н·м" if lang == "ru" else "N·m"
+    with matplotlib.rc_context(rc):
+        fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
+        ax = fig.add_axes((22 / width_mm, 14 / height_mm, 1 - 28 / width_mm,
+                           1 - 24 / height_mm))
+        ax.plot(curve.travel_deg, curve.M, "-k", lw=0.5 * MM)
+        ax.plot(curve.position_travel_deg, curve.M_positions, "o", color="black",
+                markersize=1.2 * MM)
+        ax.axhline(0.0, color="black", lw=0.25 * MM)
+        ax.set_xlim(0, 360)
+        ax.set_xticks(curve.position_travel_deg)
+        ax.set_xticklabels(curve.labels, **_font("0123456789()", 2.5))
+        for lab in ax.get_yticklabels():
+            lab.set(**_font("0123456789-", 2.5))
+        ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", 2.5)["fontsize"])
+        for sp in ax.spines.values():
+            sp.set_linewidth(0.25 * MM)
+        ax.set_ylabel(f"Mур, {unit}", **_font(f"Mур, {unit}", 3.5))
+        fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
+        buf = io.StringIO()
+        fig.savefig(buf, format="svg", metadata={"Date": None})
+    return buf.getvalue()
+
+
+__all__ = ["kinetostatics_sheet", "moment_svg", "sheet2_positions"]
