@@ -170,8 +170,11 @@ def _place_dyad(mech, d: Dyad, pts, theta, guides, phi, labels) -> None:
         l1, l2 = d.lengths
         dv = C - A
         dist = norm(dv)
-        h2 = l1**2 - ((l1**2 - l2**2 + dist**2) / (2 * np.maximum(dist, 1e-300))) ** 2
-        bad = ~(h2 >= 0) | (dist == 0)
+        # |AC| below 1e-12 of the links is a coincidence (the dyad cannot be assembled);
+        # guarding with it keeps the square below from overflowing
+        tiny = 1e-12 * (l1 + l2)
+        h2 = l1**2 - ((l1**2 - l2**2 + dist**2) / (2 * np.maximum(dist, tiny))) ** 2
+        bad = ~(h2 >= 0) | (dist <= tiny)
         if bad.any():
             _fail(bad, lambda k: (
                 f"|{a_name}{c_name}| = {dist[k]:.6g} m is outside "
