@@ -92,7 +92,7 @@ class LeverForce:
     ----------
     name : str
         The load's name (``"Q"``, ``"G2"``, ``"Pи3"``); for a couple's pair of forces
-        the moment's name and the end, ``"Mи3@B"``, ``"Mи3@C"``.
+        the moment's name primed, ``"F'Mи3"`` at the first end and ``"F''Mи3"`` at the second.
     load : str
         The load it comes from (``"Mи3"`` for both forces of the couple).
     link, kind : str
@@ -331,8 +331,8 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
         l_ab = float(np.hypot(*AB))
         fb = (M / l_ab) * perp(AB / l_ab)
         pa_, pb_ = a, b or f"{a}+"
-        applied.append((f"{m.name}@{pa_}", m.name, m.link, m.kind, a, A, -fb))
-        applied.append((f"{m.name}@{pb_}", m.name, m.link, m.kind, b, B, fb))
+        applied.append((f"F'{m.name}", m.name, m.link, m.kind, a, A, -fb))
+        applied.append((f"F''{m.name}", m.name, m.link, m.kind, b, B, fb))
         step(f"{m.name} = ±F·l_{pa_}{pb_}",
              f"Couple {m.name} = {M:.4g} N·m on link {m.link}: two forces "
              f"{m.name}/l_{pa_}{pb_} = {abs(M):.4g}/{l_ab:.4g} = {abs(M) / l_ab:.4g} N "
