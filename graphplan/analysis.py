@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .constructions import acceleration_plan, plan_scales, velocity_plan
+from .constructions import acceleration_plan, velocity_plan
 from .cycle import Cycle, analyse_cycle, sweep
 from .kinematics import Kinematics
 from .model import Mechanism
@@ -68,7 +68,10 @@ class Analysis:
             },
         }
         positions = [self.kin.as_json(k, moving) for k in range(self.kin.n)]
-        kl, kv, ka = plan_scales(m, self.kin)
+        from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
+
+        sc = sheet_scales(m, self.kin)
+        kl, kv, ka = sc.kl, sc.kv, sc.ka
         mechanism["scales"] = {s.symbol: {"value": s.per_mm, "unit": s.unit, "basis": s.basis}
                                for s in (kl, kv, ka)}
         for k, entry in enumerate(positions):
@@ -78,10 +81,10 @@ class Analysis:
             segments.update({r.name: r.mm for r in ap.readings.values()})
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
                               "segments_mm": segments}
-        self._add_forces(positions)
+        self._add_forces(positions, sc)
         return {"mechanism": mechanism, "positions": positions}
 
-    def _add_forces(self, positions: list[dict]) -> None:
+    def _add_forces(self, positions: list[dict], sc) -> None:
         """Per position: the exact kinetostatics (``forces``) with the variant's rules, and
         ``M_bal_full``, the balancing moment with nothing neglected (N·m, CCW+)."""
         from .applied_loads import compute_loads
@@ -92,10 +95,8 @@ class Analysis:
         full = solve_forces(self.mech, self.kin,
                             compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0))
         from .force_plans import force_plans
-        from .scales import sheet_scales
         from .zhukovsky import zhukovsky_lever
 
-        sc = sheet_scales(self.mech, self.kin)
         for k, entry in enumerate(positions):
             f = forces.as_json(k)
             del f["label"], f["phi_deg"]

@@ -20,7 +20,7 @@ from .constructions import Plan, Reader, acceleration_plan, velocity_plan
 from .cycle import output_coordinate
 from .labels import LabelRequest, place_labels
 from .layout import CAPTION
-from .scales import PLAN_MARGIN, Sheet1Scales, sheet_scales, trajectories
+from .scales import PLAN_MARGIN, Sheet1Scales, sheet_scales
 from .sheet import (
     DASHDOT,
     DASHDOTDOT,
@@ -113,7 +113,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     labels: list[LabelRequest] = []
     centres = {lp.centre for lp in mech.links.values() if lp.centre}
     styles = _position_styles(analysis)
-    paths = trajectories(mech, kin)
+    paths = sc.paths
     out_point = output_coordinate(mech, kin.pos)[3]
 
     # trajectories of the centres of mass (closed curves) and of the crank pin
@@ -147,16 +147,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     # the links in every position
     for k in range(kin.n):
         st = styles[k]
-        for link in mech.moving_links:
-            names = _link_outline(mech, link, centres)
-            if len(names) < 2:
-                continue
-            pts = [P(kin.pos.points[p][k]) for p in names]
-            if len(pts) == 2 or _collinear(pts):
-                pts = _span(pts)
-                items.append(Line(pts[0], pts[1], st, layer=L, id=f"pp-{k}-link-{link}"))
-            else:
-                items.append(Polyline(tuple(pts), st, True, layer=L, id=f"pp-{k}-link-{link}"))
+        items += link_items(mech, kin, k, P, st, f"pp-{k}", L)
         for key, (G, u) in kin.pos.guides.items():
             slider = key.split("/")[0]
             corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
@@ -259,15 +250,22 @@ def _span(pts) -> tuple[Pt, Pt]:
     return best
 
 
-def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
-    """Corners of the block of ``slider`` on its guide at position k (paper mm)."""
+def slider_point(mech, kin, k: int, slider: str, G, u) -> str | None:
+    """The point of ``slider`` nearest its guide (G, u) at position k: where its block sits."""
     names = [p for p in mech.points_of(slider) if p in kin.pos.points]
     if not names:
         return None
+    n = np.array([-u[1], u[0]], float)
+    return min(names, key=lambda p: abs(float(np.dot(kin.pos.points[p][k] - G, n))))
+
+
+def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
+    """Corners of the block of ``slider`` on its guide at position k (paper mm)."""
+    name = slider_point(mech, kin, k, slider, G, u)
+    if name is None:
+        return None
     u = np.asarray(u, float)
-    n = np.array([-u[1], u[0]])
-    dist = [abs(float(np.dot(kin.pos.points[p][k] - G, n))) for p in names]
-    c = np.asarray(P(kin.pos.points[names[int(np.argmin(dist))]][k]))
+    c = np.asarray(P(kin.pos.points[name][k]))
     du = np.array([u[0], -u[1]])  # paper direction (y flipped)
     dn = np.array([-du[1], du[0]])
     hl, hw = SLIDER[0] / 2, SLIDER[1] / 2
@@ -275,24 +273,48 @@ def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
                  for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1)))
 
 
+def link_items(mech, kin, k: int, P, style: Style, ident: str, layer: str) -> list[Item]:
+    """The moving links at position k: a line per two-point (or straight) link, a closed
+    outline for a link with more points; centres of mass are not corners."""
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    items: list[Item] = []
+    for link in mech.moving_links:
+        names = _link_outline(mech, link, centres)
+        if len(names) < 2:
+            continue
+        pts = [P(kin.pos.points[p][k]) for p in names]
+        if len(pts) == 2 or _collinear(pts):
+            a, b = _span(pts)
+            items.append(Line(a, b, style, layer=layer, id=f"{ident}-link-{link}"))
+        else:
+            items.append(Polyline(tuple(pts), style, True, layer=layer,
+                                  id=f"{ident}-link-{link}"))
+    return items
+
+
 def _rotation_radius(crank, kl: float) -> float:
     return max(6.0, min(12.0, 0.4 * crank.length / kl))
 
 
-def _rotation_arrow(c: Pt, crank, phi0: float, kl: float) -> list[Item]:
-    """The sense of rotation of the crank: a 70° arc about its pivot with an arrowhead.
+def turning_arrow(c: Pt, r: float, start_deg: float, sweep_deg: float, ccw: bool,
+                  head_deg: float, *, layer: str, ident: str) -> list[Item]:
+    """A turning arrow: an arc about ``c`` from ``start_deg`` over ``sweep_deg`` (as seen)
+    with its head at the counter-clockwise end when ``ccw``, else at the start.
 
-    Drawn opposite the first position of the crank (model angles are sheet angles:
-    the plan is only flipped in y, so counter-clockwise stays counter-clockwise).
+    Model angles are sheet angles (the plans are only flipped in y, so counter-clockwise
+    stays counter-clockwise). Ids ``{ident}-arc`` and ``{ident}-head``.
     """
-    r = _rotation_radius(crank, kl)
-    a0 = math.degrees(phi0) + 145.0
-    a1 = a0 + 70.0
-    arc = Arc(c, r, a0, a1, THIN, layer="position_plan", id="pp-omega-arc")
-    tip_deg, back = (a1, -1.0) if crank.omega > 0 else (a0, 1.0)
-    tip = arc_point(c, r, tip_deg)
-    tail = arc_point(c, r, tip_deg + back * 25.0)
-    return [arc, Arrow(tail, tip, THIN, 3.0, 1.0, layer="position_plan", id="pp-omega-head")]
+    a0, a1 = start_deg, start_deg + sweep_deg
+    tip_deg, back = (a1, -1.0) if ccw else (a0, 1.0)
+    return [Arc(c, r, a0, a1, THIN, layer=layer, id=f"{ident}-arc"),
+            Arrow(arc_point(c, r, tip_deg + back * head_deg), arc_point(c, r, tip_deg), THIN,
+                  3.0, 1.0, layer=layer, id=f"{ident}-head")]
+
+
+def _rotation_arrow(c: Pt, crank, phi0: float, kl: float) -> list[Item]:
+    """The sense of rotation of the crank: a 70° arc opposite its first position."""
+    return turning_arrow(c, _rotation_radius(crank, kl), math.degrees(phi0) + 145.0, 70.0,
+                         crank.omega > 0, 25.0, layer="position_plan", ident="pp-omega")
 
 
 def _rotation_label_anchor(c: Pt, crank, phi0: float, kl: float) -> Pt:

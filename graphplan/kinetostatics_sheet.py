@@ -20,28 +20,29 @@ import numpy as np
 from shapely.geometry import Point
 
 from .applied_loads import compute_loads
-from .errors import InputError, LayoutError
+from .errors import LayoutError
 from .force_plans import force_plans
 from .kinematics_sheet import (
     JOINT_R,
     WHITE_FILL,
     _joints,
-    _link_outline,
     _Paper,
     _slider_block,
     _support,
     _units,
+    link_items,
     plan_items,
+    slider_point,
     title_block,
+    turning_arrow,
 )
 from .kinetostatics import solve_forces
 from .labels import LabelRequest, place_labels
 from .layout import CAPTION, GAP
-from .scales import sheet_scales
+from .scales import positions_by_label, sheet_scales
 from .sheet import (
     MAIN,
     THIN,
-    Arc,
     Arrow,
     Circle,
     Figure,
@@ -80,14 +81,8 @@ WORDS = {
 
 def sheet2_positions(mech, kin, forces) -> tuple[int, ...]:
     """Indices of the positions sheet 2 analyses in full (see the module docstring)."""
-    wanted = mech.settings.get("kinetostatics", {}).get("positions")
-    if wanted is not None:
-        for lab in wanted:
-            if lab not in kin.labels:
-                raise InputError(f"{mech.source}: kinetostatics.positions: expected a position "
-                                 f"label ({', '.join(kin.labels)}), got {lab!r}")
-        which = tuple(kin.labels.index(lab) for lab in wanted)
-    else:
+    which = positions_by_label(mech, kin, "kinetostatics")
+    if which is None:
         extra = {ex.label for ex in mech.positions.extra}
         which = tuple(k for k, lab in enumerate(kin.labels) if lab in extra)
         if not which:
@@ -118,12 +113,7 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
     P = _Paper(origin, kl, pivot)
     L = "force_plan"
     items: list[Item] = []
-    centres = {lp.centre for lp in mech.links.values() if lp.centre}
-    for link in mech.moving_links:
-        names = _link_outline(mech, link, centres)
-        if len(names) >= 2:
-            q = [P(pts[n]) for n in names]
-            items.append(Polyline(tuple(q), MAIN, len(q) > 2, layer=L, id=f"{ident}-link-{link}"))
+    items += link_items(mech, kin, k, P, MAIN, ident, L)
     for key, (G, u) in kin.pos.guides.items():
         slider, carrier = key.split("/")
         corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
@@ -132,8 +122,8 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
                                   id=f"{ident}-slider-{key.replace('/', '-')}"))
         if carrier == mech.frame_link:
             d = np.array([u[k][0], -u[k][1]])
-            c = np.asarray(P(G[k] + np.dot(pts[_nearest(mech, kin, k, slider, G, u)] - G[k],
-                                            u[k]) * u[k]))
+            at = pts[slider_point(mech, kin, k, slider, G[k], u[k])]
+            c = np.asarray(P(G[k] + np.dot(at - G[k], u[k]) * u[k]))
             items.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
                               layer=L, id=f"{ident}-guide-{slider}"))
     for j in _joints(mech):
@@ -163,9 +153,11 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
         reqs.append(LabelRequest(tuple((p0 + p1) / 2), name, 3.5, group=ident))
     # the arm h21 of R21 about the crank's pivot: its line of action through the pin and
     # the perpendicular from the pivot
-    r21 = forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k] \
-        if _has(forces, f"R{mech.dyads[0].links[0]}{mech.crank.link}") else None
-    if r21 is not None and np.hypot(*r21) > 0:
+    try:
+        r21 = forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k]
+    except KeyError:
+        r21 = np.zeros(2)
+    if np.hypot(*r21) > 0:
         a = np.asarray(P(pts[mech.crank.pin]))
         o = np.asarray(P(pivot))
         d = np.array([r21[0], -r21[1]]) / float(np.hypot(*r21))
@@ -178,12 +170,9 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
             reqs.append(LabelRequest(tuple((o + foot) / 2), "h21", 3.5, group=ident))
     # the balancing moment: a turning arrow about the crank's pivot
     c = P(pivot)
-    sense = 1.0 if float(forces.M_bal[k]) >= 0 else -1.0
     a0 = math.degrees(float(kin.phi[k])) + 150.0
-    items.append(Arc(c, 9.0, a0, a0 + 60.0, THIN, layer=L, id=f"{ident}-mbal-arc"))
-    tip_deg = a0 + 60.0 if sense > 0 else a0
-    items.append(Arrow(arc_point(c, 9.0, tip_deg - sense * 20.0), arc_point(c, 9.0, tip_deg),
-                       THIN, 3.0, 1.0, layer=L, id=f"{ident}-mbal-head"))
+    items += turning_arrow(c, 9.0, a0, 60.0, float(forces.M_bal[k]) >= 0, 20.0, layer=L,
+                           ident=f"{ident}-mbal")
     reqs.insert(0, LabelRequest(arc_point(c, 13.0, a0 + 30.0), "Mур", 3.5, group=ident))
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
     keep = [cell.polygon().exterior.buffer(0.5)]
@@ -193,20 +182,6 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
                                 f"{WORDS[lang]['scheme']} {kin.labels[k]}, {_units(scale, lang)}",
                                 3.5, layer="text", id=f"{ident}-caption"))
     return items
-
-
-def _has(forces, name: str) -> bool:
-    try:
-        forces.vector(name)
-    except KeyError:
-        return False
-    return True
-
-
-def _nearest(mech, kin, k, slider, G, u) -> str:
-    names = [p for p in mech.points_of(slider) if p in kin.pos.points]
-    n = np.array([-u[k][1], u[k][0]])
-    return min(names, key=lambda p: abs(float(np.dot(kin.pos.points[p][k] - G[k], n))))
 
 
 def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None) -> Sheet:

@@ -34,6 +34,7 @@ class Sheet1Scales:
     layout: Sheet1Layout
     extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the positions, m
     plans: tuple[int, ...] = ()  # positions whose plans are drawn, in cell order
+    paths: dict[str, np.ndarray] | None = None  # the trajectories the extent was taken from
 
 
 def trajectories(mech: Mechanism, kin) -> dict[str, np.ndarray]:
@@ -54,16 +55,22 @@ def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple
     return float(x0), float(y0), float(x1), float(y1)
 
 
-def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
-    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or all)."""
-    wanted = mech.settings.get("drawing", {}).get("positions")
+def positions_by_label(mech: Mechanism, kin, section: str) -> tuple[int, ...] | None:
+    """Indices of the positions a section's ``positions`` names (None if it names none)."""
+    wanted = mech.settings.get(section, {}).get("positions")
     if wanted is None:
-        return tuple(range(kin.n))
+        return None
     for lab in wanted:
         if lab not in kin.labels:
-            raise InputError(f"{mech.source}: drawing.positions: expected a position label "
+            raise InputError(f"{mech.source}: {section}.positions: expected a position label "
                              f"({', '.join(kin.labels)}), got {lab!r}")
     return tuple(kin.labels.index(lab) for lab in wanted)
+
+
+def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
+    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or all)."""
+    which = positions_by_label(mech, kin, "drawing")
+    return tuple(range(kin.n)) if which is None else which
 
 
 def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale,
@@ -121,4 +128,4 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
                    segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
     ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
                    segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
-    return Sheet1Scales(kl, kv, ka, layout, ext, which)
+    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths)
