@@ -95,7 +95,10 @@ class Analysis:
         full = solve_forces(self.mech, self.kin,
                             compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0))
         from .force_plans import force_plans
+        from .scales import sheet2_scales
         from .zhukovsky import zhukovsky_lever
+
+        s2 = sheet2_scales(self.mech, self.kin, forces, self.cycle)
 
         for k, entry in enumerate(positions):
             f = forces.as_json(k)
@@ -108,10 +111,12 @@ class Analysis:
                  "values": {q: r.value for q, r in fp.readings.items()},
                  "equations": list(fp.equations),
                  "M_bal": fp.M_bal}
-                for fp in force_plans(self.mech, self.kin, forces, loads, k, sc.kl)]
-            lever = zhukovsky_lever(self.mech, self.kin, loads, k, sc.kl, sc.kv,
+                for fp in force_plans(self.mech, self.kin, forces, loads, k, sc.kl,
+                                      room_mm=s2.room_mm)]
+            lever = zhukovsky_lever(self.mech, self.kin, loads, k, sc.kl, s2.lever_kv(self.kin, k),
                                     reference=float(forces.M_bal[k]))
             entry["zhukovsky"] = {"M_bal": lever.M_bal, "discrepancy_pct": lever.discrepancy_pct,
+                                  "Kv": lever.plan.scale.per_mm,
                                   "arms_mm": {r.name: r.mm for r in lever.readings.values()}}
 
 

@@ -400,8 +400,8 @@ def _from_forces(forces: Forces, k: int) -> dict[str, PlanReaction]:
     return out
 
 
-def _choose_kp(build, kp: Scale | None, known: set[str]) -> Scale:
-    """Kp of the series so that the plan's extent is at most ROOM_MM.
+def _choose_kp(build, kp: Scale | None, known: set[str], room_mm: float = ROOM_MM) -> Scale:
+    """Kp of the series so that the plan's extent is at most ``room_mm`` (ROOM_MM).
 
     The smallest of 1, 2, 2.5, 4, 5 × 10^k that keeps the plan's diameter (the largest
     distance between two vertices, so also its longest segment) within ROOM_MM: 80–150
@@ -417,14 +417,14 @@ def _choose_kp(build, kp: Scale | None, known: set[str]) -> Scale:
     laid = [r for r in trial.readings.values() if r.quantity in known] or list(
         trial.readings.values())
     largest = max(laid, key=lambda r: r.value)
-    return fit_scale("Kp", "N/mm", ext, ROOM_MM, quantity=largest.quantity,
+    return fit_scale("Kp", "N/mm", ext, room_mm, quantity=largest.quantity,
                      defining=largest.value, segment=largest.name)
 
 
 def force_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,
                group_index: int, kp: Scale | None = None, *, kl: Scale,
-               reader: Reader = EXACT, known: dict[str, PlanReaction] | None = None
-               ) -> ForcePlan:
+               reader: Reader = EXACT, known: dict[str, PlanReaction] | None = None,
+               room_mm: float = ROOM_MM) -> ForcePlan:
     """Build the force plan of the Assur group ``mech.dyads[group_index]`` at position k.
 
     Parameters
@@ -450,6 +450,8 @@ def force_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
     known : dict[str, PlanReaction], optional
         Reactions read off the plans of the groups drawn before (drafting errors then
         propagate as on a hand drawing).
+    room_mm : float
+        The largest extent of the plan on its sheet (the cell of sheet 2), mm.
 
     Returns
     -------
@@ -465,7 +467,7 @@ def force_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
     def build(kp_: Scale, rd: Reader) -> ForcePlan:
         return _build_group(mech, kin, k, d, F, M, P, origin, kp_, kl, rd, big)
 
-    return build(_choose_kp(build, kp, {f.name for fs in F.values() for f in fs}), reader)
+    return build(_choose_kp(build, kp, {f.name for fs in F.values() for f in fs}, room_mm), reader)
 
 
 def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> ForcePlan:
@@ -576,7 +578,8 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
 
 def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,
                kp: Scale | None = None, *, kl: Scale, reader: Reader = EXACT,
-               known: dict[str, PlanReaction] | None = None) -> ForcePlan:
+               known: dict[str, PlanReaction] | None = None,
+               room_mm: float = ROOM_MM) -> ForcePlan:
     """The crank: the balancing moment from ``ΣM_O = 0`` and R41 from its force polygon.
 
     ``Mур/Kl + Σ±F·h = 0`` about the pivot O, the forces being the groups' reactions on
@@ -619,11 +622,11 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
                          tuple(b.steps), dict(b.readings), tuple(b.equations),
                          {"group": tuple(b.poly)}, reac, dict(b.arms), mb)
 
-    return build(_choose_kp(build, kp, {f.name for f in fs}), reader)
+    return build(_choose_kp(build, kp, {f.name for f in fs}, room_mm), reader)
 
 
 def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int, kl: Scale,
-                reader: Reader = EXACT) -> tuple[ForcePlan, ...]:
+                reader: Reader = EXACT, room_mm: float = ROOM_MM) -> tuple[ForcePlan, ...]:
     """All force plans of position k: the groups from the last to the first, then the crank.
 
     Each group takes the reactions of the groups drawn before it as read off their plans
@@ -632,10 +635,12 @@ def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: in
     known: dict[str, PlanReaction] = {}
     plans = []
     for gi in reversed(range(len(mech.dyads))):
-        p = force_plan(mech, kin, forces, loads, k, gi, kl=kl, reader=reader, known=known)
+        p = force_plan(mech, kin, forces, loads, k, gi, kl=kl, reader=reader, known=known,
+                       room_mm=room_mm)
         known.update(p.reactions)
         plans.append(p)
-    plans.append(crank_plan(mech, kin, forces, loads, k, kl=kl, reader=reader, known=known))
+    plans.append(crank_plan(mech, kin, forces, loads, k, kl=kl, reader=reader, known=known,
+                            room_mm=room_mm))
     return tuple(plans)
 
 

@@ -2,9 +2,11 @@
 with its loads and reactions, the force plan of every Assur group and of the crank, and
 Zhukovsky's lever; below them the curve Mур(φ) and the table of the force analysis.
 
-The positions are the variant's ``kinetostatics.positions`` (labels), by default its
-extra positions (the press: the working positions (2), (3)) or, without any, the
-position of the largest |Mур|. Every plan is the construction of
+The positions are the variant's ``kinetostatics.positions`` (labels); by default the
+working positions (the variant's extra positions off the dead centres: the press's (2),
+(3)) and one idle position, the one of the largest |Mур| outside the working stroke
+(the position of the largest |Mур| when no extra position is a working one), at most
+three. Every plan is the construction of
 :mod:`graphplan.force_plans` / :mod:`graphplan.zhukovsky`, placed by a translation and
 the flip of y, as on sheet 1. The scheme is drawn at the plan of positions' Kl when it
 fits its cell, else at the next coarser scale of the series (printed in its caption);
@@ -20,7 +22,6 @@ import numpy as np
 from shapely.geometry import Point
 
 from .applied_loads import compute_loads
-from .errors import LayoutError
 from .force_plans import force_plans
 from .kinematics_sheet import (
     JOINT_R,
@@ -38,8 +39,8 @@ from .kinematics_sheet import (
 )
 from .kinetostatics import solve_forces
 from .labels import LabelRequest, place_labels
-from .layout import CAPTION, GAP
-from .scales import positions_by_label, sheet_scales
+from .layout import CAPTION, GAP, SHEET2_STRIP, fit_columns
+from .scales import sheet2_positions, sheet2_scales, sheet_scales
 from .sheet import (
     MAIN,
     THIN,
@@ -58,39 +59,24 @@ from .sheet import (
     item_geometry,
     table_items,
     text_at_centre,
-    text_width,
 )
 from .units import Scale, fmt, nice_ceil
 from .zhukovsky import zhukovsky_lever
 
 ARROW_MM = 16.0  #: length of a load's or reaction's arrow on the scheme (direction only)
-STRIP = 120.0  #: height of the bottom strip (Mур(φ) and the table), mm
-MAX_ROWS = 3
 
 WORDS = {
     "ru": {"scheme": "Схема, пол.", "plan": "План сил", "crank": "Кривошип", "lever":
            "Рычаг Жуковского", "curve": "Уравновешивающий момент Mур(φ)",
            "table": "Силовой расчёт", "sheet": "Силовой анализ", "pos": "Пол.",
-           "cols": ("Пол.", "φ, °", "R12, кН", "h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
+           "head": ("Пол.", "φ, °", "Kp, Н/мм"), "kN": "кН",
+           "tail": ("h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
     "en": {"scheme": "Scheme, pos.", "plan": "Force plan", "crank": "Crank", "lever":
            "Zhukovsky's lever", "curve": "Balancing moment Mур(φ)",
            "table": "Force analysis", "sheet": "Force analysis", "pos": "Pos.",
-           "cols": ("Pos.", "φ, °", "R12, kN", "h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
+           "head": ("Pos.", "φ, °", "Kp, N/mm"), "kN": "kN",
+           "tail": ("h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
 }
-
-
-def sheet2_positions(mech, kin, forces) -> tuple[int, ...]:
-    """Indices of the positions sheet 2 analyses in full (see the module docstring)."""
-    which = positions_by_label(mech, kin, "kinetostatics")
-    if which is None:
-        extra = {ex.label for ex in mech.positions.extra}
-        which = tuple(k for k, lab in enumerate(kin.labels) if lab in extra)
-        if not which:
-            which = (int(np.argmax(np.abs(forces.M_bal))),)
-    if len(which) > MAX_ROWS:
-        raise LayoutError(f"{mech.source}: sheet 2 draws at most {MAX_ROWS} positions in full "
-                          f"(got {len(which)}): choose them in kinetostatics.positions")
-    return which
 
 
 def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang: str,
@@ -191,60 +177,64 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     sc = sheet_scales(mech, kin, page)
     loads = compute_loads(mech, kin, analysis.cycle)
     forces = solve_forces(mech, kin, loads)
-    rows = sheet2_positions(mech, kin, forces)
+    s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page)
     w = WORDS[lang]
     f = page.frame
-    x0, y0, x1 = f.x0 + 4.0, f.y0 + 18.0 + 4.0, f.x1 - 4.0
-    y1 = f.y1 - STRIP - GAP
     n_groups = len(mech.dyads)
-    ncol = n_groups + 3  # scheme, the groups' plans, the crank's plan, the lever
-    cw, ch = (x1 - x0) / ncol, (y1 - y0) / len(rows)
-    if min(cw, ch) < 60.0:
-        raise LayoutError(f"sheet 2 leaves cells of {min(cw, ch):.0f} mm on {page.format}: "
-                          "choose fewer positions (kinetostatics.positions) or a larger format")
     items: list[Item] = []
     summary = []
     mmax = float(np.max(np.abs(forces.M_bal)))
-    for r, k in enumerate(rows):
-        cells = [Rect(x0 + i * cw, y0 + r * ch, x0 + (i + 1) * cw, y0 + (r + 1) * ch)
-                 for i in range(ncol)]
+    for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
         items += _scheme_items(analysis, loads, forces, k, cells[0], sc.kl, lang, ident)
-        plans = force_plans(mech, kin, forces, loads, k, sc.kl)
+        plans = force_plans(mech, kin, forces, loads, k, sc.kl, room_mm=s2.room_mm)
         for i, fp in enumerate(plans):
             title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])
-            cap = f"{title}, {_units(_kp(fp.scale), lang)}"
+            cap = f"{title}, {_kp(fp.scale, lang)}"
             items += plan_items(fp, cells[1 + i], cap, f"{ident}-fp{i}", segment_labels=True)
-        lever = zhukovsky_lever(mech, kin, loads, k, sc.kl, _lever_scale(kin, k, cells[-1]),
+        lever = zhukovsky_lever(mech, kin, loads, k, sc.kl, s2.lever_kv(kin, k),
                                 reference=float(forces.M_bal[k]))
         cap = f"{w['lever']}, {_units(lever.plan.scale.basis, lang)}"
         items += plan_items(lever, cells[-1], cap, f"{ident}-lever", segment_labels=True)
         crank = plans[-1]
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
-        r12 = forces.reactions.get(f"R{mech.crank.link}{mech.dyads[0].links[0]}")
         summary.append([kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.1f}",
-                        fmt(float(r12.magnitude[k]) / 1000.0, 5) if r12 is not None else "—",
-                        f"{h21:.2f}" if math.isfinite(h21) else "—",
-                        _moment(float(crank.M_bal), mmax), _moment(float(lever.M_bal), mmax),
-                        f"{lever.discrepancy_pct:.2f}"
-                        if abs(float(crank.M_bal)) >= 1e-9 * max(mmax, 1.0) else "—"])
-    strip = Rect(x0, f.y1 - STRIP, f.x1 - 185.0 - GAP, f.y1 - 4.0)
+                        fmt(plans[0].scale.per_mm)]
+                       + [fmt(float(r.magnitude[k]) / 1000.0, 5)
+                          for r in forces.reactions.values()]
+                       + [f"{h21:.2f}" if math.isfinite(h21) else "—",
+                          _moment(float(crank.M_bal), mmax), _moment(float(lever.M_bal), mmax),
+                          f"{lever.discrepancy_pct:.2f}"
+                          if abs(float(crank.M_bal)) >= 1e-9 * max(mmax, 1.0) else "—"])
+    strip = Rect(s2.cells[0][0].x0, f.y1 - SHEET2_STRIP, f.x1 - 185.0 - GAP, f.y1 - 4.0)
     items += _curve_items(analysis, Rect(strip.x0, strip.y0, strip.x0 + 250.0, strip.y1), lang)
     tx = strip.x0 + 250.0 + GAP
-    widths = [max(text_width(Text((0, 0), str(c), 3.5, layer="tables")) + 3.0
-                  for c in [w["cols"][j]] + [row[j] for row in summary]) for j in range(7)]
-    items.append(Text((tx, strip.y0 + 5.0), w["table"], 5.0, layer="text", id="s2-table-title"))
-    items += table_items((tx, strip.y0 + CAPTION), widths, summary, list(w["cols"]), 3.5,
-                         id="s2-table")
+    items += _table_items(forces, summary, Rect(tx, strip.y0, strip.x1, strip.y1), lang)
     return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]))
 
 
-def _lever_scale(kin, k: int, cell: Rect) -> Scale:
-    """Kv of the lever: the turned velocity plan fills its cell (any scale gives the same Mур)."""
-    v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
-    ext = float(np.max(np.ptp(v, axis=0)))
-    room = min(cell.width, cell.height - CAPTION) - 40.0
-    return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
+def table_header(forces, lang: str) -> list[str]:
+    """Columns of the table of sheet 2: position, φ, Kp of the first group, every reaction
+    (kN, in the order solved), h21, Mур from the plans and from the lever, their difference."""
+    w = WORDS[lang]
+    return [*w["head"], *(f"{n}, {w['kN']}" for n in forces.reactions), *w["tail"]]
+
+
+def _table_items(forces, summary, box: Rect, lang: str) -> list[Item]:
+    """The table under its title; a table too wide loses its last columns and says so."""
+    w = WORDS[lang]
+    fit = fit_columns(table_header(forces, lang), summary, box.width)
+    title, height = w["table"], 5.0
+    if fit.shown < fit.total:
+        title += (f" (столбцов {fit.shown} из {fit.total}; полностью — forces.ru.md)"
+                  if lang == "ru" else
+                  f" ({fit.shown} of {fit.total} columns; all in forces.en.md)")
+        height = 3.5
+    items: list[Item] = [Text((box.x0, box.y0 + 5.0), title, height, layer="text",
+                              id="s2-table-title")]
+    items += table_items((box.x0, box.y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5,
+                         id="s2-table")
+    return items
 
 
 def _moment(m: float, scale: float) -> str:
@@ -252,8 +242,8 @@ def _moment(m: float, scale: float) -> str:
     return "0" if abs(m) < 1e-9 * max(scale, 1.0) else fmt(m, 5)
 
 
-def _kp(scale: Scale) -> str:
-    return f"Kp = {fmt(scale.per_mm)} {scale.unit}"
+def _kp(scale: Scale, lang: str) -> str:
+    return f"Kp = {fmt(scale.per_mm)} {'Н/мм' if lang == 'ru' else scale.unit}"
 
 
 def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:

@@ -108,3 +108,63 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
     scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
     return Sheet1Layout(page, plan_box, diagrams, cells, table, scales)
+
+
+@dataclass(frozen=True, slots=True)
+class FittedTable:
+    """A table cut to the width it has: the columns kept, their widths, and how many of all."""
+
+    header: list[str]
+    rows: list[list[str]]
+    widths: list[float]
+    shown: int
+    total: int
+
+
+def fit_columns(header, rows, width: float, height: float = 3.5,
+                pad: float = 3.0) -> FittedTable:
+    """Column widths from the lettering; the leading columns that fit into ``width``.
+
+    A table wider than its place loses its last columns (the full table is in the
+    markdown tables); the caller says so in the table's title.
+    """
+    from .sheet import Text, text_width
+
+    widths = []
+    for j in range(len(header)):
+        cells = [str(header[j])] + [str(row[j]) for row in rows]
+        widths.append(max(text_width(Text((0, 0), c, height, layer="tables")) for c in cells
+                          if c.strip()) + pad)
+    keep, acc = [], 0.0
+    for j, wd in enumerate(widths):
+        if acc + wd > width:
+            break
+        keep.append(j)
+        acc += wd
+    return FittedTable([str(header[j]) for j in keep], [[row[j] for j in keep] for row in rows],
+                       [widths[j] for j in keep], len(keep), len(header))
+
+
+SHEET2_STRIP = 120.0  #: height of sheet 2's bottom strip (Mур(φ) and the table), mm
+SHEET2_CELL_MIN = 60.0  #: smallest useful cell of sheet 2, mm
+LABEL_ROOM = 12.0  #: room kept around a plan in its cell for letters, mm
+
+
+def sheet2_cells(page: Page, n_groups: int, n_rows: int) -> tuple[tuple[Rect, ...], ...]:
+    """The cells of sheet 2, one row per position: the scheme, the plans of the groups, the
+    crank's plan, Zhukovsky's lever (each cell's top CAPTION mm for its caption)."""
+    f = page.frame
+    x0, y0, x1 = f.x0 + 4.0, f.y0 + GRAPH26_SIZE[1] + 8.0, f.x1 - 4.0
+    y1 = f.y1 - SHEET2_STRIP - GAP
+    ncol = n_groups + 3
+    cw, ch = (x1 - x0) / ncol, (y1 - y0) / n_rows
+    if min(cw, ch) < SHEET2_CELL_MIN:
+        raise LayoutError(f"sheet 2 leaves cells of {min(cw, ch):.0f} mm on {page.format}: "
+                          "choose fewer positions (kinetostatics.positions) or a larger format")
+    return tuple(tuple(Rect(x0 + i * cw, y0 + r * ch, x0 + (i + 1) * cw, y0 + (r + 1) * ch)
+                       for i in range(ncol)) for r in range(n_rows))
+
+
+def plan_room(cell: Rect) -> float:
+    """The largest extent (diameter) of a plan that fits ``cell`` with its letters, mm."""
+    return min(cell.width, cell.height - CAPTION) - 2 * LABEL_ROOM

@@ -1,8 +1,10 @@
-"""The scales of sheet 1: Kl so the plan of positions fits its column, Kv and Ka so
-every plan fits its cell of the grid (see :mod:`graphplan.layout`).
+"""The scales of the sheets. Sheet 1: Kl so the plan of positions fits its column, Kv
+and Ka so every plan fits its cell of the grid (see :mod:`graphplan.layout`). Sheet 2:
+the positions it analyses, the room of its force plans (which fixes each Kp) and the Kv
+of Zhukovsky's lever.
 
-One function, :func:`sheet_scales`, decides them; the JSON report, the tables and
-the sheet all use it, so a segment in the tables is the segment on the sheet.
+:func:`sheet_scales` and :func:`sheet2_scales` decide them; the JSON report, the tables
+and the sheets all use them, so a segment in the tables is the segment on the sheet.
 A scale fixed in the variant's ``[drawing]`` section is used as given.
 """
 
@@ -13,15 +15,26 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import InputError
-from .layout import GAP, Sheet1Layout, diagram_min, sheet1_layout
+from .cycle import in_working_stroke
+from .errors import InputError, LayoutError
+from .layout import (
+    CAPTION,
+    GAP,
+    Rect,
+    Sheet1Layout,
+    diagram_min,
+    plan_room,
+    sheet1_layout,
+    sheet2_cells,
+)
 from .model import Mechanism
 from .sheet import GRAPH26_SIZE, Page
-from .units import Scale, fit_scale
+from .units import Scale, fit_scale, nice_ceil
 
 PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
 LINE_OVERSHOOT = 8.0  #: construction lines run this far past their intersection, mm
 TRAJECTORY_POINTS = 360
+SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,3 +142,60 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
     ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
                    segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
     return Sheet1Scales(kl, kv, ka, layout, ext, which, paths)
+
+
+def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
+    """The working positions and the idle position of the largest |Mур| (module docstring)."""
+    at_dead_centre = {ex.label for ex in mech.positions.extra
+                      if ex.from_dead_centre is not None and ex.turn == 0.0}
+    working = in_working_stroke(mech, cycle, kin.phi)
+    extra = {ex.label for ex in mech.positions.extra} - at_dead_centre
+    chosen = [k for k, lab in enumerate(kin.labels) if lab in extra][:SHEET2_MAX_ROWS - 1]
+    m = np.abs(forces.M_bal)
+    idle = [k for k in range(len(kin.phi)) if not working[k] and k not in chosen
+            and kin.labels[k] not in at_dead_centre]
+    if not chosen:
+        chosen = [int(np.argmax(m))]
+        idle = [k for k in idle if k != chosen[0]]
+    if idle:
+        chosen.append(max(idle, key=lambda k: m[k]))
+    return tuple(chosen)
+
+
+def sheet2_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
+    """Indices of the positions sheet 2 analyses in full (see the module docstring)."""
+    which = positions_by_label(mech, kin, "kinetostatics")
+    if which is None:
+        which = default_positions(mech, kin, forces, cycle)
+    if len(which) > SHEET2_MAX_ROWS:
+        raise LayoutError(f"{mech.source}: sheet 2 draws at most {SHEET2_MAX_ROWS} positions "
+                          f"in full (got {len(which)}): choose them in kinetostatics.positions")
+    return which
+
+
+@dataclass(frozen=True, slots=True)
+class Sheet2Scales:
+    """What sheet 2 is drawn at: its positions, its cells, the room of a force plan (each
+    Kp is the series value that fits the plan into it) and the lever's cell."""
+
+    positions: tuple[int, ...]
+    cells: tuple[tuple[Rect, ...], ...]
+    room_mm: float
+
+    def lever_kv(self, kin, k: int) -> Scale:
+        """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
+        (any Kv gives the same Mур; the arms in mm are read at this one)."""
+        cell = self.cells[0][-1]
+        v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
+        ext = float(np.max(np.ptp(v, axis=0)))
+        room = min(cell.width, cell.height - CAPTION) - 40.0
+        return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
+
+
+def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None
+                  ) -> Sheet2Scales:
+    """Positions, cells and plan room of sheet 2 (see :mod:`graphplan.kinetostatics_sheet`)."""
+    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    rows = sheet2_positions(mech, kin, forces, cycle)
+    cells = sheet2_cells(page, len(mech.dyads), len(rows))
+    return Sheet2Scales(rows, cells, plan_room(cells[0][1]))

@@ -30,24 +30,65 @@ def test_layout_has_no_problems(name):
     assert check_layout(sheet) == []
 
 
-def test_press_sheet_analyses_the_seeds_working_positions():
-    a, sheet = built("press")
+def _table(sheet):
+    """The table of sheet 2 as {row label: {column header: text}}."""
     texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
-    labels = [a.kin.labels[k] for k in sheet2_positions(a.mech, a.kin, None)]
-    assert labels == ["(2)", "(3)"]  # the variant's extra positions
-    rows = {texts[f"s2-table-r{i}c1"]: i for i in (1, 2)}
+    ncol = max(int(i.split("c")[1]) for i in texts if i.startswith("s2-table-r0c"))
+    header = [texts[f"s2-table-r0c{j}"] for j in range(1, ncol + 1)]
+    rows, i = {}, 1
+    while f"s2-table-r{i}c1" in texts:
+        rows[texts[f"s2-table-r{i}c1"]] = {h: texts.get(f"s2-table-r{i}c{j}", "")
+                                            for j, h in enumerate(header, 1)}
+        i += 1
+    return rows
+
+
+def test_press_sheet_analyses_the_seeds_working_positions_and_one_idle():
+    a, sheet = built("press")
     forces = solve_forces(a.mech, a.kin, compute_loads(a.mech, a.kin, a.cycle))
-    for lab, i in rows.items():
+    labels = [a.kin.labels[k] for k in sheet2_positions(a.mech, a.kin, forces, a.cycle)]
+    # the variant's extra positions (2), (3), then the idle position of the largest |Mур|:
+    # the working stroke runs from position 5 (φ = 90°) to 1 (270°); of the idle 2, 3, 4 (the
+    # seed's idle positions) |Mур| = 1153, 966, 462 N·m, so position 2
+    m = {lab: abs(forces.M_bal[k]) for k, lab in enumerate(a.kin.labels)}
+    assert m["2"] > m["3"] > m["4"]
+    assert labels == ["(2)", "(3)", "2"]
+    table = _table(sheet)
+    assert list(table) == labels
+    for lab, row in table.items():
         k = a.kin.labels.index(lab)
-        # R12 in kN, Mур in N·m from the force plans and the lever: the seed's (2) is
-        # R12 = 424 kN, Mур = 424·37.39·0.001 = 15.85 kN·m
-        r12 = float(texts[f"s2-table-r{i}c3"])
-        assert r12 == pytest.approx(forces.reactions["R12"].magnitude[k] / 1000, rel=1e-4)
-        assert float(texts[f"s2-table-r{i}c5"]) == pytest.approx(forces.M_bal[k], rel=1e-4)
-        assert float(texts[f"s2-table-r{i}c6"]) == pytest.approx(forces.M_bal[k], rel=1e-4)
-        assert texts[f"s2-table-r{i}c7"] == "0.00"  # exact constructions agree
-    assert float(texts["s2-table-r1c5"]) == pytest.approx(15850, rel=1e-3)
-    assert float(texts["s2-table-r1c4"]) == pytest.approx(37.39, abs=0.01)
+        # every reaction in kN, Mур in N·m from the force plans and the lever: the seed's
+        # (2) is R12 = 424 kN, Mур = 424·37.39·0.001 = 15.85 kN·m
+        for name, r in forces.reactions.items():
+            assert float(row[f"{name}, кН"]) == pytest.approx(r.magnitude[k] / 1000, rel=1e-4)
+        assert float(row["Mур, Н·м"]) == pytest.approx(forces.M_bal[k], rel=1e-4)
+        assert float(row["Mур(Ж), Н·м"]) == pytest.approx(forces.M_bal[k], rel=1e-4)
+        assert row["Δ, %"] == "0.00"  # exact constructions agree
+    assert float(table["(2)"]["Mур, Н·м"]) == pytest.approx(15850, rel=1e-3)
+    assert float(table["(2)"]["h21, мм"]) == pytest.approx(37.39, abs=0.01)
+    assert table["(2)"]["Kp, Н/мм"] == "4000"  # Kp = Q/ab = 420000/105 (force_plans)
+
+
+def test_dead_centre_extras_are_not_default_positions():
+    """The four-bar's extra position 1' is a dead centre (Mур ≈ 0 there): sheet 2 takes the
+    position of the largest |Mур| instead, and the idle one of the largest |Mур|."""
+    a, _ = built("fourbar")
+    forces = solve_forces(a.mech, a.kin, compute_loads(a.mech, a.kin, a.cycle))
+    rows = sheet2_positions(a.mech, a.kin, forces, a.cycle)
+    assert "1'" not in [a.kin.labels[k] for k in rows]
+    m = abs(forces.M_bal)
+    assert rows[0] == int(m.argmax())
+    assert len(rows) == 2 and m[rows[1]] <= m[rows[0]]
+
+
+def test_wide_table_says_what_it_left_out():
+    a, sheet = built("shaper")
+    titles = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)
+              and t.id == "s2-table-title"]
+    table = _table(sheet)
+    ncols = len(next(iter(table.values())))
+    total = 3 + 7 + 4  # head, the shaper's seven reactions, tail
+    assert ncols == total or f"столбцов {ncols} из {total}" in titles[0]
 
 
 def test_arm_h21_is_drawn_at_the_schemes_scale():

@@ -38,7 +38,7 @@ from ..constructions import EXACT, Reader
 from ..force_plans import ForcePlan, force_plans
 from ..kinematics import solve
 from ..kinetostatics import solve_forces
-from ..scales import sheet_scales
+from ..scales import sheet2_scales, sheet_scales
 from ..units import Scale, fmt
 from ..zhukovsky import Lever, zhukovsky_lever
 
@@ -249,12 +249,14 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
     forces = solve_forces(mech, kin, loads)
     m_full = solve_forces(mech, kin, full).M_bal
     draft = Reader(prec)
+    s2 = sheet2_scales(mech, kin, forces, analysis.cycle)
     out = []
     for k in range(kin.n):
-        ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT)
-        dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft)
-        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, sc.kv, EXACT, reference=ex[-1].M_bal)
-        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, sc.kv, draft, reference=dr[-1].M_bal)
+        ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm)
+        dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft, s2.room_mm)
+        kv = s2.lever_kv(kin, k)
+        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal)
+        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
         out.append(PositionForces(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
