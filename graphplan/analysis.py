@@ -29,7 +29,9 @@ class Analysis:
         """The JSON report of ``graphplan analyze --json``.
 
         Keys are a promise to users' scripts: SI units, angles in degrees,
-        angular quantities counter-clockwise positive, the variant's own frame.
+        angular quantities counter-clockwise positive, the variant's own frame; in
+        ``"dynamics"`` (when the variant gives ``dynamics.delta``) moments are positive in
+        the crank's sense of rotation (:mod:`graphplan.dynamics`).
         """
         m, st, cy = self.mech, self.structure, self.cycle
         moving = m.moving_links
@@ -82,7 +84,12 @@ class Analysis:
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
                               "segments_mm": segments}
         self._add_forces(positions, sc)
-        return {"mechanism": mechanism, "positions": positions}
+        out = {"mechanism": mechanism, "positions": positions}
+        if "delta" in self.mech.settings.get("dynamics", {}):
+            from .machine_unit import machine_unit
+
+            out["dynamics"] = machine_unit(self).to_json()
+        return out
 
     def _add_forces(self, positions: list[dict], sc) -> None:
         """Per position: the exact kinetostatics (``forces``) with the variant's rules, and

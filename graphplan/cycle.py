@@ -313,3 +313,13 @@ def _stroke_angle(mech, phi_start, turn, sense, q_start, q_end, fraction) -> flo
         else:
             hi = mid
     return phi_start + sense * 0.5 * (lo + hi)
+
+
+def stroke_angle(mech: Mechanism, cycle: Cycle, fraction: float) -> float:
+    """Crank angle (rad) in the working stroke where the output has travelled ``fraction``
+    (0…1) of it; needs the dead centres."""
+    if not cycle.dead_centres:
+        raise InputError(f"{mech.source}: the output has no dead centres, so no working stroke")
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    return _stroke_angle(mech, cycle.dead_centres[0], cycle.working_turn, sense,
+                         cycle.q_start, cycle.q_end, fraction) % (2 * math.pi)

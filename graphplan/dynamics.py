@@ -61,6 +61,7 @@ from numpy.typing import NDArray
 
 from .analysis import Analysis
 from .applied_loads import compute_loads
+from .cycle import stroke_angle
 from .errors import GraphplanError, InputError, LayoutError
 from .kinematics import Kinematics, solve
 from .kinetostatics import solve_forces
@@ -73,6 +74,8 @@ GRID = 720
 """Default intervals of the uniform grid over one turn (every 0.5°)."""
 STEEL = 7800.0
 """Density of steel, kg/m³."""
+MAX_POLE_MM = 80.0
+"""Largest pole distance H of the work diagrams, mm (the pole stays near the drawing)."""
 RIM_SPEED_LIMIT = 40.0
 """Largest rim speed ω·D/2 of a steel flywheel, m/s (method B.4.10: 40–50 m/s)."""
 
@@ -104,6 +107,9 @@ class ReducedMoment:
         |ω1|, rad/s.
     sense : float
         +1 for a CCW crank, −1 for a CW one.
+    breaks : tuple[float, ...]
+        Travel (rad) of the breaks of the resistance diagrams (a jump or a kink of the
+        load), where Mс is not smooth: the graphical integration puts a node there.
     """
 
     tau: Array
@@ -114,6 +120,7 @@ class ReducedMoment:
     pos_M: Array
     omega1: float
     sense: float
+    breaks: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -202,7 +209,30 @@ def reduced_moment(analysis: Analysis, grid: int | None = None, *,
     pos_tau = (sense * (analysis.kin.phi - phi0)) % (2 * math.pi)
     pos_M = _resisting_moment(analysis, analysis.kin, neglect_below)
     return ReducedMoment(tau, phi, M, analysis.kin.labels, pos_tau, pos_M,
-                         abs(mech.crank.omega), sense)
+                         abs(mech.crank.omega), sense, resistance_breaks(analysis))
+
+
+def resistance_breaks(analysis: Analysis) -> tuple[float, ...]:
+    """Crank travel (rad, from the first position) of every interior break of the variant's
+    resistance diagrams: the travel fractions 0 < s < 1 where the load jumps or its slope
+    changes, turned into crank angles of the working stroke."""
+    mech, cycle = analysis.mech, analysis.cycle
+    if not cycle.dead_centres:
+        return ()
+    phi0, sense = _first(mech, analysis)
+    out = set()
+    for res in mech.resistances:
+        d = res.diagram
+        for i in range(1, len(d) - 1):
+            (s0, l0), (s1, l1), (s2, l2) = d[i - 1], d[i], d[i + 1]
+            if not 0.0 < s1 < 1.0:
+                continue
+            kink = s1 == s0 or s2 == s1 or not math.isclose(
+                (l1 - l0) * (s2 - s1), (l2 - l1) * (s1 - s0), rel_tol=1e-9, abs_tol=1e-12)
+            if kink:
+                phi = stroke_angle(mech, cycle, s1)
+                out.add(round((sense * (phi - phi0)) % (2 * math.pi), 12))
+    return tuple(sorted(out))
 
 
 def reduced_inertia(mech: Mechanism, kin: Kinematics) -> ReducedInertia:
@@ -259,13 +289,15 @@ def _model(obj: Analysis | DynamicModel) -> DynamicModel:
 class WorkDiagrams:
     """Aс, Aд, ΔT exactly (grid) and by graphical integration (method of chords, nodes).
 
-    Graphical integration (n equal intervals h = 2π/n, nodes τ_i = i·h): on each interval
-    the mean ordinate of the Mс diagram is taken at its midpoint, ``y_M`` mm; the ray from
-    the pole P at H mm left of the origin to its projection on the ordinate axis has the
-    slope y_M/H; the chord of the Aс diagram parallel to it rises ``Δy_A = y_M·Δx/H`` mm
-    over the interval of Δx = L/n mm. So ``Aс = y_A·KA`` with ``KA = Kφ·KM·H`` (J/mm), and
+    Graphical integration (n equal intervals h = 2π/n, nodes τ_i = i·h, and one more node
+    at each break of the resistance diagram, as a draftsman splits the interval where the
+    load jumps or kinks): on each interval the mean ordinate of the Mс diagram is taken at
+    its midpoint, ``y_M`` mm; the ray from the pole P at H mm left of the origin to its
+    projection on the ordinate axis has the slope y_M/H; the chord of the Aс diagram
+    parallel to it rises ``Δy_A = y_M·Δx/H`` mm over the interval of Δx mm (L/n for the
+    equal ones). So ``Aс = y_A·KA`` with ``KA = Kφ·KM·H`` (J/mm), and
     the node values are the midpoint rule, ``Aс_graph − Aс = −h²/24·(M'(φ) − M'(0)) + O(h⁴)``
-    where Mс is smooth: second order (first order across a jump of the resistance).
+    where Mс is smooth: second order (the breaks being nodes, also across them).
 
     Attributes
     ----------
@@ -334,7 +366,8 @@ def work_diagrams(obj: Analysis | DynamicModel, intervals: int = 24, *,
     length_mm, height_mm : float
         Abscissa L of one turn and the largest drawn span of the Mс and Aс diagrams, mm.
         ``KM = nice_ceil(span Mс/height)``; H is the pole distance that draws the span of
-        Aс ``height`` mm, rounded down to 5 mm (to 1 mm below 5 mm).
+        Aс and Aд together ``height`` mm, rounded down to 5 mm (to 1 mm below 5 mm); where
+        H would exceed :data:`MAX_POLE_MM`, KM is made coarser until it does not.
     reading_mm : float, optional
         Drafting precision to which the ordinates y_M and y_A are read; default exact.
 
@@ -359,11 +392,17 @@ def work_diagrams(obj: Analysis | DynamicModel, intervals: int = 24, *,
     n = intervals
     h = 2 * math.pi / n
     nodes = np.arange(n + 1) * h
-    M_mid = np.interp(nodes[:-1] + 0.5 * h, tau, M)
+    extra = [b for b in m.moment.breaks if np.min(np.abs(nodes - b)) > 1e-3 * h]
+    nodes = np.sort(np.concatenate((nodes, extra)))
+    widths = np.diff(nodes)
+    M_mid = np.interp(nodes[:-1] + 0.5 * widths, tau, M)
     Kphi = 2 * math.pi / length_mm
     KM = nice_ceil(float(np.ptp(np.append(M, 0.0))) / height_mm)
-    span_A = float(np.ptp(np.append(A_c, 0.0)))
+    span_A = float(np.ptp(np.concatenate((A_c, A_d, [0.0]))))  # Aс below, Aд above the axis
     ideal = span_A / (Kphi * KM * height_mm)
+    if ideal > MAX_POLE_MM:  # the pole would sit far left: a coarser KM brings it in
+        KM = nice_ceil(span_A / (Kphi * MAX_POLE_MM * height_mm))
+        ideal = span_A / (Kphi * KM * height_mm)
     step = 5.0 if ideal >= 5.0 else 1.0
     H = math.floor(ideal / step + 1e-9) * step
     if not H >= 1.0:
@@ -375,7 +414,7 @@ def work_diagrams(obj: Analysis | DynamicModel, intervals: int = 24, *,
         return x if reading_mm is None else np.round(x / reading_mm) * reading_mm
 
     yM = read(M_mid / KM)
-    yA = read(np.concatenate(([0.0], np.cumsum(yM * (length_mm / n) / H))))
+    yA = read(np.concatenate(([0.0], np.cumsum(yM * (widths / Kphi) / H))))
     A_c_graph = yA * KA
     M_d_graph = -A_c_graph[-1] / (2 * math.pi)
     A_d_graph = M_d_graph * nodes
@@ -469,7 +508,10 @@ class Flywheel:
     J_I : float
         The constant reduced inertia needed (Wittenbauer), kg·m².
     I_const : float
-        What the crank already has, kg·m²; ``I_m = max(J_I − I_const, 0)``.
+        What the crank already has, kg·m² (its link and ``dynamics.crank_inertia``).
+    I_rotor : float
+        The motor's rotor reduced to the crank, ``J_рот·u²``, kg·m² (0 when not counted);
+        ``I_m = max(J_I − I_const − I_rotor, 0)``.
     I_m, I_m_approx, I_m_crude, I_m_graph : float
         The flywheel by Wittenbauer (exact ΔT), by Merkalov (T_I = ΔT − I_var·ω²/2), by
         the crude ``dT_max/(ω²δ) − mean Iп``, and by Wittenbauer on the graphical ΔT
@@ -507,6 +549,13 @@ class Flywheel:
     difference_pct: float
     size: FlywheelSize
     work: WorkDiagrams
+    I_rotor: float = 0.0
+
+    @property
+    def tangents_flat(self) -> bool:
+        """ψ below 20°: the tangents are nearly parallel and meet far away; the flywheel is
+        read from their intercepts k, l on the ΔT axis (method D.3)."""
+        return self.psi_max < 20.0
 
 
 def _wittenbauer(dT: Array, I_var: Array, w: float, delta: float) -> tuple[float, float, int, int]:
@@ -520,7 +569,8 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
              intervals: int = 24, width_mm: float = 100.0, KI: float | None = None,
              shape: str = "rim",
              ratio: float = 1.0, b_ratio: float = 0.2, h_ratio: float = 0.1,
-             density: float = STEEL) -> Flywheel:
+             density: float = STEEL, I_rotor: float = 0.0, length_mm: float = 240.0,
+             height_mm: float = 60.0) -> Flywheel:
     """The flywheel moment of inertia for the non-uniformity δ (method B.4.7–10).
 
     Parameters
@@ -536,6 +586,11 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
         The scale of I_var instead (kg·m²/mm), e.g. chosen so that ψ lies in 20…70° (D.3).
     shape, ratio, b_ratio, h_ratio, density
         Of :func:`flywheel_size` (u = ``ratio``: the flywheel on a shaft u times faster).
+    I_rotor : float
+        Rotating masses of the drive reduced to the crank (the motor's rotor ``J_рот·u²``),
+        kg·m²: part of the constant inertia, so the flywheel needs that much less.
+    length_mm, height_mm : float
+        Size of the work diagrams (:func:`work_diagrams`); they fix KA = KT.
 
     Raises
     ------
@@ -553,7 +608,7 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
         raise InputError(f"{m.source}: dynamics.delta must be in (0, 1) (got {delta!r})")
     if not (math.isfinite(width_mm) and width_mm > 0):
         raise InputError(f"flywheel: width_mm must be positive (got {width_mm!r})")
-    wd = work_diagrams(m, intervals)
+    wd = work_diagrams(m, intervals, length_mm=length_mm, height_mm=height_mm)
     w = m.omega1
     I_var, I_const = m.inertia.I_var, m.inertia.I_const
     dT = wd.dT
@@ -574,8 +629,11 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
         raise InputError(f"flywheel: KI must be positive (got {KI!r})")
     tmax = KI / (2 * KT) * w * w * (1 + delta)
     tmin = KI / (2 * KT) * w * w * (1 - delta)
-    I_m = max(J_I - I_const, 0.0)
-    I_approx = max(J_approx - I_const, 0.0)
+    if not (math.isfinite(I_rotor) and I_rotor >= 0):
+        raise InputError(f"flywheel: I_rotor must be ≥ 0 (got {I_rotor!r})")
+    I_have = I_const + I_rotor
+    I_m = max(J_I - I_have, 0.0)
+    I_approx = max(J_approx - I_have, 0.0)
     diff = (I_approx - I_m) / I_m * 100 if I_m > 0 else 0.0
     P_c = wd.M_d * w
     eta = m.efficiency or 1.0
@@ -583,9 +641,9 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
                    math.degrees(math.atan(tmax)), math.degrees(math.atan(tmin)), b_max, b_min,
                    b_max / KT, b_min / KT, (b_max - b_min) / KT,
                    (float(m.tau[i]), float(m.tau[j])), J_I, I_const, I_m, I_approx,
-                   max(crude, 0.0), max(J_graph - I_const, 0.0), diff,
+                   max(crude - I_rotor, 0.0), max(J_graph - I_have, 0.0), diff,
                    flywheel_size(I_m, w, shape=shape, ratio=ratio, b_ratio=b_ratio,
-                                 h_ratio=h_ratio, density=density), wd)
+                                 h_ratio=h_ratio, density=density), wd, float(I_rotor))
     _check_finite(m.source, out)
     return out
 

@@ -60,6 +60,7 @@ SECTIONS: dict[str, set[str] | None] = {
         "crank_inertia",
         "flywheel",
         "grid",
+        "intervals",
         "motor_series",
         "motor_speed",
     },
@@ -662,6 +663,32 @@ def _check_settings(r: _Reader, settings: dict) -> None:
         r.number(dyn["crank_inertia"], "dynamics.crank_inertia", nonneg=True)
     if "grid" in dyn:
         r.integer(dyn["grid"], "dynamics.grid", 12, 100000)
+    if "intervals" in dyn:
+        r.integer(dyn["intervals"], "dynamics.intervals", 4, 720)
+    if "motor_series" in dyn:
+        from .motor import series_names
+
+        s = r.string(dyn["motor_series"], "dynamics.motor_series")
+        if s.strip().upper() not in series_names():
+            raise r.fail("dynamics.motor_series", "expected a bundled motor series, one of "
+                         f"{', '.join(series_names())} (got {s!r})")
+    if "motor_speed" in dyn:
+        from .motor import SYNC_SPEEDS
+
+        speed = r.integer(dyn["motor_speed"], "dynamics.motor_speed", 1, 100000)
+        if speed not in SYNC_SPEEDS:
+            raise r.fail("dynamics.motor_speed", "expected a synchronous speed at 50 Hz, one "
+                         f"of {', '.join(map(str, SYNC_SPEEDS))} rpm (got {speed})")
+    if "flywheel" in dyn:
+        fw = r.table(dyn["flywheel"], "dynamics.flywheel")
+        r.keys(fw, "dynamics.flywheel", {"shape", "shaft", "b_ratio", "h_ratio", "density"})
+        if "shape" in fw:
+            r.string(fw["shape"], "dynamics.flywheel.shape", ("rim", "disc"))
+        if "shaft" in fw:
+            r.string(fw["shaft"], "dynamics.flywheel.shaft", ("crank", "motor"))
+        for key, hi in (("b_ratio", 1.0), ("h_ratio", 0.5), ("density", 30000.0)):
+            if key in fw:
+                r.number(fw[key], f"dynamics.flywheel.{key}", positive=True, hi=hi)
     drw = settings.get("drawing", {})
     for key in ("Kl", "Kv", "Ka", "Kp"):
         if key in drw:

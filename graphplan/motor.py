@@ -1,10 +1,12 @@
 """Choice of the electric motor and of the overall gear ratio (method guide, section B.5).
 
 The catalogues are CSV files in ``graphplan/data`` (``motors_air.csv`` for the AIR series,
-``motors_4a.csv`` for the 4A series), each with a comment header that names its source and
-what the source does not give. A cell the source leaves blank is ``None`` here: neither
-catalogue gives the rotor inertia, so :attr:`MotorChoice.J_reduced` is ``None`` until a
-catalogue with J_рот is added.
+``motors_4a.csv`` for the 4A series, ``motors_delphi.csv`` for Motive's Delphi series of
+IEC motors), each with a comment header that names its source and what the source does
+not give. A cell the source leaves blank is ``None`` here. Only the Delphi catalogue gives
+the rotor inertia J_рот, so it is the default series (:data:`DEFAULT_SERIES`); with AIR
+or 4A :attr:`MotorChoice.J_reduced` is ``None`` and the rotor is not counted in the
+flywheel (the report says so).
 
 The course rule:
 
@@ -28,6 +30,7 @@ from pathlib import Path
 from .errors import GraphplanError, InputError
 
 __all__ = [
+    "DEFAULT_SERIES",
     "DEFAULT_SYNC_RPM",
     "SYNC_SPEEDS",
     "Motor",
@@ -37,6 +40,7 @@ __all__ = [
     "choose_motor",
     "load_catalogue",
     "required_power",
+    "series_names",
 ]
 
 #: synchronous speeds at 50 Hz, rpm (2, 4, 6, 8 poles)
@@ -44,9 +48,13 @@ SYNC_SPEEDS = (3000, 1500, 1000, 750)
 #: synchronous speed used when none is given: 4 poles, the common choice of course projects
 DEFAULT_SYNC_RPM = 1500
 
-_FILES = {"AIR": "motors_air.csv", "4A": "motors_4a.csv"}
+_FILES = {"AIR": "motors_air.csv", "4A": "motors_4a.csv", "DELPHI": "motors_delphi.csv"}
 # spellings accepted for the series (Latin and Cyrillic, any case)
-_ALIASES = {"AIR": "AIR", "АИР": "AIR", "4A": "4A", "4А": "4A"}
+_ALIASES = {"AIR": "AIR", "АИР": "AIR", "4A": "4A", "4А": "4A", "DELPHI": "DELPHI",
+            "MOTIVE": "DELPHI", "MOTIVE DELPHI": "DELPHI"}
+#: the series used when the variant names none: the one bundled catalogue that gives the
+#: rotor inertia (and both torque ratios), so that J_рот·u² counts in the flywheel
+DEFAULT_SERIES = "DELPHI"
 
 _COLUMNS = (
     "type",
@@ -109,18 +117,25 @@ class MotorChoice:
     reserve: float  # P_ном/P_required − 1
     J_reduced: float | None  # J_рот·u², kg·m², None when the catalogue has no J_рот
     reason: str  # one line
+    series: str = ""  # the catalogue's series (AIR, 4A, …)
 
 
 def _series_key(series: str) -> str:
     key = _ALIASES.get(str(series).strip().upper())
     if key is None:
         raise MotorSelectionError(
-            f"unknown motor series {series!r}: expected one of AIR (АИР), 4A (4А)"
+            f"unknown motor series {series!r}: expected one of AIR (АИР), 4A (4А), "
+            "DELPHI (Motive Delphi)"
         )
     return key
 
 
-def catalogue_path(series: str = "AIR") -> Path:
+def series_names() -> tuple[str, ...]:
+    """Every accepted spelling of the bundled series (``dynamics.motor_series``)."""
+    return tuple(_ALIASES)
+
+
+def catalogue_path(series: str = DEFAULT_SERIES) -> Path:
     """The packaged CSV file of a series."""
     name = _FILES[_series_key(series)]
     return Path(str(resources.files("graphplan") / "data" / name))
@@ -165,7 +180,8 @@ def _parse_row(row: dict[str, str], where: str) -> Motor:
     )
 
 
-def load_catalogue(series: str = "AIR", *, path: str | Path | None = None) -> tuple[Motor, ...]:
+def load_catalogue(series: str = DEFAULT_SERIES, *,
+                   path: str | Path | None = None) -> tuple[Motor, ...]:
     """Read a motor catalogue (the packaged one of ``series``, or the CSV file at ``path``).
 
     Lines starting with ``#`` are comments; the first other line is the header. A bad row
@@ -224,7 +240,7 @@ def choose_motor(
     P_required: float,
     crank_rpm: float,
     *,
-    series: str = "AIR",
+    series: str = DEFAULT_SERIES,
     sync_rpm: int | None = None,
     catalogue: tuple[Motor, ...] | None = None,
 ) -> MotorChoice:
@@ -274,4 +290,5 @@ def choose_motor(
         reserve=reserve,
         J_reduced=J_reduced,
         reason=reason,
+        series="" if catalogue is not None else _series_key(series),
     )

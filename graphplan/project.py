@@ -10,6 +10,9 @@
 * ``forces.ru.md``, ``forces.en.md``, ``forces.csv`` — the force analysis in the layout of
   the seed: loads, what was neglected, moment equations, Kp, polygon segments, reactions,
   h21, Mур from the force plans and from Zhukovsky's lever (exact and drafted);
+* ``sheet3.svg``, ``dynamics.ru.md``, ``dynamics.en.md``, ``dynamics.csv`` — when the
+  variant gives ``dynamics.delta``: sheet 3 (work diagrams, energy–mass diagram,
+  flywheel, motor, the check by simulation) and its hand calculation;
 * ``analysis.json`` — the report of ``graphplan analyze --json``.
 
 Every file is written atomically; the variant file is never overwritten. With
@@ -52,10 +55,26 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
         "forces.ru.md": forces_markdown(analysis, "ru", prec),
         "forces.en.md": forces_markdown(analysis, "en", prec),
         "forces.csv": forces_csv(analysis, prec),
-        "analysis.json": json.dumps(analysis.to_json(), ensure_ascii=False, indent=1,
-                                    allow_nan=False) + "\n",
     }
+    report = analysis.to_json()
+    if "delta" in _dynamics_settings(analysis):  # sheet 3 needs δ
+        from .dynamics_sheet import dynamics_sheet
+        from .machine_unit import machine_unit
+        from .render.dynamics_tables import dynamics_csv, dynamics_markdown
+
+        unit = machine_unit(analysis)
+        out["sheet3.svg"] = render_svg(dynamics_sheet(analysis, lang=lang, unit=unit))
+        out["dynamics.ru.md"] = dynamics_markdown(unit, "ru")
+        out["dynamics.en.md"] = dynamics_markdown(unit, "en")
+        out["dynamics.csv"] = dynamics_csv(unit)
+    out["analysis.json"] = json.dumps(report, ensure_ascii=False, indent=1,
+                                      allow_nan=False) + "\n"
     return out
+
+
+def _dynamics_settings(analysis) -> dict:
+    """The variant's ``[dynamics]`` settings."""
+    return analysis.mech.settings.get("dynamics", {})
 
 
 def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,

@@ -113,8 +113,9 @@ def test_sheets_writes_the_sheet_tables_and_report(capsys, tmp_path):
     code, out, err = run(capsys, "sheets", "-o", str(tmp_path / "press"))
     assert code == 0 and err == ""
     names = sorted(p.name for p in (tmp_path / "press").iterdir())
-    assert names == ["analysis.json", "forces.csv", "forces.en.md", "forces.ru.md", "plans.csv",
-                     "plans.en.md", "plans.ru.md", "sheet1.svg", "sheet2.svg"]
+    assert names == ["analysis.json", "dynamics.csv", "dynamics.en.md", "dynamics.ru.md",
+                     "forces.csv", "forces.en.md", "forces.ru.md", "plans.csv",
+                     "plans.en.md", "plans.ru.md", "sheet1.svg", "sheet2.svg", "sheet3.svg"]
     svg = (tmp_path / "press" / "sheet1.svg").read_text(encoding="utf-8")
     assert 'width="841mm"' in svg and "План скоростей" in svg
     report = json.loads((tmp_path / "press" / "analysis.json").read_text(encoding="utf-8"))

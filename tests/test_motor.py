@@ -35,7 +35,10 @@ def test_catalogue_files_are_package_data():
 
 
 def test_series_spellings():
-    assert load_catalogue("АИР") == load_catalogue("air") == load_catalogue()
+    assert load_catalogue("АИР") == load_catalogue("air")
+    # the default is the one catalogue with the rotor inertia
+    assert load_catalogue() == load_catalogue("delphi") == load_catalogue("Motive")
+    assert all(m.inertia_kg_m2 for m in load_catalogue())
     assert load_catalogue("4А") == load_catalogue("4a")
     with pytest.raises(MotorSelectionError, match="unknown motor series"):
         load_catalogue("5AM")
@@ -128,7 +131,7 @@ def test_required_power_by_hand():
 
 def test_choose_motor_picks_the_smallest_sufficient():
     # AIR at 1500 rpm: АИР90L4 2.2 kW (1395 rpm) < 2.5 kW < АИР100S4 3.0 kW (1410 rpm)
-    choice = choose_motor(2500.0, 60.0)
+    choice = choose_motor(2500.0, 60.0, series="AIR")
     assert choice.motor.type == "АИР100S4"
     # u = n_ном/n1 = 1410/60 = 23.5; reserve = 3000/2500 − 1 = 0.2
     assert choice.u == pytest.approx(23.5)
@@ -138,13 +141,13 @@ def test_choose_motor_picks_the_smallest_sufficient():
     with pytest.raises(dataclasses.FrozenInstanceError):
         choice.u = 1.0  # type: ignore[misc]
     # exactly a catalogue power: that motor, zero reserve
-    exact = choose_motor(3000.0, 60.0)
+    exact = choose_motor(3000.0, 60.0, series="AIR")
     assert exact.motor.type == "АИР100S4" and exact.reserve == pytest.approx(0.0)
 
 
 def test_choose_motor_other_speed_and_series():
     # 1000 rpm: АИР100L6 2.2 kW < 2.5 kW < АИР112MA6 3.0 kW, 950 rpm; u = 950/50 = 19
-    choice = choose_motor(2500.0, 50.0, sync_rpm=1000)
+    choice = choose_motor(2500.0, 50.0, sync_rpm=1000, series="AIR")
     assert choice.motor.type == "АИР112MA6" and choice.u == pytest.approx(19.0)
     # the 4A source has no 1.1 kW motor at 1500 rpm: 1.0 kW gets 4А80B4 (1.5 kW, 1415 rpm)
     choice = choose_motor(1000.0, 100.0, series="4А")
@@ -160,7 +163,7 @@ def test_choose_motor_reduced_inertia_when_known():
 
 def test_choose_motor_errors():
     with pytest.raises(MotorSelectionError, match="no motor at 1500 rpm is large enough"):
-        choose_motor(31_000.0, 60.0)  # the largest AIR 4-pole motor is 30 kW
+        choose_motor(31_000.0, 60.0, series="AIR")  # the largest AIR 4-pole motor is 30 kW
     with pytest.raises(GraphplanError):
         choose_motor(1_000_000.0, 60.0, series="4A")
     with pytest.raises(MotorSelectionError, match="synchronous speed"):

@@ -1,0 +1,179 @@
+"""The machine unit (машинный агрегат): motor, drive and mechanism with its flywheel.
+
+Puts the steps of sheet 3 together in the order of the hand calculation (method B.4, B.5):
+
+1. Mс(φ), Iп(φ) reduced to the crank (:func:`graphplan.dynamics.dynamic_model`);
+2. Aс, Aд, ΔT by graphical integration and exactly; Mд from equal work over the cycle;
+3. the required power ``Pс = Mд·ω1/η`` and the motor, the smallest of its series at the
+   chosen synchronous speed with ``P_ном ≥ Pс`` (:mod:`graphplan.motor`); the gear ratio
+   ``u = n_ном/n1``;
+4. the flywheel by Wittenbauer's energy–mass diagram for δ, less the rotor's inertia
+   reduced to the crank ``J_рот·u²`` (when the catalogue gives J_рот), by Merkalov for
+   comparison; its rim or disc on the crank shaft or, ``u²`` times lighter, on the motor
+   shaft;
+5. the check by simulation: the steady ω(φ) of the crank with ``Iп + J_рот·u² + Iм``.
+
+Settings, ``[dynamics]`` of the variant: ``delta`` (required), ``efficiency`` (η, default
+1), ``crank_inertia``, ``grid``, ``intervals`` (of the graphical integration, default
+24), ``motor_series`` (default :data:`graphplan.motor.DEFAULT_SERIES`), ``motor_speed``
+(synchronous rpm, default 1500), ``flywheel = {shape = "rim"|"disc",
+shaft = "crank"|"motor", b_ratio, h_ratio, density}``.
+All quantities SI (N·m, J, W, kg·m², rad/s); moments positive in the crank's sense of
+rotation, as in :mod:`graphplan.dynamics`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .analysis import Analysis
+from .dynamics import (
+    STEEL,
+    DynamicModel,
+    Flywheel,
+    FlywheelSize,
+    Simulation,
+    dynamic_model,
+    flywheel,
+    flywheel_size,
+    simulate,
+)
+from .errors import InputError
+from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
+from .sheet import Page
+
+DIAGRAM_LENGTH = 288.0  #: abscissa L of the work diagrams on an A1 sheet 3, mm (48 × 6)
+DIAGRAM_HEIGHT = 120.0  #: drawn span of Mс and of Aс with Aд on A1, mm (fixes KM, H, KA)
+
+
+def diagram_size(page: Page) -> dict[str, float]:
+    """L and the height of the work diagrams for the page: A1's in proportion to the
+    frame's width, L a multiple of 48 mm (whole-mm intervals for 24 and 48 of them)."""
+    k = min(1.0, page.frame.width / 816.0)
+    return {"length_mm": 48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k),
+            "height_mm": float(math.floor(DIAGRAM_HEIGHT * k))}
+
+
+@dataclass(frozen=True, slots=True)
+class MachineUnit:
+    """Sheet 3's results: the model, the flywheel, the motor, the mounted flywheel and the
+    simulation that checks them.
+
+    Attributes
+    ----------
+    model : DynamicModel
+    flywheel : Flywheel
+        On the crank shaft (``I_m``), the rotor already counted (``flywheel.I_rotor``).
+    motor : MotorChoice
+    power_W : float
+        Required power Pс = Mд·ω1/η, W.
+    efficiency : float
+        η of the drive (``dynamics.efficiency``, default 1).
+    mounted : FlywheelSize
+        The flywheel's rim or disc on the shaft it is mounted on (``shaft``).
+    shaft : str
+        ``"crank"`` or ``"motor"``.
+    simulation : Simulation
+        Of ``Iп + I_rotor + I_m`` with constant Mд (energy form) and, in RK4, the motor's
+        linear characteristic of its rated slip.
+    """
+
+    model: DynamicModel
+    flywheel: Flywheel
+    motor: MotorChoice
+    power_W: float
+    mounted: FlywheelSize
+    shaft: str
+    simulation: Simulation
+    efficiency: float = 1.0
+
+    @property
+    def delta_error_pct(self) -> float:
+        """(δ simulated − δ target)/δ target·100."""
+        return (self.simulation.delta_actual / self.flywheel.delta - 1.0) * 100.0
+
+    def to_json(self) -> dict:
+        """The ``"dynamics"`` entry of the JSON report (SI units)."""
+        fw, mc, mo = self.flywheel, self.motor, self.motor.motor
+        return {
+            "delta_target": fw.delta,
+            "delta_simulated": self.simulation.delta_actual,
+            "delta_simulated_motor": float(self.simulation.cycle_delta[-1]),
+            "I_flywheel": fw.I_m,
+            "I_flywheel_approx": fw.I_m_approx,
+            "I_flywheel_graphical": fw.I_m_graph,
+            "I_rotor_reduced": fw.I_rotor,
+            "I_const": fw.I_const,
+            "J_I": fw.J_I,
+            "dT_max": fw.dT_max,
+            "M_drive": fw.M_d,
+            "M_drive_graphical": fw.work.M_d_graph,
+            "work_graphical_error": fw.work.error,
+            "power_W": self.power_W,
+            "omega1": fw.omega,
+            "scales": {"Kphi": fw.work.Kphi, "KM": fw.work.KM, "H_mm": fw.work.H,
+                       "KA": fw.work.KA, "KT": fw.KT, "KI": fw.KI},
+            "tangents": {"psi_max_deg": fw.psi_max, "psi_min_deg": fw.psi_min,
+                         "k_mm": fw.k_mm, "l_mm": fw.l_mm, "kl_mm": fw.segment_mm,
+                         "flat": fw.tangents_flat},
+            "motor": {
+                "type": mo.type, "series": mc.series,
+                "power_W": mo.power_w, "sync_rpm": mo.sync_rpm, "rated_rpm": mo.rated_rpm,
+                "start_torque_ratio": mo.start_torque_ratio,
+                "max_torque_ratio": mo.max_torque_ratio,
+                "rotor_inertia": mo.inertia_kg_m2, "reserve": mc.reserve,
+            },
+            "gear_ratio": mc.u,
+            "flywheel": {"shaft": self.shaft, "shape": self.mounted.shape,
+                         "inertia": self.mounted.inertia, "D": self.mounted.D,
+                         "b": self.mounted.b, "h": self.mounted.h,
+                         "mass": self.mounted.mass, "rim_speed": self.mounted.speed,
+                         "rim_speed_ok": self.mounted.speed_ok},
+        }
+
+
+def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> MachineUnit:
+    """Motor, gear ratio, flywheel and its check for the variant of ``analysis``.
+
+    Raises
+    ------
+    InputError
+        ``dynamics.delta`` missing (from :func:`graphplan.dynamics.flywheel`).
+    MotorSelectionError
+        No motor of the series at that speed is large enough.
+    DynamicsError
+        The resistance does no work, or the motion is impossible.
+    """
+    mech = analysis.mech
+    dyn = mech.settings.get("dynamics", {})
+    m = model or dynamic_model(analysis)
+    if m.delta is None:
+        raise InputError(f"{mech.source}: dynamics.delta is missing (the coefficient of speed "
+                         "non-uniformity δ, e.g. delta = 0.1): sheet 3 needs it")
+    opts = dyn.get("flywheel", {})
+    intervals = int(dyn.get("intervals", 24))
+    size = diagram_size(Page("A1"))  # sheet 3 is A1 whatever the format of sheets 1, 2
+    first = flywheel(m, intervals=intervals, **size)  # Mд does not depend on the flywheel
+    eta = float(dyn.get("efficiency", 1.0))
+    power = required_power(first.M_d, m.omega1, eta)
+    n1 = m.omega1 * 30.0 / math.pi
+    choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
+                          sync_rpm=dyn.get("motor_speed"))
+    I_rotor = choice.J_reduced or 0.0
+    shaft = str(opts.get("shaft", "crank"))
+    shape = str(opts.get("shape", "rim"))
+    b_ratio = float(opts.get("b_ratio", 0.2))
+    h_ratio = float(opts.get("h_ratio", 0.1))
+    density = float(opts.get("density", STEEL))
+    fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
+                  density=density, I_rotor=I_rotor, **size)
+    u = choice.u if shaft == "motor" else 1.0
+    mounted = flywheel_size(fw.I_m, m.omega1, shape=shape, ratio=u, b_ratio=b_ratio,
+                            h_ratio=h_ratio, density=density)
+    slip = 1.0 - choice.motor.rated_rpm / choice.motor.sync_rpm
+    sim = simulate(m, fw.I_m + I_rotor, slip=slip if slip > 0 else None, delta=fw.delta)
+    return MachineUnit(m, fw, choice, power, mounted, shaft, sim, eta)
+
+
+__all__ = ["MachineUnit", "machine_unit"]

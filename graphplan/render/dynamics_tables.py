@@ -1,0 +1,163 @@
+"""The dynamics as a hand calculation (``dynamics.ru.md``, ``dynamics.en.md``) and as CSV.
+
+The report follows sheet 3 line by line: the data, Mс and Iп at the positions, the
+graphical integration (Kφ, KM, the pole H, KA; the mean ordinate of every interval and
+the chords' nodes in mm), Mд, ΔT, the energy–mass diagram (KI, KT, tan ψ, the
+intercepts k and l, kl), J_I and the flywheel, the motor and the gear ratio, the rim, and
+the check by simulation. Every formula is written with its numbers, as a student writes
+it and a teacher checks it.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+
+import numpy as np
+
+from ..machine_unit import MachineUnit
+from ..units import fmt
+
+T = {
+    "ru": {"title": "Динамический анализ машинного агрегата", "data": "Исходные данные",
+           "pos": "Значения в положениях", "int": "Графическое интегрирование Mс (метод хорд)",
+           "fly": "Маховик по диаграмме энергомасс (Виттенбауэр)", "motor": "Двигатель",
+           "rim": "Размеры маховика", "check": "Проверка моделированием",
+           "cols": ("Пол.", "φ, °", "Mс, Н·м", "Iп, кг·м²", "Aс, Дж", "Aд, Дж", "ΔT, Дж"),
+           "icols": ("Интервал", "φ от, °", "φ до, °", "Mс ср, Н·м", "yM, мм", "yA в конце, мм"),
+           "none": "нет в каталоге", "flat": "ψ < 20°: по отрезкам на оси ΔT, метод D.3",
+           "sign": "φ — поворот кривошипа от первого положения по направлению вращения; "
+                   "моменты положительны по направлению вращения (Mс < 0 — сопротивление)"},
+    "en": {"title": "Dynamics of the machine unit", "data": "Data",
+           "pos": "Values at the positions", "int": "Graphical integration of Mс (chords)",
+           "fly": "Flywheel by the energy–mass diagram (Wittenbauer)", "motor": "Motor",
+           "rim": "Flywheel dimensions", "check": "Check by simulation",
+           "cols": ("Pos.", "φ, °", "Mс, N·m", "Iп, kg·m²", "Aс, J", "Aд, J", "ΔT, J"),
+           "icols": ("Interval", "φ from, °", "φ to, °", "mean Mс, N·m", "yM, mm",
+                     "yA at the end, mm"),
+           "none": "not in the catalogue", "flat": "ψ < 20°: from the intercepts, method D.3",
+           "sign": "φ is the crank's travel from the first position in its sense of rotation; "
+                   "moments are positive in the sense of rotation (Mс < 0 resists)"},
+}
+
+
+def _table(header, rows) -> list[str]:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return out
+
+
+def position_rows(u: MachineUnit) -> list[list[str]]:
+    """Per position: label, φ (absolute, °), Mс, Iп, Aс, Aд, ΔT; round-off next to the
+    largest value written as 0."""
+    m, wd = u.model, u.flywheel.work
+    big_m, big_a = float(np.max(np.abs(m.moment.M))), float(np.max(np.abs(wd.A_c)))
+
+    def v(x, big):
+        return "0" if abs(x) < 1e-9 * big else fmt(x, 5)
+
+    rows = []
+    for k, lab in enumerate(m.moment.labels):
+        t = float(m.moment.pos_tau[k])
+        phi = math.degrees(m.moment.phi[0] + m.moment.sense * t) % 360.0
+        rows.append([lab, f"{phi:.1f}", v(float(m.moment.pos_M[k]), big_m),
+                     fmt(float(m.pos_inertia.I_red[k]), 5),
+                     v(float(np.interp(t, wd.tau, wd.A_c)), big_a),
+                     v(float(np.interp(t, wd.tau, wd.A_d)), big_a),
+                     v(float(np.interp(t, wd.tau, wd.dT)), big_a)])
+    return rows
+
+
+def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
+    """The hand calculation of sheet 3 (see the module docstring)."""
+    t = T[lang]
+    ru = lang == "ru"
+    fw, wd, mc, mo, s = u.flywheel, u.flywheel.work, u.motor, u.motor.motor, u.simulation
+    w = fw.omega
+    J, Nm, mm = ("Дж", "Н·м", "мм") if ru else ("J", "N·m", "mm")
+    graph_pct = (fw.I_m_graph / fw.I_m - 1) * 100 if fw.I_m else 0.0
+    shaft = {("crank", True): "на валу кривошипа", ("motor", True): "на валу двигателя",
+             ("crank", False): "on the crank shaft", ("motor", False): "on the motor shaft"}
+    L = [f"# {t['title']}", "", f"## {t['data']}", "",
+         f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(mc.crank_rpm, 5)} "
+         f"{'об/мин' if ru else 'rpm'}; δ = {fw.delta:g}; η = "
+         f"{u.efficiency:g}",
+         f"- Iкр = {fmt(fw.I_const, 4)} кг·м²",
+         f"- {t['sign']}",
+         "", f"## {t['pos']}", ""]
+    L += _table(t["cols"], position_rows(u))
+    L += ["", f"## {t['int']}", "",
+          f"- Kφ = 2π/L = 2π/{fmt(wd.length_mm)} = {fmt(wd.Kphi, 5)} рад/{mm}",
+          f"- KM = {fmt(wd.KM, 4)} {Nm}/{mm}; H = {fmt(wd.H)} {mm}",
+          f"- KA = Kφ·KM·H = {fmt(wd.Kphi, 5)}·{fmt(wd.KM, 4)}·{fmt(wd.H)} = "
+          f"{fmt(wd.KA, 5)} {J}/{mm}",
+          "- yA(i+1) = yA(i) + yM(i)·Δx(i)/H", ""]
+    rows = []
+    for i in range(wd.intervals):
+        a, b = wd.node_tau[i], wd.node_tau[i + 1]
+        rows.append([str(i + 1), f"{math.degrees(a):.2f}", f"{math.degrees(b):.2f}",
+                     fmt(float(wd.M_mid[i]), 5), f"{wd.yM_mm[i]:.2f}", f"{wd.yA_mm[i + 1]:.2f}"])
+    L += _table(t["icols"], rows)
+    L += ["",
+          f"- Aс(2π) = yA·KA = {wd.yA_mm[-1]:.2f}·{fmt(wd.KA, 5)} = "
+          f"{fmt(float(wd.A_c_graph[-1]), 6)} {J} "
+          f"({'точно' if ru else 'exact'} {fmt(float(wd.A_c[-1]), 6)}, "
+          f"{'погрешность' if ru else 'error'} {wd.error * 100:.2f} %)",
+          f"- Mд = −Aс(2π)/2π = {fmt(wd.M_d_graph, 6)} {Nm} "
+          f"({'точно' if ru else 'exact'} {fmt(fw.M_d, 6)})",
+          f"- ΔT = Aд + Aс; ΔTmax − ΔTmin = {fmt(fw.dT_max, 6)} {J}", "",
+          f"## {t['fly']}", "",
+          f"- KI = {fmt(fw.KI, 4)} кг·м²/{mm}, KT = KA = {fmt(fw.KT, 5)} {J}/{mm}",
+          f"- tg ψmax = KI/(2·KT)·ω²·(1 + δ) = {fmt(fw.KI, 4)}/(2·{fmt(fw.KT, 5)})·"
+          f"{fmt(w, 5)}²·{1 + fw.delta:g} = {fw.tan_max:.5f}, ψmax = {fw.psi_max:.3f}°",
+          f"- tg ψmin = KI/(2·KT)·ω²·(1 − δ) = {fw.tan_min:.5f}, ψmin = {fw.psi_min:.3f}°",
+          f"- k = {fw.k_mm:.2f} {mm}, l = {fw.l_mm:.2f} {mm}, kl = {fw.segment_mm:.2f} {mm}"
+          + (f" ({t['flat']})" if fw.tangents_flat else ""),
+          f"- JI = kl·KT/(ω²·δ) = {fw.segment_mm:.2f}·{fmt(fw.KT, 5)}/({fmt(w, 5)}²·"
+          f"{fw.delta:g}) = {fmt(fw.J_I, 6)} кг·м²",
+          f"- Iм = JI − Iкр − Iрот·u² = {fmt(fw.J_I, 6)} − {fmt(fw.I_const, 4)} − "
+          f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m, 6)} кг·м²",
+          f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} кг·м² "
+          f"({fw.difference_pct:+.3f} %); "
+          f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
+          f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)",
+          "", f"## {t['motor']}", "",
+          f"- Pс = |Mд|·ω1/η = {fmt(fw.M_d, 6)}·{fmt(w, 5)}/{u.efficiency:g} = "
+          f"{fmt(u.power_W, 6)} {'Вт' if ru else 'W'}",
+          f"- {mc.reason}",
+          f"- J_рот = {fmt(mo.inertia_kg_m2, 4) if mo.inertia_kg_m2 is not None else t['none']}"
+          + (f", J_рот·u² = {fmt(fw.I_rotor, 5)} кг·м²" if mo.inertia_kg_m2 is not None else ""),
+          "", f"## {t['rim']}", ""]
+    m = u.mounted
+    L += [f"- {m.shape}, {shaft[u.shaft, ru]}: I = {fmt(m.inertia, 5)} кг·м², "
+          f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
+          f"{fmt(m.b * 1000, 4)} {mm}, h = {fmt(m.h * 1000, 4)} {mm}, m = {fmt(m.mass, 4)} "
+          f"{'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
+          + ("" if m.speed_ok else " (> 40 м/с!)"),
+          "", f"## {t['check']}", "",
+          f"- ω(φ) = √(2(T0 + ΔT)/(Iп + Iрот + Iм)): ωmax = {fmt(s.omega_max, 5)}, "
+          f"ωmin = {fmt(s.omega_min, 5)}, δ = (ωmax − ωmin)/ωср = {s.delta_actual:.5f} "
+          f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})",
+          f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
+          f"(s = {mo.slip:.3f}): δ = {float(s.cycle_delta[-1]):.5f}", ""]
+    return "\n".join(L)
+
+
+def dynamics_csv(u: MachineUnit) -> str:
+    """One row per position: φ, Mс, Iп, Aс, Aд, ΔT (SI)."""
+    buf = io.StringIO()
+    wr = csv.writer(buf, lineterminator="\n")
+    wr.writerow(["position", "travel_deg", "M_c_Nm", "I_red_kgm2", "A_c_J", "A_d_J", "dT_J"])
+    m, wd = u.model, u.flywheel.work
+    for k, lab in enumerate(m.moment.labels):
+        t = float(m.moment.pos_tau[k])
+        wr.writerow([lab, f"{math.degrees(t):.6f}", f"{float(m.moment.pos_M[k]):.9g}",
+                     f"{float(m.pos_inertia.I_red[k]):.9g}",
+                     f"{float(np.interp(t, wd.tau, wd.A_c)):.9g}",
+                     f"{float(np.interp(t, wd.tau, wd.A_d)):.9g}",
+                     f"{float(np.interp(t, wd.tau, wd.dT)):.9g}"])
+    return buf.getvalue()
+
+
+__all__ = ["dynamics_csv", "dynamics_markdown", "position_rows"]
