@@ -25,13 +25,14 @@ class Analysis:
     cycle: Cycle
     kin: Kinematics
 
-    def to_json(self) -> dict:
+    def to_json(self, unit=None) -> dict:
         """The JSON report of ``graphplan analyze --json``.
 
         Keys are a promise to users' scripts: SI units, angles in degrees,
         angular quantities counter-clockwise positive, the variant's own frame; in
         ``"dynamics"`` (when the variant gives ``dynamics.delta``) moments are positive in
-        the crank's sense of rotation (:mod:`graphplan.dynamics`).
+        the crank's sense of rotation (:mod:`graphplan.dynamics`). ``unit``: the
+        :class:`~graphplan.machine_unit.MachineUnit` when the caller has it already.
         """
         m, st, cy = self.mech, self.structure, self.cycle
         moving = m.moving_links
@@ -88,7 +89,7 @@ class Analysis:
         if "delta" in self.mech.settings.get("dynamics", {}):
             from .machine_unit import machine_unit
 
-            out["dynamics"] = machine_unit(self).to_json()
+            out["dynamics"] = (unit or machine_unit(self)).to_json()
         return out
 
     def _add_forces(self, positions: list[dict], sc) -> None:

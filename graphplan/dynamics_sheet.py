@@ -18,7 +18,7 @@ import math
 
 from .errors import LayoutError
 from .kinematics_sheet import title_block
-from .layout import CAPTION, GAP, fit_columns
+from .layout import CAPTION, GAP, titled_table
 from .machine_unit import MachineUnit, machine_unit
 from .render.dynamics_tables import T as TABLE_WORDS
 from .render.dynamics_tables import position_rows
@@ -37,20 +37,16 @@ from .sheet import (
     Sheet,
     Style,
     Text,
-    table_items,
 )
 from .units import fmt
 
 WORDS = {
-    "ru": {"sheet": "Динамический анализ", "omega": "Проверка маховика", "flywheel":
-           "Маховик", "rim": "обод", "disc": "диск", "crank": "на валу кривошипа", "motor":
-           "на валу двигателя", "results": "Результаты", "table": "Значения в положениях",
-           "cols": ("Пол.", "φ, °", "Mс, Н·м", "Aс, Дж", "Aд, Дж", "ΔT, Дж", "Iп, кг·м²"),
+    "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",
+           "disc": "диск", "results": "Результаты", "table": "Значения в положениях",
            "mass": "масса", "speed": "окружная скорость"},
-    "en": {"sheet": "Dynamics", "omega": "Flywheel check", "flywheel": "Flywheel", "rim":
-           "rim", "disc": "disc", "crank": "on the crank shaft", "motor": "on the motor shaft",
-           "results": "Results", "table": "Values at the positions",
-           "mass": "mass", "speed": "rim speed"},
+    "en": {"sheet": "Dynamics", "flywheel": "Flywheel", "rim": "rim", "disc": "disc",
+           "results": "Results", "table": "Values at the positions", "mass": "mass",
+           "speed": "rim speed"},
 }
 RESULT_H = 3.5  #: lettering of the results, mm
 RIGHT_MIN = 135.0  #: narrowest right column (ω(φ), the flywheel, the results), mm
@@ -90,7 +86,8 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     w = WORDS[lang]
     s = u.mounted
     items: list[Item] = []
-    title = (f"{w['flywheel']} ({w[s.shape]}, {w[u.shaft]}), {w['mass']} {fmt(s.mass, 4)} "
+    shaft = TABLE_WORDS[lang]["shaft_" + u.shaft]
+    title = (f"{w['flywheel']} ({w[s.shape]}, {shaft}), {w['mass']} {fmt(s.mass, 4)} "
              f"{'кг' if lang == 'ru' else 'kg'}")
     items.append(Text((box.x0, box.y0 + 5.0), title, 3.5, layer="text", id="s3-fw-title"))
     outer = s.D + (s.h if s.shape == "rim" else 0.0)
@@ -218,12 +215,12 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
                           layer="text", id=f"s3-result-{i}"))
     # the table of values under the diagrams, left of the title block
     ty = y0 + max(h1, h2) + GAP
-    fit = fit_columns(list(TABLE_WORDS[lang]["cols"]), position_rows(u),
-                      page.title_block_rect.x0 - GAP - x0)
-    if ty + CAPTION + 7.0 * (len(fit.rows) + 1) <= f.y1 - 4.0:
-        items.append(Text((x0, ty + 5.0), w["table"], 5.0, layer="text", id="s3-table-title"))
-        items += table_items((x0, ty + CAPTION), fit.widths, fit.rows, fit.header, 3.5,
-                             id="s3-table")
+    rows = position_rows(u)
+    if ty + CAPTION + 7.0 * (len(rows) + 1) <= f.y1 - 4.0:
+        items += titled_table(
+            x0, ty, page.title_block_rect.x0 - GAP - x0, w["table"],
+            list(TABLE_WORDS[lang]["cols"]), rows, ident="s3-table", title_id="s3-table-title",
+            notes=lambda n, m: [f" ({n}/{m}, dynamics.{lang}.md)"])
     return Sheet(page, tuple(items), title_block(mech, lang, 3, w["sheet"]))
 
 

@@ -19,7 +19,7 @@ from shapely.geometry import Polygon
 from .constructions import Plan, Reader, acceleration_plan, velocity_plan
 from .cycle import output_coordinate
 from .labels import LabelRequest, place_labels
-from .layout import CAPTION
+from .layout import CAPTION, titled_table
 from .scales import PLAN_MARGIN, Sheet1Scales, sheet_scales
 from .sheet import (
     DASHDOT,
@@ -46,7 +46,6 @@ from .sheet import (
     item_geometry,
     iter_leaves,
     signatures,
-    table_items,
     text_at_centre,
     text_box,
 )
@@ -471,46 +470,15 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     """The table of the plans (main values of every position) in the bottom strip."""
     from .render.plan_tables import summary_rows
 
+    def notes(n, m):
+        if lang == "ru":
+            return [f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)"]
+        return [f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)"]
+
     header, rows = summary_rows(analysis, lang)
     r = sc.layout.table
-    avail = r.width
-    from .sheet import text_width
-
-    widths = []
-    for j in range(len(header)):
-        cells = [str(header[j])] + [str(row[j]) for row in rows]
-        widths.append(max(text_width(Text((0, 0), c, 3.5, layer="tables")) for c in cells
-                          if c.strip()) + 3.0)
-    total = sum(widths)
-    shown_of = None
-    if total > avail:  # keep the columns that fit, and say so under the title
-        keep = []
-        acc = 0.0
-        for j, wd in enumerate(widths):
-            if acc + wd <= avail:
-                keep.append(j)
-                acc += wd
-        shown_of = (len(keep), len(header))
-        header = [header[j] for j in keep]
-        rows = [[row[j] for j in keep] for row in rows]
-        widths = [widths[j] for j in keep]
-    title, height = WORDS[lang]["table"], 5.0
-    if shown_of:
-        n, m = shown_of
-        notes = ((f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)")
-                 if lang == "ru" else
-                 (f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)"))
-        for note in notes:
-            for h in (3.5, 2.5):
-                if text_width(Text((0, 0), title + note, h, layer="text")) <= r.width:
-                    title, height = title + note, h
-                    break
-            if height < 5.0:
-                break
-    items: list[Item] = [Text((r.x0, r.y0 + 5.0), title, height, layer="text",
-                              id="table-title")]
-    items += table_items((r.x0, r.y0 + CAPTION), widths, rows, header, 3.5, id="plans-table")
-    return items
+    return titled_table(r.x0, r.y0, r.width, WORDS[lang]["table"], header, rows,
+                        ident="plans-table", title_id="table-title", notes=notes)
 
 
 def diagram_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:

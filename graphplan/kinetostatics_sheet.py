@@ -39,7 +39,7 @@ from .kinematics_sheet import (
 )
 from .kinetostatics import solve_forces
 from .labels import LabelRequest, place_labels
-from .layout import CAPTION, GAP, SHEET2_STRIP, fit_columns
+from .layout import CAPTION, GAP, SHEET2_STRIP, titled_table
 from .scales import sheet2_positions, sheet2_scales, sheet_scales
 from .sheet import (
     MAIN,
@@ -54,10 +54,8 @@ from .sheet import (
     Rect,
     Sheet,
     Style,
-    Text,
     arc_point,
     item_geometry,
-    table_items,
     text_at_centre,
 )
 from .units import Scale, fmt, nice_ceil
@@ -222,19 +220,13 @@ def table_header(forces, lang: str) -> list[str]:
 
 def _table_items(forces, summary, box: Rect, lang: str) -> list[Item]:
     """The table under its title; a table too wide loses its last columns and says so."""
-    w = WORDS[lang]
-    fit = fit_columns(table_header(forces, lang), summary, box.width)
-    title, height = w["table"], 5.0
-    if fit.shown < fit.total:
-        title += (f" (столбцов {fit.shown} из {fit.total}; полностью — forces.ru.md)"
-                  if lang == "ru" else
-                  f" ({fit.shown} of {fit.total} columns; all in forces.en.md)")
-        height = 3.5
-    items: list[Item] = [Text((box.x0, box.y0 + 5.0), title, height, layer="text",
-                              id="s2-table-title")]
-    items += table_items((box.x0, box.y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5,
-                         id="s2-table")
-    return items
+    def notes(shown, total):
+        return ([f" (столбцов {shown} из {total}; полностью — forces.ru.md)"] if lang == "ru"
+                else [f" ({shown} of {total} columns; all in forces.en.md)"])
+
+    return titled_table(box.x0, box.y0, box.width, WORDS[lang]["table"],
+                        table_header(forces, lang), summary, ident="s2-table",
+                        title_id="s2-table-title", notes=notes)
 
 
 def _moment(m: float, scale: float) -> str:

@@ -168,3 +168,27 @@ def sheet2_cells(page: Page, n_groups: int, n_rows: int) -> tuple[tuple[Rect, ..
 def plan_room(cell: Rect) -> float:
     """The largest extent (diameter) of a plan that fits ``cell`` with its letters, mm."""
     return min(cell.width, cell.height - CAPTION) - 2 * LABEL_ROOM
+
+
+def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *,
+                 ident: str, title_id: str, notes=None) -> list:
+    """A table under its title at (x0, y0), cut to ``width`` by :func:`fit_columns`.
+
+    When columns were left out, ``notes(shown, total)`` gives the remarks to append to the
+    title, longest first; the first that fits the width at 3.5 or 2.5 mm is used.
+    """
+    from .sheet import Text, table_items, text_width
+
+    fit = fit_columns(header, rows, width)
+    text, height = title, 5.0
+    if fit.shown < fit.total and notes is not None:
+        for note in notes(fit.shown, fit.total):
+            for h in (3.5, 2.5):
+                if text_width(Text((0, 0), title + note, h, layer="text")) <= width:
+                    text, height = title + note, h
+                    break
+            if height < 5.0:
+                break
+    items = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
+    items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5, id=ident)
+    return items

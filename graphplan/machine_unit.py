@@ -38,6 +38,7 @@ from .dynamics import (
     flywheel,
     flywheel_size,
     simulate,
+    work_diagrams,
 )
 from .errors import InputError
 from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
@@ -154,9 +155,9 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
     opts = dyn.get("flywheel", {})
     intervals = int(dyn.get("intervals", 24))
     size = diagram_size(Page("A1"))  # sheet 3 is A1 whatever the format of sheets 1, 2
-    first = flywheel(m, intervals=intervals, **size)  # Mд does not depend on the flywheel
     eta = float(dyn.get("efficiency", 1.0))
-    power = required_power(first.M_d, m.omega1, eta)
+    # Mд = −Aс(2π)/2π does not depend on the flywheel: the motor is chosen before it
+    power = required_power(work_diagrams(m, intervals, **size).M_d, m.omega1, eta)
     n1 = m.omega1 * 30.0 / math.pi
     choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
                           sync_rpm=dyn.get("motor_speed"))

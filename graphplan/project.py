@@ -56,8 +56,8 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
         "forces.en.md": forces_markdown(analysis, "en", prec),
         "forces.csv": forces_csv(analysis, prec),
     }
-    report = analysis.to_json()
-    if "delta" in _dynamics_settings(analysis):  # sheet 3 needs δ
+    unit = None
+    if "delta" in analysis.mech.settings.get("dynamics", {}):  # sheet 3 needs δ
         from .dynamics_sheet import dynamics_sheet
         from .machine_unit import machine_unit
         from .render.dynamics_tables import dynamics_csv, dynamics_markdown
@@ -67,16 +67,9 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
         out["dynamics.ru.md"] = dynamics_markdown(unit, "ru")
         out["dynamics.en.md"] = dynamics_markdown(unit, "en")
         out["dynamics.csv"] = dynamics_csv(unit)
-    out["analysis.json"] = json.dumps(report, ensure_ascii=False, indent=1,
+    out["analysis.json"] = json.dumps(analysis.to_json(unit), ensure_ascii=False, indent=1,
                                       allow_nan=False) + "\n"
     return out
-
-
-def _dynamics_settings(analysis) -> dict:
-    """The variant's ``[dynamics]`` settings."""
-    return analysis.mech.settings.get("dynamics", {})
-
-
 def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,
                   precision: float | None = None, page: str | None = None) -> Written:
     """Analyse ``variant`` and write its output files into ``out_dir``.

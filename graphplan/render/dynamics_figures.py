@@ -32,13 +32,11 @@ TEXT_H, SMALL_H = 3.5, 2.5
 PAD = 6.0  #: room around an axes box for letters, mm
 WORDS = {
     "ru": {"J": "Дж", "Nm": "Н·м", "mm": "мм", "rad": "рад", "kgm2": "кг·м²", "s": "с",
-           "exact": "точно", "graph": "графически", "flat": "ψ < 20°: kl по отрезкам на оси ΔT",
-           "omega": "Проверка: ω(φ) с маховиком", "avg": "ωср", "motor": "с характеристикой "
-           "двигателя"},
+           "flat": "ψ < 20°: kl по отрезкам на оси ΔT",
+           "omega": "Проверка: ω(φ) с маховиком", "target": "цель"},
     "en": {"J": "J", "Nm": "N·m", "mm": "mm", "rad": "rad", "kgm2": "kg·m²", "s": "s",
-           "exact": "exact", "graph": "graphical", "flat": "ψ < 20°: kl from the intercepts",
-           "omega": "Check: ω(φ) with the flywheel", "avg": "ωavg",
-           "motor": "with the motor's characteristic"},
+           "flat": "ψ < 20°: kl from the intercepts",
+           "omega": "Check: ω(φ) with the flywheel", "target": "target"},
 }
 
 
@@ -251,7 +249,7 @@ def omega_svg(unit, width_mm: float, height_mm: float, lang: str = "ru") -> str:
             sp.set_linewidth(THIN * MM)
         ax.set_ylabel(f"ω, {w['rad']}/{w['s']}", **_font("ω, рад/с", TEXT_H))
         title = (f"{w['omega']}: δ = {s.delta_actual:.4f} "
-                 f"({'цель' if lang == 'ru' else 'target'} {s.delta_target:g})")
+                 f"({w['target']} {s.delta_target:g})")
         fig.text(0.5, 1 - 1.5 / height_mm, title, ha="center", va="top", **_font(title, TEXT_H))
         return _save(fig)
 

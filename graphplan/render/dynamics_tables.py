@@ -26,7 +26,8 @@ T = {
            "rim": "Размеры маховика", "check": "Проверка моделированием",
            "cols": ("Пол.", "φ, °", "Mс, Н·м", "Iп, кг·м²", "Aс, Дж", "Aд, Дж", "ΔT, Дж"),
            "icols": ("Интервал", "φ от, °", "φ до, °", "Mс ср, Н·м", "yM, мм", "yA в конце, мм"),
-           "none": "нет в каталоге", "flat": "ψ < 20°: по отрезкам на оси ΔT, метод D.3",
+           "none": "нет в каталоге", "shaft_crank": "на валу кривошипа",
+           "shaft_motor": "на валу двигателя", "flat": "ψ < 20°: по отрезкам на оси ΔT, метод D.3",
            "sign": "φ — поворот кривошипа от первого положения по направлению вращения; "
                    "моменты положительны по направлению вращения (Mс < 0 — сопротивление)"},
     "en": {"title": "Dynamics of the machine unit", "data": "Data",
@@ -36,7 +37,8 @@ T = {
            "cols": ("Pos.", "φ, °", "Mс, N·m", "Iп, kg·m²", "Aс, J", "Aд, J", "ΔT, J"),
            "icols": ("Interval", "φ from, °", "φ to, °", "mean Mс, N·m", "yM, mm",
                      "yA at the end, mm"),
-           "none": "not in the catalogue", "flat": "ψ < 20°: from the intercepts, method D.3",
+           "none": "not in the catalogue", "shaft_crank": "on the crank shaft",
+           "shaft_motor": "on the motor shaft", "flat": "ψ < 20°: from the intercepts, method D.3",
            "sign": "φ is the crank's travel from the first position in its sense of rotation; "
                    "moments are positive in the sense of rotation (Mс < 0 resists)"},
 }
@@ -77,8 +79,6 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
     w = fw.omega
     J, Nm, mm = ("Дж", "Н·м", "мм") if ru else ("J", "N·m", "mm")
     graph_pct = (fw.I_m_graph / fw.I_m - 1) * 100 if fw.I_m else 0.0
-    shaft = {("crank", True): "на валу кривошипа", ("motor", True): "на валу двигателя",
-             ("crank", False): "on the crank shaft", ("motor", False): "on the motor shaft"}
     L = [f"# {t['title']}", "", f"## {t['data']}", "",
          f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(mc.crank_rpm, 5)} "
          f"{'об/мин' if ru else 'rpm'}; δ = {fw.delta:g}; η = "
@@ -130,7 +130,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           + (f", J_рот·u² = {fmt(fw.I_rotor, 5)} кг·м²" if mo.inertia_kg_m2 is not None else ""),
           "", f"## {t['rim']}", ""]
     m = u.mounted
-    L += [f"- {m.shape}, {shaft[u.shaft, ru]}: I = {fmt(m.inertia, 5)} кг·м², "
+    L += [f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} кг·м², "
           f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
           f"{fmt(m.b * 1000, 4)} {mm}, h = {fmt(m.h * 1000, 4)} {mm}, m = {fmt(m.mass, 4)} "
           f"{'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
