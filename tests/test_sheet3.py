@@ -108,6 +108,15 @@ def test_sheet_texts_are_the_calculation():
     assert float(d) == pytest.approx(u.mounted.D * 1000, rel=1e-3)
 
 
+def test_round_off_is_written_as_zero():
+    """The shaper's crank has no inertia of its own and the dyads stand still at the dead
+    centres 0 and 0': Iп there is round-off (~1e-31 kg·m²), written 0 as in the moments."""
+    _, u = unit("shaper")
+    rows = {r[0]: r for r in position_rows(u)}
+    assert rows["0"][3] == "0" and rows["0'"][3] == "0"
+    assert all("·10" not in c for r in rows.values() for c in r)  # fmt writes 1.9·10^-31
+
+
 def test_report_arithmetic_can_be_followed():
     """Every 'a·b·c = d' of the scales in the report multiplies out."""
     _, u = unit("press")

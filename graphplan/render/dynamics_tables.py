@@ -55,6 +55,7 @@ def position_rows(u: MachineUnit) -> list[list[str]]:
     largest value written as 0."""
     m, wd = u.model, u.flywheel.work
     big_m, big_a = float(np.max(np.abs(m.moment.M))), float(np.max(np.abs(wd.A_c)))
+    big_i = float(np.max(np.abs(m.inertia.I_red)))
 
     def v(x, big):
         return "0" if abs(x) < 1e-9 * big else fmt(x, 5)
@@ -64,7 +65,7 @@ def position_rows(u: MachineUnit) -> list[list[str]]:
         t = float(m.moment.pos_tau[k])
         phi = math.degrees(m.moment.phi[0] + m.moment.sense * t) % 360.0
         rows.append([lab, f"{phi:.1f}", v(float(m.moment.pos_M[k]), big_m),
-                     fmt(float(m.pos_inertia.I_red[k]), 5),
+                     v(float(m.pos_inertia.I_red[k]), big_i),
                      v(float(np.interp(t, wd.tau, wd.A_c)), big_a),
                      v(float(np.interp(t, wd.tau, wd.A_d)), big_a),
                      v(float(np.interp(t, wd.tau, wd.dT)), big_a)])
