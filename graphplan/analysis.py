@@ -83,7 +83,7 @@ class Analysis:
             segments = {r.name: r.mm for r in vp.readings.values()}
             segments.update({r.name: r.mm for r in ap.readings.values()})
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
-                              "segments_mm": segments}
+                              "segments_mm": segments, **_marks(vp, ap)}
         self._add_forces(positions, sc)
         out = {"mechanism": mechanism, "positions": positions}
         if "delta" in self.mech.settings.get("dynamics", {}):
@@ -118,14 +118,26 @@ class Analysis:
                  "segments_mm": {r.name: r.mm for r in fp.readings.values()},
                  "values": {q: r.value for q, r in fp.readings.items()},
                  "equations": list(fp.equations),
-                 "M_bal": fp.M_bal}
+                 "M_bal": fp.M_bal, **_marks(fp)}
                 for fp in force_plans(self.mech, self.kin, forces, loads, k, sc.kl,
                                       room_mm=s2.room_mm)]
             lever = zhukovsky_lever(self.mech, self.kin, loads, k, sc.kl, s2.lever_kv(self.kin, k),
                                     reference=float(forces.M_bal[k]))
             entry["zhukovsky"] = {"M_bal": lever.M_bal, "discrepancy_pct": lever.discrepancy_pct,
                                   "Kv": lever.plan.scale.per_mm,
-                                  "arms_mm": {r.name: r.mm for r in lever.readings.values()}}
+                                  "arms_mm": {r.name: r.mm for r in lever.readings.values()},
+                                  **_marks(lever)}
+
+
+def _marks(*plans) -> dict:
+    """How well the plans are drawn: every intersection's angle (deg) and uncertainty (mm,
+    at the draftsman's 0.5 mm), and the mark of the ill-conditioned ones ("" when none)."""
+    from .conditioning import intersections, note
+
+    return {"intersections": [{"plan": x.plan, "step": x.step, "equation": x.equation,
+                               "angle_deg": x.angle_deg, "error_mm": x.error_mm, "ill": x.ill}
+                              for p in plans for x in intersections(p)],
+            "ill_conditioned": note(plans)}
 
 
 def analyze(mech: Mechanism) -> Analysis:

@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
+from functools import reduce
 from itertools import combinations, pairwise
 
 import numpy as np
@@ -43,6 +44,7 @@ from .cycle import Cycle, analyse_cycle, in_working_stroke, output_coordinate, t
 from .geometry import dot, norm, perp, scale
 from .kinematics import Kinematics
 from .model import Mechanism, Resistance
+from .positions import as_complex
 
 Array = NDArray[np.float64]
 
@@ -335,10 +337,11 @@ def compute_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = None, 
 
 def group_size(mech: Mechanism, kin: Kinematics, links) -> Array:
     """ℓ of a group: the largest distance between the points of its links, ≥ l_OA (m)."""
-    pts = [kin.pos.points[p] for ln in links for p in mech.points_of(ln)]
+    names = dict.fromkeys(p for ln in links for p in mech.points_of(ln))  # each point once
+    pts = [as_complex(kin.pos.points[p]) for p in names]
     size = np.full(kin.n, mech.crank.length)
     for a, b in combinations(pts, 2):
-        size = np.maximum(size, norm(a - b))
+        size = np.maximum(size, np.abs(a - b))
     return size
 
 
@@ -349,24 +352,27 @@ def _neglect(mech, kin, forces, moments, frac) -> dict[str, NDArray[np.bool_]]:
         return neglected
     groups = [(mech.crank.link,), *(d.links for d in mech.dyads)]
     for links in groups:
-        ell = group_size(mech, kin, links)
         sizes = {}
+        ell = None  # the group's size, needed only for its couples
         for ln in links:
             for f in forces[ln]:
-                sizes[f.name] = norm(f.vector)
+                sizes[f.name] = np.abs(as_complex(f.vector))
+            if moments[ln] and ell is None:
+                ell = group_size(mech, kin, links)
             for m in moments[ln]:
                 sizes[m.name] = np.abs(m.moment) / ell
         if not sizes:
             continue
-        biggest = np.max(np.stack(list(sizes.values())), axis=0)
+        biggest = reduce(np.maximum, sizes.values())
+        limit = frac * biggest
         for ln in links:
             for n, f in enumerate(forces[ln]):
-                drop = (sizes[f.name] < frac * biggest) & (sizes[f.name] > 0)
+                drop = (sizes[f.name] < limit) & (sizes[f.name] > 0)
                 if drop.any():
                     forces[ln][n] = replace(f, vector=np.where(drop[:, None], 0.0, f.vector))
                     neglected[f.name] = drop
             for n, m in enumerate(moments[ln]):
-                drop = (sizes[m.name] < frac * biggest) & (sizes[m.name] > 0)
+                drop = (sizes[m.name] < limit) & (sizes[m.name] > 0)
                 if drop.any():
                     moments[ln][n] = replace(m, moment=np.where(drop, 0.0, m.moment))
                     neglected[m.name] = drop

@@ -49,6 +49,22 @@ class Element:
     role: str
 
 
+MAX_ERROR_MM = 1e6
+"""The uncertainty written for lines that do not meet (parallel): finite, and off any sheet."""
+
+
+def intersection_error_mm(precision: float, angle: float) -> float:
+    """How far an intersection moves for a reading error: ``p / sin α``, mm.
+
+    ``angle`` is the angle between the two lines (rad); ``precision`` the reading
+    precision ``p`` (mm; 0, the exact reader, is taken as the draftsman's 0.5 mm). Never
+    more than :data:`MAX_ERROR_MM`, so that no infinity reaches a table.
+    """
+    p = precision or 0.5
+    s = math.sin(angle)
+    return min(p / s, MAX_ERROR_MM) if s > 0 else MAX_ERROR_MM
+
+
 @dataclass(frozen=True, slots=True)
 class Step:
     """One step of a construction, in drawing order.
@@ -121,6 +137,12 @@ class Plan:
         """Physical value of a reading."""
         return self.readings[name].value
 
+    def _repr_svg_(self) -> str:
+        """Jupyter: the whole construction, each vector in its role's colour."""
+        from .teaching.drawing import construction_svg
+
+        return construction_svg(self)
+
 
 @dataclass(frozen=True, slots=True)
 class Reader:
@@ -188,11 +210,7 @@ class _Builder:
         self.ends: dict[str, tuple[str, str]] = {}  # reading name -> (from point, to point)
 
     def add_step(self, equation, text, text_ru, elements, readings=(), angle=None):
-        err = None
-        if angle is not None:
-            prec = self.reader.precision or 0.5
-            err = prec / math.sin(angle) if angle > 0 else math.inf
-            err = min(err, 1e6)
+        err = None if angle is None else intersection_error_mm(self.reader.precision, angle)
         self.steps.append(Step(len(self.steps) + 1, equation, text, text_ru, tuple(elements),
                                tuple(readings), None if angle is None else math.degrees(angle),
                                err))

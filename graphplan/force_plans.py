@@ -66,6 +66,7 @@ from .constructions import (
     Step,
     as_xy,
     intersect_lines,
+    intersection_error_mm,
     position_mm,
     unit_vector,
 )
@@ -175,6 +176,12 @@ class ForcePlan:
         pts = np.array(list(self.points.values()))
         return float(np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1)).max())
 
+    def _repr_svg_(self) -> str:
+        """Jupyter: the whole force polygon, loads and reactions named."""
+        from .teaching.drawing import construction_svg
+
+        return construction_svg(self)
+
 
 @dataclass(frozen=True, slots=True)
 class _F:
@@ -221,10 +228,7 @@ class _Draw:
         return name
 
     def step(self, eq, en, ru, elements=(), readings=(), angle=None):
-        err = None
-        if angle is not None:
-            prec = self.reader.precision or 0.5
-            err = min(prec / math.sin(angle), 1e6) if angle > 0 else math.inf
+        err = None if angle is None else intersection_error_mm(self.reader.precision, angle)
         self.steps.append(Step(len(self.steps) + 1, eq, en, ru, tuple(elements), tuple(readings),
                                None if angle is None else math.degrees(angle), err))
 

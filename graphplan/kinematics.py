@@ -8,15 +8,18 @@ Units: m, m/s, m/s², rad, rad/s, rad/s²; angles CCW positive from +x.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .accelerations import AccelerationState, solve_accelerations
+from .accelerations import AccelerationState, accelerations_complex
+from .accelerations import state_of as acceleration_state
 from .errors import SingularPoseError
 from .model import Mechanism
-from .positions import PositionState, solve_positions, where
-from .velocities import VelocityState, solve_velocities
+from .positions import PositionState, as_xy, solve_complex, translating_links, where
+from .velocities import VelocityState, velocities_complex
+from .velocities import state_of as velocity_state
 
 Array = NDArray[np.float64]
 
@@ -91,17 +94,48 @@ def solve(mech: Mechanism, phi, labels=None) -> Kinematics:
     """
     phi = np.atleast_1d(np.asarray(phi, float))
     named = tuple(labels) if labels is not None else None  # unnamed angles: errors say φ only
-    pos = solve_positions(mech, phi, named)
-    vel = solve_velocities(mech, pos, named)
-    acc = solve_accelerations(mech, pos, vel)
-    _check_finite(mech, phi, named, pos, vel, acc)
-    return Kinematics(phi, named or tuple(str(k) for k in range(len(phi))), pos, vel, acc)
+    n = phi.shape[0]
+    P, theta, G = solve_complex(mech, phi, named)
+    U = {key: u for key, (_, u) in G.items()}
+    velc = velocities_complex(mech, phi, P, U, named)
+    accc = accelerations_complex(mech, n, P, U, velc[1], velc[2])
+    pos = PositionState(phi, {k: as_xy(z, n) for k, z in P.items()}, theta,
+                        {key: (as_xy(g, n), as_xy(u, n)) for key, (g, u) in G.items()})
+    vel = velocity_state(velc, n)
+    acc = acceleration_state(accc, n)
+    if not _all_finite(mech, P, velc[0], accc[0], velc[1], accc[1]):
+        _check_finite(mech, phi, named, pos, vel, acc)
+    return Kinematics(phi, named or _numbers(len(phi)), pos, vel, acc)
+
+
+def _all_finite(mech: Mechanism, P, v, a, omega, eps) -> bool:
+    """True when no position, velocity, acceleration, ω or ε is NaN or infinite.
+
+    One pass over the velocities, accelerations, ω and ε: every position enters the
+    acceleration of its point (``a = a_O + (P − P_O)·(iε − ω²)``; NaN·0 is NaN), except
+    the points of a translating link, whose accelerations are copies of their origin's —
+    their positions are added. Constants (the frame's points) are finite.
+    """
+    still = translating_links(mech)
+    arrays = [z.view(np.float64) for t in (v, a) for z in t.values()
+              if isinstance(z, np.ndarray)]
+    arrays += [P[p.name].view(np.float64) for p in mech.points
+               if p.link in still and isinstance(P.get(p.name), np.ndarray)]
+    arrays += [x for t in (omega, eps) for x in t.values()]
+    return bool(np.isfinite(np.concatenate(arrays)).all())
+
+
+@lru_cache(maxsize=16)
+def _numbers(n: int) -> tuple[str, ...]:
+    """Default labels ``"0"``, ``"1"``, … of n positions."""
+    return tuple(map(str, range(n)))
 
 
 def _check_finite(mech: Mechanism, phi, labels, pos, vel, acc) -> None:
     """No NaN or infinity leaves the solver: a non-finite rate marks a singular pose."""
-    for kind, table in (("position", pos.points), ("ω", vel.omega), ("ε", acc.epsilon),
-                        ("v", vel.points), ("a", acc.points)):
+    tables = (("position", pos.points), ("ω", vel.omega), ("ε", acc.epsilon),
+              ("v", vel.points), ("a", acc.points))
+    for kind, table in tables:
         for name, arr in table.items():
             ok = np.isfinite(arr).reshape(len(phi), -1).all(axis=1)
             if not ok.all():

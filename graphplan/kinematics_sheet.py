@@ -391,6 +391,22 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     return items
 
 
+def ill_mark_items(plan, cell: Rect, ident: str, lang: str) -> list[Item]:
+    """The draftsman's mark of an ill-conditioned plan, under its caption.
+
+    A plan whose lines meet at less than :data:`graphplan.conditioning.ILL_ANGLE_DEG` is
+    marked ``lines meet at 1.3°, reading ±11 mm`` (:meth:`Intersection.note`); a
+    well-conditioned plan gets nothing.
+    """
+    from .conditioning import ill_conditioned
+
+    ill = ill_conditioned(plan)
+    if not ill:
+        return []
+    return [text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION + 1.0), ill[0].note(lang),
+                           2.5, layer="text", id=f"{ident}-ill")]
+
+
 # ------------------------------------------------------------------------ the sheet
 
 
@@ -459,6 +475,8 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
                             f"vp{k}")
         items += plan_items(ap, sc.layout.cells[n + c], f"{w['acceleration']}, {w['pos']} {lab}",
                             f"ap{k}")
+        items += ill_mark_items(vp, sc.layout.cells[c], f"vp{k}", lang)
+        items += ill_mark_items(ap, sc.layout.cells[n + c], f"ap{k}", lang)
     items += scales_items(sc, lang)
     items += table_block(analysis, sc, lang)
     if diagrams:

@@ -60,7 +60,7 @@ check of the tests, Zhukovsky's lever) ``M_ур·ω1 + Σ F·v + Σ M·ω = 0``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from itertools import combinations
 
 import numpy as np
@@ -68,10 +68,10 @@ from numpy.typing import NDArray
 
 from .applied_loads import Loads
 from .errors import SingularPoseError
-from .geometry import cross, norm, perp, scale
+from .geometry import cross, norm
 from .kinematics import Kinematics
 from .model import Dyad, Mechanism
-from .positions import slide_key, where
+from .positions import as_complex, as_xy, cdiv, slide_key, where
 
 Array = NDArray[np.float64]
 
@@ -148,12 +148,15 @@ class Forces:
         Balancing moment M_ур on the crank, N·m, CCW positive.
     crank : str
         The crank's link (the frame's reaction on it, at its pivot, is the last reaction).
-    conditioning : dict[str, ndarray (N,)]
-        Per dyad, the condition number of its dimensionless 6×6 system.
-    error_bound : ndarray (N,)
-        First-order bound of the relative round-off error of the reactions and M_ур.
+    systems : dict[str, ndarray (N, 6, 6)]
+        Per dyad, the matrix of its dimensionless equilibrium equations.
     loads : Loads
         The loads the analysis was made with.
+
+    Properties ``conditioning`` (per dyad, the 2-norm condition number of its system) and
+    ``error_bound`` (first-order bound of the relative round-off error of the reactions
+    and M_ур, ``6·ε·Σκ``) are computed from ``systems`` on first use: a singular value
+    decomposition of every 6×6 matrix costs more than the whole force analysis.
     """
 
     phi: Array
@@ -161,9 +164,27 @@ class Forces:
     reactions: dict[str, Reaction]
     M_bal: Array
     crank: str
-    conditioning: dict[str, Array]
-    error_bound: Array
+    systems: dict[str, Array]
     loads: Loads
+    _kappa: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def conditioning(self) -> dict[str, Array]:
+        """Per dyad, the condition number κ (2-norm) of its dimensionless 6×6 system."""
+        for name, A in self.systems.items():
+            if name not in self._kappa:
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    self._kappa[name] = np.linalg.cond(A)
+        return self._kappa
+
+    @property
+    def error_bound(self) -> Array:
+        """First-order bound of the relative round-off error of the reactions and M_ур."""
+        eps = np.finfo(float).eps
+        bound = np.zeros(self.phi.shape[0])
+        for kappa in self.conditioning.values():
+            bound = bound + 6 * eps * kappa
+        return bound
 
     def vector(self, name: str) -> Array:
         """R_ij by name, also reversed (``"R21"`` gives −R12)."""
@@ -284,103 +305,146 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
     if loads.phi.shape != kin.phi.shape or not np.array_equal(loads.phi, kin.phi):
         raise ValueError("solve_forces: the loads were computed for other positions")
     P = kin.pos.points
-    ext_f: dict[str, list[tuple[Array, Array]]] = {ln: [] for ln in mech.moving_links}
+    C: dict = {}  # the points as complex numbers x + iy (k×v = i·v, a×b = Im(conj(a)·b))
+
+    def pc(name: str):
+        if name not in C:
+            C[name] = as_complex(P[name])
+        return C[name]
+
+    ext_f: dict[str, list] = {ln: [] for ln in mech.moving_links}
     ext_m: dict[str, list[Array]] = {ln: [] for ln in mech.moving_links}
     for f in loads.all_forces():  # a load on the frame (not a moving link) changes nothing
-        ext_f.get(f.link, []).append((f.vector, f.at))
+        ext_f.get(f.link, []).append((as_complex(f.vector), as_complex(f.at)))
     for m in loads.all_moments():
         ext_m.get(m.link, []).append(m.moment)
     reactions: dict[str, Reaction] = {}
-    conditioning: dict[str, Array] = {}
-    bound = np.zeros(n)
-    eps = np.finfo(float).eps
+    systems: dict[str, Array] = {}
+    solutions: list[Array] = []
 
     def fail(k: int, what: str, dyad: str) -> SingularPoseError:
         return SingularPoseError(f"{mech.source}: {dyad}: {what} at "
                                  f"{where(kin.phi, k, kin.labels)}")
 
+    zeros, trues = np.zeros(n), np.ones(n, bool)
     for d in reversed(mech.dyads):
         pairs = dyad_pairs(mech, d)
         X = [P[p.point] for p in pairs]
-        c = (X[0] + X[1] + X[2]) / 3.0
+        Xc = [pc(p.point) for p in pairs]
+        c = cdiv(Xc[0] + Xc[1] + Xc[2], 3.0)
         L = np.full(n, mech.crank.length)
-        for a, b in combinations(X, 2):
-            L = np.maximum(L, norm(a - b))
-        A = np.zeros((n, 6, 6))
-        rhs = np.zeros((n, 6))
+        for a, b in combinations(Xc, 2):
+            L = np.maximum(L, np.abs(a - b))
+        # filled entry by entry along the positions (contiguous rows), then viewed as
+        # N matrices: LAPACK copies each into its own buffer anyway
+        T = np.zeros((6, 6, n))
+        R = np.zeros((6, n))
+        # per pair, the entries of its columns (the same for both links, but the sign)
+        cols = []
+        for pr, x in zip(pairs, Xc, strict=True):
+            r = x - c
+            if pr.kind == "R":
+                cols.append((r.imag / L, r.real / L, None))
+            else:
+                nv = 1j * as_complex(kin.pos.guides[pr.guide][1])
+                cols.append((nv.real, nv.imag, (np.conj(r) * nv).imag / L))
         for li, link in enumerate(d.links):
             row = 3 * li
-            F = sum((v for v, _ in ext_f[link]), np.zeros((n, 2)))
-            M = sum((cross(at - c, v) for v, at in ext_f[link]), np.zeros(n))
-            M = M + sum(ext_m[link], np.zeros(n))
-            rhs[:, row:row + 2] = -F
-            rhs[:, row + 2] = -M / L
-            for p, (pr, x) in enumerate(zip(pairs, X, strict=True)):
+            F = sum((v for v, _ in ext_f[link]), 0j)
+            M = sum(((np.conj(at - c) * v).imag for v, at in ext_f[link]), zeros)
+            M = M + sum(ext_m[link], zeros)
+            R[row] = -np.real(F)
+            R[row + 1] = -np.imag(F)
+            R[row + 2] = -M / L
+            for p, (pr, (e0, e1, e2)) in enumerate(zip(pairs, cols, strict=True)):
                 s = 1.0 if pr.on == link else -1.0 if pr.by == link else 0.0
                 if not s:
                     continue
-                r = x - c
                 col = 2 * p
                 if pr.kind == "R":
-                    A[:, row, col] = s
-                    A[:, row + 1, col + 1] = s
-                    A[:, row + 2, col] = -s * r[:, 1] / L
-                    A[:, row + 2, col + 1] = s * r[:, 0] / L
+                    T[row, col] = s
+                    T[row + 1, col + 1] = s
+                    T[row + 2, col] = -e0 if s > 0 else e0
+                    T[row + 2, col + 1] = e1 if s > 0 else -e1
                 else:
-                    nv = perp(kin.pos.guides[pr.guide][1])
-                    A[:, row, col] = s * nv[:, 0]
-                    A[:, row + 1, col] = s * nv[:, 1]
-                    A[:, row + 2, col] = s * cross(r, nv) / L
-                    A[:, row + 2, col + 1] = s
+                    T[row, col] = e0 if s > 0 else -e0
+                    T[row + 1, col] = e1 if s > 0 else -e1
+                    T[row + 2, col] = e2 if s > 0 else -e2
+                    T[row + 2, col + 1] = s
+        A = T.transpose(2, 0, 1)
+        rhs = R.T
         if not np.isfinite(rhs).all():
             raise fail(int(np.argmin(np.isfinite(rhs).all(axis=1))), "the loads are not finite",
                        d.name)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            kappa = np.linalg.cond(A)
-        bad = ~(kappa <= COND_LIMIT)
-        if bad.any():
-            k = int(np.argmax(bad))
-            raise fail(k, f"the force analysis is singular (condition number {kappa[k]:.3g}; "
-                       "the closing lines of its force plan are parallel)", d.name)
+        _check_singular(A, lambda k, kappa, name=d.name: fail(
+            k, f"the force analysis is singular (condition number {kappa:.3g}; "
+            "the closing lines of its force plan are parallel)", name))
         x = np.linalg.solve(A, rhs[..., None])[..., 0]
-        conditioning[d.name] = kappa
-        bound = bound + 6 * eps * kappa
+        systems[d.name] = A
+        solutions.append(x)
         big = np.max(np.abs(x), axis=1)
-        for p, (pr, xp) in enumerate(zip(pairs, X, strict=True)):
+        for p, (pr, xp, xc) in enumerate(zip(pairs, X, Xc, strict=True)):
             a, b = x[:, 2 * p], x[:, 2 * p + 1]
             if pr.kind == "R":
-                vec, normal, couple = np.stack((a, b), axis=-1), np.hypot(a, b), np.zeros(n)
-                offset, defined, at = np.zeros(n), np.ones(n, bool), xp
+                vec = x[:, 2 * p:2 * p + 2].copy()
+                vc = as_complex(vec)
+                normal, couple = np.hypot(a, b), zeros
+                offset, defined, at = zeros, trues, xp
             else:
-                u = kin.pos.guides[pr.guide][1]
-                vec, normal, couple = scale(perp(u), a), a, b * L
+                u = as_complex(kin.pos.guides[pr.guide][1])
+                vc = (1j * u) * a
+                vec, normal, couple = as_xy(vc, n), a, b * L
                 defined = np.abs(a) > 1e-12 * big
                 offset = np.where(defined, couple / np.where(defined, a, 1.0), 0.0)
-                at = xp + scale(u, offset)
+                at = as_xy(xc + u * offset, n)
             name = reaction_name(pr.by, pr.on)
             while name in reactions:
                 name += "'"
             reactions[name] = Reaction(name, pr.by, pr.on, pr.kind, pr.point, pr.guide, vec, at,
-                                       normal, couple, offset, defined, xp)
+                                       normal, couple.copy(), offset.copy(), defined.copy(), xp)
             if pr.by not in d.links and pr.by != mech.frame_link:
-                ext_f[pr.by].append((-vec, xp))
+                ext_f[pr.by].append((-vc, xc))
                 ext_m[pr.by].append(-couple)
 
     cr = mech.crank
     pivot = P[cr.pivot]
-    F = sum((v for v, _ in ext_f[cr.link]), np.zeros((n, 2)))
-    M = sum((cross(at - pivot, v) for v, at in ext_f[cr.link]), np.zeros(n))
-    M = M + sum(ext_m[cr.link], np.zeros(n))
+    pv = pc(cr.pivot)
+    F = sum((v for v, _ in ext_f[cr.link]), 0j)
+    M = sum(((np.conj(at - pv) * v).imag for v, at in ext_f[cr.link]), zeros)
+    M = M + sum(ext_m[cr.link], zeros)
+    F = as_xy(F, n)
     name = reaction_name(mech.frame_link, cr.link)
     reactions[name] = Reaction(name, mech.frame_link, cr.link, "R", cr.pivot, None, -F,
                                np.asarray(pivot, float), norm(F), np.zeros(n), np.zeros(n),
                                np.ones(n, bool), np.asarray(pivot, float))
     M_bal = -M
-    for r in reactions.values():
-        if not (np.isfinite(r.vector).all() and np.isfinite(r.couple).all()):
-            k = int(np.argmin(np.isfinite(r.vector).all(axis=1)))
-            raise fail(k, f"reaction {r.name} is not finite", "force analysis")
-    return Forces(kin.phi, kin.labels, reactions, M_bal, cr.link, conditioning, bound, loads)
+    if not np.isfinite(np.concatenate([*(s.ravel() for s in solutions), F.ravel()])).all():
+        for r in reactions.values():
+            if not (np.isfinite(r.vector).all() and np.isfinite(r.couple).all()):
+                k = int(np.argmin(np.isfinite(r.vector).all(axis=1)))
+                raise fail(k, f"reaction {r.name} is not finite", "force analysis")
+    return Forces(kin.phi, kin.labels, reactions, M_bal, cr.link, systems, loads)
+
+
+def _check_singular(A: Array, fail) -> None:
+    """Raise ``fail(k, κ)`` at the first position whose system has ``κ > COND_LIMIT``.
+
+    The condition number is bounded without a singular value decomposition:
+    ``|det A| = σ1···σ6 ≤ σ1⁵·σ6`` and ``σ1 ≤ ‖A‖_F`` give ``κ = σ1/σ6 ≤ ‖A‖_F⁶/|det A|``,
+    so only where that bound passes the limit is κ computed (and the pose refused if
+    it really does).
+    """
+    fro6 = np.einsum("nij,nij->n", A, A) ** 3
+    suspect = ~(np.abs(np.linalg.det(A)) * COND_LIMIT > fro6)
+    if not suspect.any():
+        return
+    idx = np.flatnonzero(suspect)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kappa = np.linalg.cond(A[idx])
+    bad = ~(kappa <= COND_LIMIT)
+    if bad.any():
+        j = int(np.argmax(bad))
+        raise fail(int(idx[j]), float(kappa[j]))
 
 
 __all__ = ["COND_LIMIT", "Forces", "Reaction", "solve_forces"]

@@ -31,6 +31,7 @@ from .kinematics_sheet import (
     _slider_block,
     _support,
     _units,
+    ill_mark_items,
     link_items,
     plan_items,
     slider_point,
@@ -190,10 +191,12 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
             title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])
             cap = f"{title}, {_kp(fp.scale, lang)}"
             items += plan_items(fp, cells[1 + i], cap, f"{ident}-fp{i}", segment_labels=True)
+            items += ill_mark_items(fp, cells[1 + i], f"{ident}-fp{i}", lang)
         lever = zhukovsky_lever(mech, kin, loads, k, sc.kl, s2.lever_kv(kin, k),
                                 reference=float(forces.M_bal[k]))
         cap = f"{w['lever']}, {_units(lever.plan.scale.basis, lang)}"
         items += plan_items(lever, cells[-1], cap, f"{ident}-lever", segment_labels=True)
+        items += ill_mark_items(lever, cells[-1], f"{ident}-lever", lang)
         crank = plans[-1]
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
         summary.append([kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.1f}",

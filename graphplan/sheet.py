@@ -942,6 +942,16 @@ class Sheet:
         tb = title_block_items(self.page, self.title_block) if self.title_block else ()
         return frame_items(self.page) + tb + self.items
 
+    def _repr_svg_(self) -> str:
+        """Jupyter: the sheet as SVG, as wide as the notebook (the viewBox keeps its mm)."""
+        import re
+
+        from .render.svg import render_svg
+
+        svg = render_svg(self)
+        return re.sub(r'<svg([^>]*?) height="[^"]*"([^>]*?) width="[^"]*"',
+                      r'<svg\1\2 width="100%"', svg, count=1)
+
 
 # ----------------------------------------------------------------- layout checks
 

@@ -7,7 +7,10 @@ millimetres of the position plan, the force scale Kp with its basis, the segment
 force polygons in mm and their values (N and kN), the reactions, the arm h21, Mур from
 the force plans, Mур from Zhukovsky's lever and their discrepancy. Every quantity is
 given as an exact construction and as a drafted one (segments and arms read to the
-variant's ``drawing.reading_mm``, default 0.5 mm), side by side, with the drafting error.
+variant's ``drawing.reading_mm``, default 0.5 mm), side by side, with the drafting error
+and the bound :mod:`graphplan.conditioning` states for that precision (``±``). A position
+whose force plans close at less than ``ILL_ANGLE_DEG`` is marked as a draftsman marks it
+(``lines meet at 1.3°, reading ±11 mm``).
 
 Sign convention (stated once): moments are **counter-clockwise positive** in the
 variant's axes, as in :mod:`graphplan.kinetostatics`. **Mур** (``M_bal``) is the
@@ -34,6 +37,7 @@ import numpy as np
 
 from ..analysis import Analysis
 from ..applied_loads import Loads, compute_loads
+from ..conditioning import Conditioning, force_conditioning
 from ..constructions import EXACT, Reader
 from ..force_plans import ForcePlan, force_plans
 from ..kinematics import solve
@@ -83,6 +87,7 @@ WORDS = {
                  "before them. Error = (drafted − exact)/exact. Moments counter-clockwise "
                  "positive."),
         "N": "N", "kN": "kN", "N·m": "N·m", "mm": "mm", "m": "m",
+        "bound": "±", "ill": "Ill-conditioned", "step": "step",
     },
     "ru": {
         "title": "Силовой расчёт (кинетостатика) методом планов сил",
@@ -118,6 +123,7 @@ WORDS = {
                  "предыдущих планах. Погрешность = (чертёж − точно)/точно. Моменты против "
                  "часовой стрелки — плюс."),
         "N": "Н", "kN": "кН", "N·m": "Н·м", "mm": "мм", "m": "м",
+        "bound": "±", "ill": "Плохо обусловлено", "step": "шаг",
     },
 }
 
@@ -172,6 +178,9 @@ class PositionForces:
         Kl of the position plan the arms are measured on.
     M_scale : float
         The largest |Mур| of all positions (N·m): a moment below ``TINY`` of it is zero.
+    conditioning : Conditioning or None
+        The force plans' intersections (their marks) and the bound of every drafted
+        figure (:func:`graphplan.conditioning.force_conditioning`).
     """
 
     label: str
@@ -188,6 +197,12 @@ class PositionForces:
     rule: float
     kl: Scale
     M_scale: float = 0.0
+    conditioning: Conditioning | None = None
+
+    def bound(self, plan: str, name: str) -> float | None:
+        """± of a drafted figure (``("force", "R12")``, ``("lever", "Mур")``), or None."""
+        c = self.conditioning
+        return None if c is None else c.bound(plan, name)
 
     @property
     def neglected(self) -> tuple[str, ...]:
@@ -242,6 +257,9 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
         In the order of ``analysis.kin``.
     """
     prec = _precision(analysis, precision)
+    key = (id(analysis), prec)
+    if _LAST.get("key") == key and _LAST.get("analysis") is analysis:
+        return list(_LAST["positions"])
     mech, kin = analysis.mech, analysis.kin
     sc = sheet_scales(mech, kin)
     loads = compute_loads(mech, kin, analysis.cycle)
@@ -257,11 +275,17 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
         kv = s2.lever_kv(kin, k)
         lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal)
         ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
+        cond = force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
         out.append(PositionForces(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
-                                  sc.kl, float(np.max(np.abs(forces.M_bal)))))
+                                  sc.kl, float(np.max(np.abs(forces.M_bal))), cond))
+    _LAST.update(key=key, analysis=analysis, positions=tuple(out))
     return out
+
+
+_LAST: dict = {}
+"""The last :func:`force_readings` (the Markdown in two languages and the CSV read it thrice)."""
 
 
 # --- the curve of moments ------------------------------------------------------------------
@@ -427,11 +451,25 @@ def _reaction_value(plans: tuple[ForcePlan, ...], name: str) -> float:
 # --- Markdown ------------------------------------------------------------------------------
 
 
+def _pm(bound: float | None) -> str:
+    return "—" if bound is None else "±" + _f(bound)
+
+
+def _marks(pf: PositionForces, lang: str) -> list[str]:
+    """The draftsman's mark of a position whose force plans are ill-conditioned."""
+    c = pf.conditioning
+    if c is None or not c.marks:
+        return []
+    w = _words(lang)
+    return [f"**{w['ill']}:** {x.note(lang)} ({_group(x.plan, lang)}, {w['step']} {x.step}: "
+            f"`{_eq(x.equation, lang)}`)." for x in c.marks] + [""]
+
+
 def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
     w = _words(lang)
     d = _decimals(pf.precision)
     out = ["", f"## {w['section'].format(label=pf.label, phi=pf.phi_deg)}", "",
-           f"### {w['loads']}", ""]
+           *_marks(pf, lang), f"### {w['loads']}", ""]
     rows = [[r.name, r.link, w.get(r.kind, r.kind), f"{_f(r.value)} {w[r.unit]}",
              w["neglected"] if r.neglected else w["yes"]] for r in pf.loads]
     out += _md_table([w["load"], w["link"], w["kind"], w["value"], w["taken"]], rows, {3})
@@ -478,39 +516,46 @@ def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
             cells = [_group(pe.group, lang), q, f"`{r.name}`", _f(r.mm), _f(r.value),
                      _f(r.value / 1000, 3)]
             if rd is None:
-                cells += ["—", "—", "—"]
+                cells += ["—", "—", "—", "—"]
             else:
-                cells += [_f(rd.mm, d), _f(rd.value), _pct(_rel(rd.value, r.value, big))]
+                cells += [_f(rd.mm, d), _f(rd.value), _pm(pf.bound("force", q)),
+                          _pct(_rel(rd.value, r.value, big))]
             rows.append(cells)
     head = [w["plan"], w["quantity"], w["segment"], f"{w['exact']}, {w['mm']}",
             f"{w['exact']}, {w['N']}", f"{w['exact']}, {w['kN']}",
-            f"{w['drafted']}, {w['mm']}", f"{w['drafted']}, {w['N']}", w["error"]]
-    out += _md_table(head, rows, {3, 4, 5, 6, 7, 8})
+            f"{w['drafted']}, {w['mm']}", f"{w['drafted']}, {w['N']}", f"{w['bound']}, {w['N']}",
+            w["error"]]
+    out += _md_table(head, rows, {3, 4, 5, 6, 7, 8, 9})
 
     out += ["", f"### {w['results']}", ""]
     rows = []
     big = max((_reaction_value(pf.exact, n) for n in _reactions(pf)), default=0.0)
     for n in _reactions(pf):
         e, r = _reaction_value(pf.exact, n), _reaction_value(pf.drafted, n)
-        rows.append([n, _f(e), _f(e / 1000, 3), _f(r), _f(r / 1000, 3), _pct(_rel(r, e, big))])
+        rows.append([n, _f(e), _f(e / 1000, 3), _f(r), _f(r / 1000, 3),
+                     _pm(pf.bound("force", f"vector {n}")), _pct(_rel(r, e, big))])
     head = [w["quantity"], f"{w['exact']}, {w['N']}", f"{w['exact']}, {w['kN']}",
-            f"{w['drafted']}, {w['N']}", f"{w['drafted']}, {w['kN']}", w["error"]]
-    out += [*_md_table(head, rows, {1, 2, 3, 4, 5}), ""]
+            f"{w['drafted']}, {w['N']}", f"{w['drafted']}, {w['kN']}", f"{w['bound']}, {w['N']}",
+            w["error"]]
+    out += [*_md_table(head, rows, {1, 2, 3, 4, 5, 6}), ""]
     rows = []
     he, hd = _crank_arm(pf.exact[-1]), _crank_arm(pf.drafted[-1])
     if he is not None:
         hdv = hd[1] if hd is not None else math.nan
         rows.append([w["h21"].format(n=he[0][1:]), _f(he[1]), _f(hdv, d) if hd else "—",
+                     _pm(pf.precision / 2) if hd else "—",
                      _pct(_rel(hdv, he[1], 1.0)) if hd else "—"])
     me, md = float(pf.exact[-1].M_bal), float(pf.drafted[-1].M_bal)
     mbig = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
-    rows.append([w["mbal_plans"], _f(me), _f(md), _pct(_rel(md, me, mbig))])
+    rows.append([w["mbal_plans"], _f(me), _f(md), _pm(pf.bound("force", "Mур")),
+                 _pct(_rel(md, me, mbig))])
     le, ld = pf.lever_exact.M_bal, pf.lever_drafted.M_bal
-    rows.append([w["mbal_lever"], _f(le), _f(ld), _pct(_rel(ld, le, mbig))])
+    rows.append([w["mbal_lever"], _f(le), _f(ld), _pm(pf.bound("lever", "Mур")),
+                 _pct(_rel(ld, le, mbig))])
     rows.append([w["discrepancy"], _f(pf.lever_exact.discrepancy_pct or 0.0),
-                 _f(pf.lever_drafted.discrepancy_pct or 0.0), "—"])
+                 _f(pf.lever_drafted.discrepancy_pct or 0.0), "—", "—"])
     out += _md_table([w["quantity"], w["exact"], f"{w['drafted']} ({fmt(pf.precision)} "
-                      f"{w['mm']})", w["error"]], rows, {1, 2, 3})
+                      f"{w['mm']})", w["bound"], w["error"]], rows, {1, 2, 3, 4})
     return out
 
 
@@ -563,7 +608,7 @@ def curve_markdown(analysis: Analysis, lang: str = "ru",
 
 CSV_COLUMNS = ("position", "phi_deg", "mode", "precision_mm", "plan", "kind", "quantity",
                "segment", "mm", "scale", "scale_per_mm", "value", "unit", "exact_value",
-               "error_pct")
+               "error_pct", "bound", "ill_conditioned")
 """Columns of :func:`forces_csv`.
 
 ``kind`` is ``segment`` (a force polygon's segment: ``value = mm·scale_per_mm``, N),
@@ -572,7 +617,11 @@ crank's plan, ``Mур(Ж)`` of the lever, N·m; ``Mур(full)``, the exact Mур
 kept), ``discrepancy`` (Δ between the plans and the lever, %) or ``neglected`` (a load
 the rule dropped, its full-model value). ``mode`` is ``exact`` or ``drafted``;
 ``exact_value`` is the exact mode's value of the same quantity, ``error_pct`` the
-relative drafting error (empty where the exact value is zero)."""
+relative drafting error (empty where the exact value is zero). ``bound`` is ± of a
+drafted value for the reading precision (:mod:`graphplan.conditioning`; an arm's is its own
+reading, p/2), empty in exact mode; ``ill_conditioned`` the draftsman's mark of the
+position (``lines meet at 1.3°, reading ±11 mm``), empty where its plans are well
+conditioned."""
 
 
 def _r(x: float | None) -> str:
@@ -590,8 +639,13 @@ def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:
     wr.writerow(CSV_COLUMNS)
     for pf in force_readings(analysis, precision):
         kl = pf.kl.per_mm
+        mark = pf.conditioning.note("en") if pf.conditioning is not None else ""
         for mode in ("exact", "drafted"):
             where = [pf.label, _r(pf.phi_deg), mode, _r(0.0 if mode == "exact" else pf.precision)]
+
+            def bound(plan, name, mode=mode, pf=pf):
+                return _r(pf.bound(plan, name)) if mode == "drafted" else ""
+
             for p, pe in zip(pf.plans(mode), pf.exact, strict=True):
                 big = max((r.value for r in pe.readings.values()), default=0.0)
                 for q, r in p.readings.items():
@@ -599,30 +653,33 @@ def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:
                     err = None if ex is None else _rel(r.value, ex, big)
                     wr.writerow([*where, p.group, "segment", q, r.name, _r(r.mm),
                                  p.scale.symbol, _r(p.scale.per_mm), _r(r.value), "N", _r(ex),
-                                 _r(None if err is None else err * 100)])
+                                 _r(None if err is None else err * 100), bound("force", q), mark])
                 for key, mm in p.arms_mm.items():
                     ex = pe.arms_mm.get(key)
                     err = None if ex is None else _rel(mm, ex, 1.0)
                     wr.writerow([*where, p.group, "arm", key, "", _r(mm), "Kl", _r(kl),
                                  _r(mm * kl), "m", _r(None if ex is None else ex * kl),
-                                 _r(None if err is None else err * 100)])
+                                 _r(None if err is None else err * 100),
+                                 _r(pf.precision / 2 * kl) if mode == "drafted" else "", mark])
             crank = pf.plans(mode)[-1]
             me = float(pf.exact[-1].M_bal)
             big = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
             lev, lex = pf.lever(mode), pf.lever_exact
-            for q, v, e in (("Mур", float(crank.M_bal), me), ("Mур(Ж)", lev.M_bal, lex.M_bal)):
+            for q, v, e, src in (("Mур", float(crank.M_bal), me, "force"),
+                                 ("Mур(Ж)", lev.M_bal, lex.M_bal, "lever")):
                 err = _rel(v, e, big)
                 wr.writerow([*where, crank.group, "moment", q, "", "", "", "", _r(v), "N·m",
-                             _r(e), _r(None if err is None else err * 100)])
+                             _r(e), _r(None if err is None else err * 100), bound(src, "Mур"),
+                             mark])
             wr.writerow([*where, "", "moment", "Mур(full)", "", "", "", "", _r(pf.M_full),
-                         "N·m", _r(pf.M_full), ""])
+                         "N·m", _r(pf.M_full), "", "", mark])
             wr.writerow([*where, "lever", "discrepancy", "Δ", "", "", "", "",
                          _r(lev.discrepancy_pct or 0.0), "%", _r(lex.discrepancy_pct or 0.0),
-                         ""])
+                         "", "", mark])
             for r in pf.loads:
                 if r.neglected:
                     wr.writerow([*where, f"link {r.link}", "neglected", r.name, "", "", "", "",
-                                 _r(r.value), r.unit, _r(r.value), ""])
+                                 _r(r.value), r.unit, _r(r.value), "", "", mark])
     return buf.getvalue()
 
 

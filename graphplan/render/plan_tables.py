@@ -5,7 +5,10 @@ acceleration plan, each turned into a value by its scale (``pb = 84.38 mm →
 vB = pb·Kv = 0.4219 m/s``), then the angular rates of the links as a student
 writes them (``ω2 = vBA/lAB = 0.3397/0.2 = 1.698 rad/s``). The plans are read
 exactly, or to a drafting precision (e.g. 0.5 mm); then every value is set
-against the exact plan's and its relative error (the drafting error) is given.
+against the exact plan's and its relative error (the drafting error) is given, with
+the bound :mod:`graphplan.conditioning` states for that precision (``±``). A position
+whose plans intersect two lines at less than ``ILL_ANGLE_DEG`` is marked as a draftsman
+marks it: ``lines meet at 1.3°, reading ±11 mm``.
 
 :func:`plans_markdown` is for people, :func:`plans_csv` for scripts and
 :func:`summary_rows` the compact table of main values on sheet 1. Angles are in
@@ -23,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..analysis import Analysis
+from ..conditioning import Conditioning, intersections, kinematic_conditioning
 from ..constructions import Plan, Reader, Reading, acceleration_plan, plan_scales, velocity_plan
 from ..cycle import output_coordinate
 from ..geometry import norm
@@ -43,7 +47,9 @@ WORDS = {
         "rates": "Angular velocities and accelerations of the links (counter-clockwise +)",
         "exact_note": "Segments measured exactly (lengths to 0.01 mm).",
         "drafting_note": ("Segments read to {p} mm as on a hand drawing; exact values from the "
-                          "exact plans; error = (value − exact)/exact."),
+                          "exact plans; error = (value − exact)/exact; ± is the bound of the "
+                          "drafting error for that reading precision."),
+        "bound": "±", "ill": "Ill-conditioned", "step": "step",
         "translation": "translation",
         "m/s": "m/s", "m/s²": "m/s²", "rad/s": "rad/s", "rad/s²": "rad/s²", "1/s": "s⁻¹",
         "1/s²": "s⁻²",
@@ -59,7 +65,9 @@ WORDS = {
         "rates": "Угловые скорости и ускорения звеньев (против часовой стрелки +)",
         "exact_note": "Отрезки измерены точно (длины до 0.01 мм).",
         "drafting_note": ("Отрезки прочитаны с точностью {p} мм, как на чертеже от руки; точные "
-                          "значения — по точным планам; погрешность = (значение − точно)/точно."),
+                          "значения — по точным планам; погрешность = (значение − точно)/точно; "
+                          "± — граница погрешности построения при этой точности чтения."),
+        "bound": "±", "ill": "Плохо обусловлено", "step": "шаг",
         "translation": "поступательное движение",
         "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²", "1/s": "с⁻¹",
         "1/s²": "с⁻²",
@@ -92,6 +100,9 @@ class PositionPlans:
         Index of the position in ``analysis.kin``.
     precision : float
         Reading precision, mm (0: exact).
+    conditioning : Conditioning or None
+        The plans' intersections (their marks) and, when ``precision`` > 0, the bound of
+        every figure (:func:`graphplan.conditioning.kinematic_conditioning`).
     """
 
     label: str
@@ -103,6 +114,12 @@ class PositionPlans:
     length_scale: Scale
     index: int
     precision: float = 0.0
+    conditioning: Conditioning | None = None
+
+    def bound(self, plan: str, name: str) -> float | None:
+        """± of a figure (a segment's name, ``"ω2"``), or None (exact mode)."""
+        c = self.conditioning
+        return None if c is None else c.bound(plan, name)
 
     def plans(self, kind: str) -> tuple[Plan, Plan]:
         """The plan of ``kind`` (``"velocity"``/``"acceleration"``) as drawn, and exact."""
@@ -127,6 +144,9 @@ def plan_readings(analysis: Analysis, precision: float = 0.0) -> list[PositionPl
     """
     if not (math.isfinite(precision) and precision >= 0):
         raise ValueError(f"the reading precision must be finite and ≥ 0 mm (got {precision!r})")
+    key = (id(analysis), float(precision))
+    if _LAST.get("key") == key and _LAST.get("analysis") is analysis:
+        return list(_LAST["plans"])
     mech, kin = analysis.mech, analysis.kin
     kl, kv, ka = plan_scales(mech, kin)
     reader = Reader(precision)
@@ -139,9 +159,18 @@ def plan_readings(analysis: Analysis, precision: float = 0.0) -> list[PositionPl
             ea = acceleration_plan(mech, kin, k, kl, ka, ev)
         else:
             ev, ea = vp, ap
+        if precision > 0:
+            cond = kinematic_conditioning(mech, kin, k, kl, kv, ka, precision)
+        else:
+            cond = Conditioning(kin.labels[k], 0.0, intersections(vp) + intersections(ap))
         out.append(PositionPlans(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, vp, ap, ev, ea,
-                                 kl, k, float(precision)))
+                                 kl, k, float(precision), cond))
+    _LAST.update(key=key, analysis=analysis, plans=tuple(out))
     return out
+
+
+_LAST: dict = {}
+"""The last :func:`plan_readings` (the Markdown in two languages and the CSV read it thrice)."""
 
 
 # --- records -------------------------------------------------------------------------------
@@ -199,6 +228,10 @@ class _Line:
         e = self.exact
         return None if not e else (self.value - e) / e
 
+    @property
+    def bound(self) -> float | None:
+        return self.pos.bound(self.plan, self.reading.name)
+
 
 @dataclass(frozen=True, slots=True)
 class _Rate:
@@ -222,6 +255,10 @@ class _Rate:
     @property
     def error(self) -> float | None:
         return None if not self.exact else (self.value - self.exact) / self.exact
+
+    @property
+    def bound(self) -> float | None:
+        return self.pos.bound(self.plan, self.symbol)
 
 
 def _lines(pp: PositionPlans, plan: str) -> list[_Line]:
@@ -348,8 +385,14 @@ def _line_cells(ln: _Line, lang: str) -> list[str]:
              f"{sc.symbol} = {_n(sc.per_mm, 6)} {_localise(sc.unit, lang)}", ln.symbol,
              f"{_n(ln.value)} {unit}"]
     if ln.pos.precision > 0:
-        cells += ["—" if ln.exact is None else f"{_n(ln.exact)} {unit}", _pct(ln.error)]
+        cells += [_pm(ln.bound, unit), "—" if ln.exact is None else f"{_n(ln.exact)} {unit}",
+                  _pct(ln.error)]
     return cells
+
+
+def _pm(bound: float | None, unit: str) -> str:
+    """``±0.0025 m/s`` (2 significant digits), or ``—``."""
+    return "—" if bound is None else f"±{fmt(_finite(bound), 2)} {unit}"
 
 
 def _rate_cells(rate: _Rate, analysis: Analysis, lang: str) -> list[str]:
@@ -357,18 +400,33 @@ def _rate_cells(rate: _Rate, analysis: Analysis, lang: str) -> list[str]:
     unit = w["rad/s"] if rate.plan == "velocity" else w["rad/s²"]
     cells = [rate.link, _formula(rate, analysis, lang), f"{_n(rate.value)} {unit}"]
     if rate.pos.precision > 0:
-        cells += [f"{_n(rate.exact)} {unit}", _pct(rate.error)]
+        b = None if rate.how[0] in ("crank", "const", "translation") else rate.bound
+        cells += [_pm(b, unit) if b is not None else "—", f"{_n(rate.exact)} {unit}",
+                  _pct(rate.error)]
     return cells
 
 
 def _line_header(w: dict[str, str], precision: float) -> list[str]:
     head = [w["segment"], w["mm"], w["scale"], w["quantity"], w["value"]]
-    return head + ([w["exact"], w["error"]] if precision > 0 else [])
+    return head + ([w["bound"], w["exact"], w["error"]] if precision > 0 else [])
 
 
 def _rate_header(w: dict[str, str], precision: float) -> list[str]:
     head = [w["link"], w["formula"], w["value"]]
-    return head + ([w["exact"], w["error"]] if precision > 0 else [])
+    return head + ([w["bound"], w["exact"], w["error"]] if precision > 0 else [])
+
+
+def _marks(pp: PositionPlans, lang: str) -> list[str]:
+    """The draftsman's mark of an ill-conditioned position: one line per intersection."""
+    c = pp.conditioning
+    if c is None or not c.marks:
+        return []
+    w = WORDS[lang]
+    out = []
+    for x in c.marks:
+        out.append(f"**{w['ill']}:** {x.note(lang)} ({w[x.plan]}, {w['step']} {x.step}: "
+                   f"`{x.equation}`).")
+    return out
 
 
 def _where(pp: PositionPlans) -> list[str]:
@@ -438,16 +496,19 @@ def plans_markdown(analysis: Analysis, lang: str = "en", precision: float = 0.0)
         out.append(f"- {_localise(sc.basis, lang)}")
     for pp in positions:
         out += ["", f"## {w['section'].format(label=pp.label, phi=pp.phi_deg)}"]
+        marks = _marks(pp, lang)
+        if marks:
+            out += ["", *marks]
         for plan in _PLANS:
             rows = [_line_cells(ln, lang) for ln in _lines(pp, plan)]
             for r in rows:
                 r[0] = f"`{r[0]}`"
             out += ["", f"### {w[plan]}", "",
-                    *_md_table(_line_header(w, precision), rows, {1, 4, 5, 6})]
+                    *_md_table(_line_header(w, precision), rows, {1, 4, 5, 6, 7})]
         rows = [_rate_cells(r, analysis, lang)
                 for plan in _PLANS for r in _rates(analysis, pp, plan)]
         out += ["", f"### {w['rates']}", "",
-                *_md_table(_rate_header(w, precision), rows, {2, 3, 4})]
+                *_md_table(_rate_header(w, precision), rows, {2, 3, 4, 5})]
     text = "\n".join(out) + "\n"
     if re.search(r"\b(nan|inf)\b", text, re.IGNORECASE):
         raise ValueError("NaN or infinity in the plans' Markdown")
@@ -455,8 +516,13 @@ def plans_markdown(analysis: Analysis, lang: str = "en", precision: float = 0.0)
 
 
 CSV_COLUMNS = ("position", "phi_deg", "plan", "kind", "name", "mm", "scale", "scale_per_mm",
-               "quantity", "value", "unit", "exact_value", "error_pct")
-"""Columns of :func:`plans_csv`; ``kind`` is ``segment`` or ``rate`` (``name`` is then the link)."""
+               "quantity", "value", "unit", "exact_value", "error_pct", "bound",
+               "ill_conditioned")
+"""Columns of :func:`plans_csv`; ``kind`` is ``segment`` or ``rate`` (``name`` is then the link).
+
+``bound`` is ± of ``value`` for the reading precision (empty in exact mode);
+``ill_conditioned`` the draftsman's mark of the position (``lines meet at 1.3°, reading
+±11 mm``), empty where its plans are well conditioned."""
 
 
 def _r(x: float | None) -> str:
@@ -480,18 +546,20 @@ def plans_csv(analysis: Analysis, lang: str = "en", precision: float = 0.0) -> s
     wr.writerow(CSV_COLUMNS)
     for pp in plan_readings(analysis, precision):
         where = [pp.label, _r(pp.phi_deg)]
+        mark = pp.conditioning.note("en") if pp.conditioning is not None else ""
         for plan in _PLANS:
             for ln in _lines(pp, plan):
                 err = None if ln.error is None else ln.error * 100
                 wr.writerow([*where, plan, "segment", ln.reading.name, _r(ln.mm),
                              ln.scale.symbol, _r(ln.scale.per_mm), ln.symbol, _r(ln.value),
-                             _unit(plan, lang), _r(ln.exact), _r(err)])
+                             _unit(plan, lang), _r(ln.exact), _r(err), _r(ln.bound), mark])
         for plan in _PLANS:
             for rt in _rates(analysis, pp, plan):
                 err = rt.error
+                b = None if rt.how[0] in ("crank", "const", "translation") else rt.bound
                 wr.writerow([*where, plan, "rate", rt.link, "", "", "", rt.symbol, _r(rt.value),
                              w["rad/s" if plan == "velocity" else "rad/s²"], _r(rt.exact),
-                             _r(None if err is None else err * 100)])
+                             _r(None if err is None else err * 100), _r(b), mark])
     return buf.getvalue()
 
 
