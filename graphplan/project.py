@@ -13,7 +13,10 @@
 * ``sheet3.svg``, ``dynamics.ru.md``, ``dynamics.en.md``, ``dynamics.csv`` — when the
   variant gives ``dynamics.delta``: sheet 3 (work diagrams, energy–mass diagram,
   flywheel, motor, the check by simulation) and its hand calculation;
-* ``analysis.json`` — the report of ``graphplan analyze --json``.
+* ``analysis.json`` — the report of ``graphplan analyze --json``;
+* with ``--format dxf,pdf,png``, each sheet also (or instead of the SVG) as
+  ``sheetN.dxf`` (CAD, layers, 1:1 mm), ``sheetN.pdf`` (true size) and ``sheetN.png``
+  (a preview at ``--dpi``): :mod:`graphplan.exports`.
 
 Every file is written atomically; the variant file is never overwritten. With
 several variants, each goes into ``DIR/<variant name>/``.
@@ -36,19 +39,30 @@ class Written:
     files: tuple[Path, ...]
 
 
-def project_files(analysis, *, lang: str = "ru", precision: float | None = None) -> dict[str, str]:
-    """Name → text of every output file of a variant (nothing is written here)."""
+def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
+                  formats: tuple[str, ...] = ("svg",), dpi: float | None = None
+                  ) -> dict[str, str | bytes]:
+    """Name → content of every output file of a variant (nothing is written here).
+
+    ``formats`` are the sheets' formats (:data:`graphplan.exports.FORMATS`; SVG text,
+    the others bytes), ``dpi`` the resolution of the PNG previews.
+    """
+    from .exports import DEFAULT_DPI, sheet_files
     from .kinematics_sheet import kinematics_sheet
     from .kinetostatics_sheet import kinetostatics_sheet
     from .render.force_tables import forces_csv, forces_markdown
     from .render.plan_tables import plans_csv, plans_markdown
-    from .render.svg import render_svg
 
     drawing = analysis.mech.settings.get("drawing", {})
     prec = float(drawing.get("reading_mm", 0.5)) if precision is None else precision
+    dpi = DEFAULT_DPI if dpi is None else dpi
+
+    def sheets(named) -> dict[str, str | bytes]:
+        return sheet_files(named, formats, dpi=dpi)
+
     out = {
-        "sheet1.svg": render_svg(kinematics_sheet(analysis, lang=lang)),
-        "sheet2.svg": render_svg(kinetostatics_sheet(analysis, lang=lang)),
+        **sheets({"sheet1": kinematics_sheet(analysis, lang=lang),
+                  "sheet2": kinetostatics_sheet(analysis, lang=lang)}),
         "plans.ru.md": plans_markdown(analysis, "ru", prec),
         "plans.en.md": plans_markdown(analysis, "en", prec),
         "plans.csv": plans_csv(analysis, "en", prec),
@@ -63,30 +77,39 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None)
         from .render.dynamics_tables import dynamics_csv, dynamics_markdown
 
         unit = machine_unit(analysis)
-        out["sheet3.svg"] = render_svg(dynamics_sheet(analysis, lang=lang, unit=unit))
+        out.update(sheets({"sheet3": dynamics_sheet(analysis, lang=lang, unit=unit)}))
         out["dynamics.ru.md"] = dynamics_markdown(unit, "ru")
         out["dynamics.en.md"] = dynamics_markdown(unit, "en")
         out["dynamics.csv"] = dynamics_csv(unit)
     out["analysis.json"] = json.dumps(analysis.to_json(unit), ensure_ascii=False, indent=1,
                                       allow_nan=False) + "\n"
     return out
+
+
 def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,
-                  precision: float | None = None, page: str | None = None) -> Written:
+                  precision: float | None = None, page: str | None = None,
+                  formats: tuple[str, ...] = ("svg",), dpi: float | None = None) -> Written:
     """Analyse ``variant`` and write its output files into ``out_dir``.
 
-    ``page`` ("A1", "A2", "A3") overrides the variant's ``drawing.format``.
+    ``page`` ("A1", "A2", "A3") overrides the variant's ``drawing.format``; ``formats``
+    and ``dpi`` as in :func:`project_files` (a missing export package is reported before
+    any work is done).
     """
     from .analysis import analyze
+    from .exports import check_formats, parse_formats
     from .files import write_atomic
     from .loader import load
 
+    formats = parse_formats(formats)
+    check_formats(formats)
     variant = Path(variant)
     mech = load(variant)
     if page:  # the format decides the scales: the sheet, tables and JSON must agree
         drawing = {**mech.settings.get("drawing", {}), "format": page}
         mech = replace(mech, settings={**mech.settings, "drawing": drawing})
     lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
-    texts = project_files(analyze(mech), lang=lang, precision=precision)
+    texts = project_files(analyze(mech), lang=lang, precision=precision, formats=formats,
+                          dpi=dpi)
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise InputError(f"{out}: the output must be a directory")
