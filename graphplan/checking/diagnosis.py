@@ -1,0 +1,709 @@
+"""Why a figure is wrong: the hypotheses tried, from the most specific to the least.
+
+For a wrong figure (stated ``s``, graphplan's ``e``) :meth:`Diagnoser.diagnose` tries, in
+order, and reports the first that explains ``s`` within the figure's tolerance:
+
+1. **arithmetic** — its line's written numbers do not give its written result;
+2. **unit** — ``s/e`` is 1000, 10⁶ or g (or their inverses) with a unit written;
+3. **sign** — ``s = −e`` for a signed figure (Mур);
+4. **its formula** — the line's formula, evaluated with graphplan's values of its
+   names: giving ``e``, the figure only *follows from* the names whose values are off
+   (``propagated``); not giving ``e``, the formula is wrong — a term of the wrong sign
+   (``sign``) or otherwise (``formula``);
+5. **the student's own chain** — a segment from the student's force (``R43_mm =
+   R43/Kp``), and, for a mechanism of one group, the crank's reaction closing the
+   group's polygon with the student's loads and outer reaction, its arm h21 and Mур:
+   right working from a wrong figure (``propagated``);
+6. **geometry** — an arm longer than the distance from its centre to the force's point;
+7. **scale** — a length measured at another scale the student used, or a value
+   computed with another of the student's scales (Kv for Ka);
+8. **lever arm** — the arm of the same force about another point, or another arm;
+9. **other models** — the inertia forces reversed (``sign``), left out (``model``);
+10. **another position** of the same mechanism, or a **neighbouring variant**
+    (``other-variant``);
+11. **label** — a given length or mass equal to another one (``lАВ = 0,08`` is l_OA);
+12. a plain ratio of scales (×2, ×0.5, ×2.5 …) for a length on paper (``scale``);
+13. otherwise ``model``: graphplan's exact value and the difference.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .engine import LineWork, Occurrence, _close
+from .errors import ExpressionError
+from .expressions import show, value
+from .matching import flip_term, sum_terms
+from .quantities import SCALE_OF_DIMENSION, Quantity
+from .words import num, pct, qty, scale_text
+
+UNIT_RATIOS = ((1e3, "1000 (N and kN, or mm and m)", "1000 (Н и кН, или мм и м)"),
+               (1e6, "10⁶", "10⁶"), (9.81, "g (kg and N)", "g (кг и Н)"))
+SERIES_RATIOS = (2.0, 0.5, 2.5, 0.4, 4.0, 0.25, 5.0, 0.2, 10.0, 0.1)
+
+
+@dataclass(frozen=True, slots=True)
+class Diag:
+    """A diagnosis: the kind of finding, the explanation (en, ru), what it follows from."""
+
+    kind: str
+    en: str
+    ru: str
+    follows: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
+    rank: int = 99  # the hypothesis' place in the order of the module docstring
+
+
+@dataclass(slots=True)
+class Fig:
+    """A figure beside graphplan (built by :meth:`Checker.evaluate`).
+
+    ``s`` is the stated value (a magnitude unless the quantity is signed), ``e``
+    graphplan's, ``scales`` the scales ``e`` was computed at, ``ok``/``tol`` the bands
+    (absolute) and ``rel`` the relative tolerance.
+    """
+
+    scope: str
+    key: tuple
+    occs: list[Occurrence]
+    q: Quantity
+    s: float
+    e: float | None
+    model: str
+    scales: dict[str, float]
+    scale_note: str
+    ok: float
+    tol: float
+    rel: float
+    verdict: str
+    diag: Diag | None = None
+    extra_notes: list[str] = field(default_factory=list)
+
+    @property
+    def name(self) -> str:
+        o = self.occs[0]
+        if o.position is None or "@" in o.name or self.q.scope == "global":
+            return o.name
+        return f"{o.name} ({o.position})"
+
+
+class Diagnoser:
+    """Runs the hypotheses of the module docstring for the figures of one check."""
+
+    def __init__(self, checker, figs: dict[tuple, Fig]):
+        self.c = checker
+        self.w = checker.w
+        self.ref = checker.ref
+        self.figs = figs
+
+    # --- helpers ----------------------------------------------------------------------
+
+    def near(self, f: Fig, x: float | None, y: float | None = None) -> bool:
+        """``x`` within the figure's tolerance of ``y`` (default: of its stated value)."""
+        if x is None:
+            return False
+        y = f.s if y is None else y
+        floor = max(f.tol - f.rel * abs(f.e or 0.0), 0.0)
+        return abs(x - y) <= max(f.rel * max(abs(x), abs(y)), floor, 1e-12)
+
+    def _u(self, f: Fig, x: float | None, lang: str = "en") -> str:
+        return qty(x, f.q.unit, lang)
+
+    def model_text(self, f: Fig) -> Diag:
+        rel = (f.s - f.e) / abs(f.e) if f.e else None  # type: ignore[operator]
+        en = f"graphplan's exact construction gives {self._u(f, f.e)} ({pct(rel)})."
+        ru = f"точный расчёт даёт {self._u(f, f.e, 'ru')} ({pct(rel, 'ru')})."
+        if f.scale_note:
+            en = en[:-1] + f" at {f.scale_note}."
+            ru = ru[:-1] + f" при {f.scale_note}."
+        return Diag("model", en, ru)
+
+    def inaccurate(self, f: Fig) -> Diag:
+        rel = (f.s - f.e) / abs(f.e) if f.e else None  # type: ignore[operator]
+        tol = f"{f.rel * 100:g} %"
+        en = (f"off by {pct(rel)} of graphplan's {self._u(f, f.e)}: beyond the drafting "
+              f"reading accuracy, within the {tol} the method allows.")
+        ru = (f"отличается на {pct(rel, 'ru')} от точного {self._u(f, f.e, 'ru')}: больше "
+              f"точности отсчёта, но в пределах допуска {tol.replace('.', ',')}.")
+        return Diag("model", en, ru)
+
+    # --- the hypotheses ---------------------------------------------------------------
+
+    def diagnose(self, f: Fig) -> Diag:
+        """The first hypothesis of the module docstring that explains the figure."""
+        from dataclasses import replace
+
+        for rank, h in enumerate((self._arithmetic, self._unit, self._sign, self._formula,
+                                  self._segment, self._polygon, self._lever_arm,
+                                  self._geometry, self._scale, self._models,
+                                  self._other_position,
+                                  self._neighbours, self._label, self._series)):
+            d = h(f)
+            if d is not None:
+                if d.kind == "arithmetic":
+                    alt = self._models(f)
+                    if alt is not None:
+                        d = replace(d, notes=(*d.notes, alt.ru if self.c.lang == "ru"
+                                              else alt.en))
+                return replace(d, rank=rank)
+        return self.model_text(f)
+
+    def near_copy(self, f: Fig, x: float | None) -> bool:
+        """``x`` within the figure's *ok* band of its stated value: a copied number."""
+        if x is None:
+            return False
+        floor = max(f.ok - self.c.tol.segment_ok * abs(f.e or 0.0), 0.0) if \
+            f.q.tolerance == "segment" else 0.0
+        rel = self.c.tol.segment_ok if f.q.tolerance == "segment" else self.c.tol.derived_ok
+        return abs(x - f.s) <= max(rel * max(abs(x), abs(f.s)), floor, 1e-12)
+
+    def _arithmetic(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        lw = o.work
+        if o.role != "result" or lw is None or lw.arithmetic not in ("wrong", "sign"):
+            return None
+        a, b = lw.bad  # type: ignore[misc]
+        if lw.arithmetic == "sign":
+            en = (f"the written numbers give {num(a.value)}; the result {b.text} has the "
+                  f"opposite sign (graphplan: {self._u(f, f.e)}).")
+            ru = (f"записанные числа дают {num(a.value, 'ru')}; у результата {b.text} "
+                  f"обратный знак (по расчёту {self._u(f, f.e, 'ru')}).")
+            return Diag("sign", en, ru)
+        en = f"the written numbers give {a.text} = {num(a.value)}, not {b.text}"
+        ru = f"записанные числа дают {a.text} = {num(a.value, 'ru')}, а не {b.text}"
+        re_c = self._canonical(lw, o, float(a.value))
+        if re_c is not None and self.near(f, re_c, f.e):
+            en += f"; {num(a.value)} is right (graphplan: {self._u(f, f.e)})."
+            ru += f"; {num(a.value, 'ru')} — верно (по расчёту {self._u(f, f.e, 'ru')})."
+        else:
+            en += f" (graphplan: {self._u(f, f.e)})."
+            ru += f" (по расчёту {self._u(f, f.e, 'ru')})."
+        return Diag("arithmetic", en, ru)
+
+    def _canonical(self, lw: LineWork, o: Occurrence, raw: float) -> float | None:
+        """A raw number of the line in the unit of its result's quantity."""
+        q = o.q
+        if o.explicit is not None and lw.result is not None and lw.result.unit is not None:
+            v = raw * lw.result.unit.factor / q.factor
+        else:
+            v = raw * 1000.0 ** o.prefix
+        return v if q.signed else abs(v)
+
+    def _unit(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        if o.explicit is None or not f.e or not f.s:
+            return None
+        for r, en_r, ru_r in UNIT_RATIOS:
+            if r == 9.81 and f.q.dimension not in ("N", "kg", "N·m"):
+                continue
+            for ratio in (r, 1.0 / r):
+                if self.near(f, f.s, f.e * ratio):
+                    times = f"{num(ratio)} times" if ratio > 1 else f"1/{num(1 / ratio)} of"
+                    en = (f"{o.name} = {o.text} is {times} graphplan's "
+                          f"{self._u(f, f.e)}: a unit mix-up (a factor of {en_r}).")
+                    times = (f"в {num(ratio, 'ru')} раз больше" if ratio > 1 else
+                             f"в {num(1 / ratio, 'ru')} раз меньше")
+                    ru = (f"{o.name} = {o.text} — {times} точного "
+                          f"{self._u(f, f.e, 'ru')}: перепутаны единицы (множитель {ru_r}).")
+                    return Diag("unit", en, ru)
+        return None
+
+    def _sign(self, f: Fig) -> Diag | None:
+        if not f.q.signed or not f.e or not self.near(f, f.s, -f.e):
+            return None
+        en = (f"the size is right but the sign is not: graphplan gives {self._u(f, f.e)} "
+              "(counter-clockwise positive).")
+        ru = (f"величина верна, знак — нет: по расчёту {self._u(f, f.e, 'ru')} (против "
+              "часовой стрелки — плюс).")
+        return Diag("sign", en, ru)
+
+    # the line's formula with graphplan's values
+
+    def line_scales(self, lw: LineWork) -> dict[str, float]:
+        """For each scale named in a line: the value graphplan's figures are read at —
+        the stated one, or the one used in the line when the line's lengths on paper fit
+        it better (the drawing was made at it)."""
+        out: dict[str, float] = {}
+        stated = self.w.stated_scales(lw.position)
+        for o in lw.occs:
+            if o.role != "operand" or o.q.kind != "scale":
+                continue
+            sym = o.q.name
+            k0 = stated.get(sym)
+            if k0 is None or _close(o.value, k0, 1e-6):
+                out[sym] = o.value if k0 is None else k0
+                continue
+            papers = [p for p in lw.occs if p.role == "operand" and p.q.on_paper and
+                      p.q.scale == sym]
+            votes = 0
+            for p in papers:
+                e_used = self.w.expected(p.q, p.scope, p, "rule", {**stated, sym: o.value})
+                e_st = self.w.expected(p.q, p.scope, p, "rule", stated)
+                if e_used is None or e_st is None:
+                    continue
+                votes += 1 if abs(p.value - e_used) < abs(p.value - e_st) else -1
+            out[sym] = o.value if votes > 0 else k0
+        return out
+
+    def model_env(self, lw: LineWork, model: str = "rule"
+                  ) -> tuple[dict[str, float] | None, list[str]]:
+        """graphplan's values of the names of a line (in the student's units) and the
+        names whose written values are off."""
+        if lw.matched is None:
+            return None, []
+        scales = self.line_scales(lw)
+        stated = self.w.stated_scales(lw.position)
+        env: dict[str, float] = {}
+        offs: list[str] = []
+        for name, _node in lw.matched.bindings:
+            o = next((x for x in lw.occs if x.name == name and x.role == "operand"), None)
+            if o is None:
+                return None, []
+            q = o.q
+            if q.kind == "scale":
+                right = scales.get(q.name, o.value)
+            else:
+                sc = {**stated, **scales}
+                right = self.w.expected(q, o.scope, o, model, sc)
+                if right is None:
+                    return None, []
+            env[name] = right / 1000.0 ** o.prefix * (math.copysign(1.0, o.raw) if
+                                                      not q.signed else 1.0)
+            val = o.value if q.signed else abs(o.value)
+            right_c = right if q.signed else abs(right)
+            ok, _tol, _ = self.c.band(q, right_c, {**stated, **scales})
+            if abs(val - right_c) > ok:
+                label = o.name if o.position is None or q.scope == "global" or \
+                    "@" in o.name else f"{o.name} ({o.position})"
+                if label not in offs:
+                    offs.append(label)
+        return env, offs
+
+    def _formula(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        lw = o.work
+        if o.role != "result" or lw is None or lw.template is None or f.e is None:
+            return None
+        env, offs = self.model_env(lw)
+        if env is None:
+            return None
+        try:
+            F = self._canonical(lw, o, value(lw.template, env))
+        except ExpressionError:
+            return None
+        if F is not None and self.near(f, F, f.e):
+            if not offs:
+                return None
+            en = (f"follows from {', '.join(offs)}: with graphplan's values this formula gives "
+                  f"{self._u(f, f.e)}.")
+            ru = (f"следует из {', '.join(offs)}: с точными значениями эта формула даёт "
+                  f"{self._u(f, f.e, 'ru')}.")
+            return Diag("propagated", en, ru, tuple(offs))
+        for i, (_sg, term) in enumerate(sum_terms(lw.template)):
+            t2 = flip_term(lw.template, i)
+            if t2 is None:
+                continue
+            try:
+                F2 = self._canonical(lw, o, value(t2, env))
+            except ExpressionError:
+                continue
+            if F2 is not None and self.near(f, F2, f.e):
+                why = self._sign_reason(f, term)
+                en = (f"a term of the formula has the wrong sign: with {show(term)} taken with "
+                      f"the opposite sign it gives graphplan's {self._u(f, f.e)}{why[0]}.")
+                ru = (f"слагаемое формулы взято с неверным знаком: если {show(term)} взять с "
+                      f"обратным знаком, получится точное {self._u(f, f.e, 'ru')}{why[1]}.")
+                return Diag("sign", en, ru)
+        if F is None:
+            return None
+        en = (f"the formula does not hold: with graphplan's values it gives {self._u(f, F)}, "
+              f"but the exact value is {self._u(f, f.e)}.")
+        ru = (f"формула неверна: с точными значениями она даёт {self._u(f, F, 'ru')}, а точное "
+              f"значение {self._u(f, f.e, 'ru')}.")
+        return Diag("formula", en, ru)
+
+    def _sign_reason(self, f: Fig, term) -> tuple[str, str]:
+        names = {n for n in _names(term)}
+        if any(n.startswith(("Pи", "Ри", "Фи", "Ф", "Mи", "Ми")) for n in names):
+            return ((" — the inertia force points against the acceleration (Pи = −m·a); "
+                     "at this position it opposes the weight"),
+                    (" — сила инерции направлена против ускорения (Pи = −m·a); в этом "
+                     "положении она противоположна силе тяжести"))
+        return "", ""
+
+    # the student's own chain
+
+    def _segment(self, f: Fig) -> Diag | None:
+        q, o = f.q, f.occs[0]
+        if q.kind != "segment" or not q.scale or o.position is None:
+            return None
+        base_key = q.key[1:]
+        base = self.figs.get((f.scope, base_key))
+        if base is None or base.occs[0].work is None:
+            return None
+        bw = base.occs[0].work
+        if base.occs[0].role == "result" and any(x.q.key == q.key for x in bw.occs
+                                                  if x.role == "operand"):
+            return None  # the value was computed from this segment, not the other way
+        k = f.scales.get(q.scale)
+        if not k or not self.near(f, base.s / k):
+            return None
+        if base.verdict == "ok":
+            return None
+        en = (f"follows from {base.name} = {self._u(base, base.s)}: {num(base.s)}/{num(k)} = "
+              f"{num(base.s / k)} mm, right for that value (graphplan: {self._u(f, f.e)}).")
+        ru = (f"следует из {base.name} = {self._u(base, base.s, 'ru')}: "
+              f"{num(base.s, 'ru')}/{num(k, 'ru')} = {num(base.s / k, 'ru')} мм — верно для "
+              f"этого значения (по расчёту {self._u(f, f.e, 'ru')}).")
+        return Diag("propagated", en, ru, (base.name,))
+
+    def student_polygon(self, position: str) -> tuple[np.ndarray, list[str]] | None:
+        """The crank's reaction on the group (R12) from the group's polygon drawn with the
+        student's loads and outer reaction (graphplan's directions): ``R12 = −(ΣF + R43)``.
+        Only for a mechanism of one group; ``None`` when the student gives no R43."""
+        from ..kinetostatics import dyad_pairs, reaction_name
+
+        mech, ref = self.ref.mech, self.ref
+        k = ref.index(position)
+        if len(mech.dyads) != 1 or k is None:
+            return None
+        d = mech.dyads[0]
+        pairs = dyad_pairs(mech, d)
+        outer = pairs[2]
+        i, j = outer.by, outer.on
+        fig = self.figs.get((position, ("reaction", i, j)))
+        scales = self.w.stated_scales(position)
+        if fig is not None:
+            mag = fig.s
+        else:
+            seg = self.figs.get((position, ("segment", "reaction", i, j)))
+            if seg is None or "Kp" not in scales:
+                return None
+            fig, mag = seg, seg.s * scales["Kp"]
+        vec = None
+        for model in ("rule", "full"):
+            fs = ref.forces[model]
+            name = reaction_name(i, j)
+            if name in fs.reactions and np.hypot(*fs.reactions[name].vector[k]) > 0:
+                vec = np.asarray(fs.reactions[name].vector[k], float)
+                break
+        if vec is None:
+            return None
+        off = [] if fig.verdict != "wrong" else [fig.name]
+        total = mag * vec / float(np.hypot(*vec))
+        rule = ref.loads["rule"]
+        for f in ref.loads["full"].all_forces():
+            if f.link not in d.links:
+                continue
+            v = np.asarray(f.vector[k], float)
+            size = float(np.hypot(*v))
+            if size == 0:
+                continue
+            lf = self._load_fig(f.name, position)
+            kept = any(x.name == f.name and np.hypot(*x.vector[k]) > 0
+                       for x in rule.all_forces())
+            if lf is None and not kept:
+                continue
+            m = lf.s if lf is not None else size
+            if lf is not None and lf.verdict == "wrong":
+                off.append(lf.name)
+            total = total + m * v / size
+        return -total, off
+
+    def _load_fig(self, name: str, position: str) -> Fig | None:
+        for f in self.figs.values():
+            if f.q.kind == "load" and f.q.name == name and f.scope in (position, "global"):
+                return f
+        return None
+
+    def _polygon(self, f: Fig) -> Diag | None:
+        mech = self.ref.mech
+        o = f.occs[0]
+        if o.position is None or o.position not in self.ref.labels or len(mech.dyads) != 1:
+            return None
+        from ..kinetostatics import dyad_pairs
+
+        first = dyad_pairs(mech, mech.dyads[0])[0]
+        key = f.key
+        rkey = ("reaction", first.by, first.on)
+        keys = [rkey, ("segment", *rkey), ("crank_arm", first.on), ("M_bal",)]
+        crank_loads = any(np.any(x.vector) for x in self.ref.loads["full"].forces.get(
+            mech.crank.link, ()))
+        if crank_loads:  # Mур = rA × R12 only for a crank without loads of its own
+            keys.remove(("M_bal",))
+        else:  # and R41 = R21
+            fkey = ("reaction", mech.frame_link, mech.crank.link)
+            keys += [fkey, ("segment", *fkey)]
+        if key not in keys:
+            return None
+        got = self.student_polygon(o.position)
+        if got is None:
+            return None
+        r12, off = got
+        if not off:
+            return None
+        k = self.ref.index(o.position)
+        pin = self.ref.kin.pos.points[mech.crank.pin][k] - self.ref.kin.pos.points[
+            mech.crank.pivot][k]
+        size = float(np.hypot(*r12))
+        if key[0] == "reaction":
+            v = size
+        elif key[0] == "segment":
+            kp = f.scales.get("Kp")
+            if not kp:
+                return None
+            v = size / kp
+        elif key[0] == "crank_arm":
+            kl = f.scales.get("Kl")
+            if not kl or size == 0:
+                return None
+            v = abs(float(pin[0] * r12[1] - pin[1] * r12[0])) / size / kl
+        else:
+            v = float(pin[0] * r12[1] - pin[1] * r12[0])
+        if not self.near(f, v) or self.near(f, v, f.e):
+            return None
+        en = (f"follows from {', '.join(off)}: the group's polygon closed with these values "
+              f"gives {self._u(f, v)} (graphplan: {self._u(f, f.e)}).")
+        ru = (f"следует из {', '.join(off)}: план сил группы, замкнутый с этими значениями, "
+              f"даёт {self._u(f, v, 'ru')} (по расчёту {self._u(f, f.e, 'ru')}).")
+        return Diag("propagated", en, ru, tuple(off))
+
+    # geometry, scales, arms
+
+    def _arm(self, f: Fig):
+        """An arm read at a known position with Kl stated: (quantity, occurrence, k, Kl)."""
+        q, o = f.q, f.occs[0]
+        if q.kind != "arm" or o.position not in self.ref.labels:
+            return None
+        kl = f.scales.get("Kl")
+        return (q, o, self.ref.index(o.position), kl) if kl else None
+
+    def _geometry(self, f: Fig) -> Diag | None:
+        arm = self._arm(f)
+        if arm is None:
+            return None
+        q, o, k, kl = arm
+        mech = self.ref.mech
+        if q.key[0] == "crank_arm":
+            limit, force, about, at = mech.crank.length, f"R{q.key[1]}{mech.crank.link}", \
+                mech.crank.pivot, mech.crank.pin
+        else:
+            force, about = q.key[1], q.key[2]
+            limit = self.ref.arm_limit(force, about, k)
+            line = self.ref.force_line(force, k)
+            at = "its point"
+            if line is not None:
+                pts = self.ref.kin.pos.points
+                at = next((p for p in pts if np.allclose(pts[p][k], line[0], atol=1e-9)),
+                          "its point")
+        if limit is None:
+            return None
+        lim_mm = limit / kl
+        if f.s <= lim_mm + max(f.tol - f.rel * abs(f.e or 0.0), self.c.tol.reading_mm):
+            return None
+        en = (f"impossible: an arm of {force} about {about} cannot exceed {about}{at} = "
+              f"{num(lim_mm)} mm at {scale_text('Kl', kl)} (graphplan: {self._u(f, f.e)}).")
+        ru = (f"невозможно: плечо {force} относительно {about} не может быть больше "
+              f"{about}{at} = {num(lim_mm, 'ru')} мм при {scale_text('Kl', kl, 'ru')} (по "
+              f"расчёту {self._u(f, f.e, 'ru')}).")
+        return Diag("geometry", en, ru)
+
+    def _scale(self, f: Fig) -> Diag | None:
+        q, o = f.q, f.occs[0]
+        if not f.e:
+            return None
+        if q.on_paper and q.scale:
+            k_now = f.scales.get(q.scale)
+            used = {x.value for x in self.w.occs if x.q.key == ("scale", q.scale)}
+            for k2 in sorted(used):
+                if not k_now or _close(k2, k_now, 1e-6):
+                    continue
+                e2 = f.e * k_now / k2
+                if self.near(f, e2):
+                    en = (f"{num(f.s)} mm is graphplan's length at {scale_text(q.scale, k2)} "
+                          f"({num(e2)} mm), not at {scale_text(q.scale, k_now)} "
+                          f"({num(f.e)} mm): measured at another scale.")
+                    ru = (f"{num(f.s, 'ru')} мм — точная длина при "
+                          f"{scale_text(q.scale, k2, 'ru')} ({num(e2, 'ru')} мм), а не при "
+                          f"{scale_text(q.scale, k_now, 'ru')} ({num(f.e, 'ru')} мм): "
+                          "измерено в другом масштабе.")
+                    return Diag("scale", en, ru)
+            return None
+        right = SCALE_OF_DIMENSION.get(q.dimension)
+        st = self.w.stated_scales(o.position)
+        if right is None or right not in st:
+            return None
+        for other, k2 in st.items():
+            if other == right or not k2:
+                continue
+            e2 = f.e * k2 / st[right]
+            if self.near(f, e2):
+                en = (f"{self._u(f, f.s)} is graphplan's value computed with {other} = "
+                      f"{num(k2)} in place of {right} = {num(st[right])}: a swapped scale "
+                      f"(graphplan: {self._u(f, f.e)}).")
+                ru = (f"{self._u(f, f.s, 'ru')} получается, если вместо {right} = "
+                      f"{num(st[right], 'ru')} взять {other} = {num(k2, 'ru')}: перепутан "
+                      f"масштаб (по расчёту {self._u(f, f.e, 'ru')}).")
+                return Diag("scale", en, ru)
+        return None
+
+    def _lever_arm(self, f: Fig) -> Diag | None:
+        arm = self._arm(f)
+        if arm is None:
+            return None
+        q, o, k, kl = arm
+        mech = self.ref.mech
+        cands: list[tuple[str, str, float]] = []
+        if q.key[0] == "arm":
+            force, about = q.key[1], q.key[2]
+            for p in self.ref.kin.pos.points:
+                if self.ref.point(about) == p:
+                    continue
+                v = self.ref.value(("arm", force, p), k)
+                if v is not None:
+                    cands.append((f"the arm of {force} about {p}", f"плечо {force} "
+                                  f"относительно {p}", v / kl))
+        v = self.ref.value(("crank_arm", mech.dyads[0].links[0]), k) if mech.dyads else None
+        if v is not None and q.key[0] != "crank_arm":
+            cands.append(("h21, the arm of R21 about the crank's pivot",
+                          "h21, плечо R21 относительно оси кривошипа", v / kl))
+        arms = next((p.arms for p in self.w.work.positions if p.label == o.position), {})
+        for spec in arms.values():
+            if ("arm", spec.force, spec.about) == q.key:
+                continue
+            v = self.ref.value(("arm", spec.force, spec.about), k)
+            if v is not None:
+                cands.append((f"{spec.name}, the arm of {spec.force} about {spec.about}",
+                              f"{spec.name}, плечо {spec.force} относительно {spec.about}",
+                              v / kl))
+        best = None
+        for en_c, ru_c, v in cands:
+            if self.near(f, v) and not self.near(f, v, f.e) and (
+                    best is None or abs(v - f.s) < abs(best[2] - f.s)):
+                best = (en_c, ru_c, v)
+        if best is None:
+            return None
+        en = (f"{num(f.s)} mm is {best[0]} ({num(best[2])} mm); {o.name} should be "
+              f"{num(f.e)} mm.")
+        ru = (f"{num(f.s, 'ru')} мм — это {best[1]} ({num(best[2], 'ru')} мм); {o.name} "
+              f"должно быть {num(f.e, 'ru')} мм.")
+        return Diag("lever-arm", en, ru)
+
+    def _models(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        if f.e is None:
+            return None
+        for model, kind, en_m, ru_m in (
+                ("reversed", "sign", "the inertia forces reversed (Pи = +m·a instead of "
+                 "−m·a)", "с силами инерции обратного направления (Pи = +m·a вместо −m·a)"),
+                ("no-inertia", "model", "the inertia forces left out",
+                 "без сил инерции")):
+            e_m = self.w.expected(f.q, f.scope, o, model, f.scales)
+            if e_m is None:
+                continue
+            e_m = e_m if f.q.signed else abs(e_m)
+            if self.near(f, e_m) and not self.near(f, e_m, f.e):
+                en = (f"matches graphplan's analysis with {en_m}: {self._u(f, e_m)}; the right "
+                      f"value is {self._u(f, f.e)}.")
+                ru = (f"совпадает с расчётом {ru_m}: {self._u(f, e_m, 'ru')}; верное значение "
+                      f"{self._u(f, f.e, 'ru')}.")
+                return Diag(kind, en, ru)
+        return None
+
+    def _other_position(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        if f.q.scope == "global" or o.position is None:
+            return None
+        best = None
+        for label in self.ref.labels:
+            if label == o.position:
+                continue
+            e_k = self.ref.expected(f.q, label, f.scales)
+            if e_k is None:
+                continue
+            e_k = e_k if f.q.signed else abs(e_k)
+            if self.near_copy(f, e_k) and not self.near(f, e_k, f.e) and (
+                    best is None or abs(e_k - f.s) < abs(best[1] - f.s)):
+                best = (label, e_k)
+        if best is None:
+            return None
+        en = (f"{self._u(f, f.s)} is graphplan's value at position {best[0]} "
+              f"({self._u(f, best[1])}), not at {o.position} ({self._u(f, f.e)}).")
+        ru = (f"{self._u(f, f.s, 'ru')} — точное значение для положения {best[0]} "
+              f"({self._u(f, best[1], 'ru')}), а не {o.position} ({self._u(f, f.e, 'ru')}).")
+        return Diag("other-variant", en, ru)
+
+    def _neighbours(self, f: Fig) -> Diag | None:
+        o = f.occs[0]
+        for name, nb in self.c.neighbours:
+            where = o.position if f.q.scope != "global" else 0
+            if where is not None and where not in nb.labels and where != 0:
+                continue
+            try:
+                e_n = nb.expected(f.q, where if where is not None else 0, f.scales)
+            except (KeyError, ValueError, IndexError):
+                continue
+            if e_n is None:
+                continue
+            e_n = e_n if f.q.signed else abs(e_n)
+            if self.near_copy(f, e_n) and not self.near(f, e_n, f.e):
+                en = (f"{self._u(f, f.s)} is the value of variant {name!r} "
+                      f"({self._u(f, e_n)}), not of this one ({self._u(f, f.e)}).")
+                ru = (f"{self._u(f, f.s, 'ru')} — значение из варианта {name!r} "
+                      f"({self._u(f, e_n, 'ru')}), а не из этого ({self._u(f, f.e, 'ru')}).")
+                return Diag("other-variant", en, ru)
+        return None
+
+    def _label(self, f: Fig) -> Diag | None:
+        q, o = f.q, f.occs[0]
+        if q.kind not in ("given", "drawn"):
+            return None
+        vocab = o.work.vocab if o.work is not None else self.w.vocab_general
+        seen = set()
+        for other in vocab.names.values():
+            if other.key in seen or other.key == q.key or other.kind != q.kind or \
+                    other.unit != q.unit:
+                continue
+            seen.add(other.key)
+            e2 = self.w.expected(other, "global", o, "rule", f.scales)
+            if e2 is not None and self.near(f, abs(e2)) and not self.near(f, abs(e2), f.e):
+                en = (f"{num(f.s)} is {other.name} ({self._u(f, abs(e2))}), not {o.name} "
+                      f"({self._u(f, f.e)}): a right number under a wrong name.")
+                ru = (f"{num(f.s, 'ru')} — это {other.name} ({self._u(f, abs(e2), 'ru')}), а "
+                      f"не {o.name} ({self._u(f, f.e, 'ru')}): верное число под чужим "
+                      "обозначением.")
+                return Diag("label", en, ru)
+        return None
+
+    def _series(self, f: Fig) -> Diag | None:
+        if not f.q.on_paper or not f.e:
+            return None
+        for r in SERIES_RATIOS:
+            if self.near_copy(f, f.e * r):
+                sym = f.q.scale or ""
+                en = (f"{num(f.s)} mm is {num(r)}× graphplan's {num(f.e)} mm: measured at "
+                      f"another scale than {scale_text(sym, f.scales.get(sym, 0.0))}.")
+                ru = (f"{num(f.s, 'ru')} мм — в {num(r, 'ru')} раза от точных "
+                      f"{num(f.e, 'ru')} мм: измерено в другом масштабе.")
+                return Diag("scale", en, ru)
+        return None
+
+
+def _names(node) -> list[str]:
+    from .expressions import Bin, Call, Neg, Sym
+
+    if isinstance(node, Sym):
+        return [node.name]
+    if isinstance(node, Neg):
+        return _names(node.x)
+    if isinstance(node, Bin):
+        return _names(node.a) + _names(node.b)
+    if isinstance(node, Call):
+        return _names(node.arg)
+    return []
+
+
+__all__ = ["Diag", "Diagnoser", "Fig"]

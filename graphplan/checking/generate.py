@@ -1,0 +1,580 @@
+"""A student's calculation written by graphplan itself, and faults put into it.
+
+:func:`generate` writes, for a variant, the calculation a careful student would write —
+scales, ω1, the velocities and accelerations read off the plans (``vB = pb∙Kv = …``),
+weights and inertia forces, each group's moment equation for its tangential reaction
+with the arms measured on the position plan, the reactions read off the force plans
+(``R12 = R12_mm∙Kp = …``), h21 and ``Мур = R21∙h21∙Кl = …`` — from graphplan's own
+constructions (:mod:`graphplan.constructions`, :mod:`graphplan.force_plans`) at
+graphplan's scales, every segment rounded to 0,01 mm and every result computed from the
+written numbers, as a student computes it. It must pass the checker clean.
+
+:func:`inject` then puts faults into it, each on its own line and position:
+
+==============  ==================================================================
+``arithmetic``  a result that its numbers do not give (×1,2 … ×1,9)
+``scale``       Ka written in place of Kv, or Kv in place of Ka, in a product
+``other``       a segment of another position's plan (``other-variant``)
+``sign``        Mур with the wrong sign
+``unit``        a reaction in кН with the number of newtons
+``lever-arm``   the arm of the same force about another point
+==============  ==================================================================
+
+Each injected fault is returned with the finding the checker must report for it
+(position, quantity, kind).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from .expressions import evaluate
+from .reference import Reference
+
+FAULT_KINDS = ("arithmetic", "scale", "other", "sign", "unit", "lever-arm")
+KIND_OF_FAULT = {"arithmetic": "arithmetic", "scale": "scale", "other": "other-variant",
+                 "sign": "sign", "unit": "unit", "lever-arm": "lever-arm"}
+
+
+def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
+    """A number as a student writes it: decimal comma, ``digits`` significant digits."""
+    if decimals is not None:
+        s = f"{x:.{decimals}f}"
+    elif x == 0:
+        s = "0"
+    else:
+        mag = math.floor(math.log10(abs(x)))
+        s = f"{x:.{max(0, digits - 1 - mag)}f}"
+        if "." in s:
+            s = s.rstrip("0").rstrip(".")
+    if s.startswith("-") and float(s) == 0:
+        s = s[1:]
+    return s.replace(".", ",")
+
+
+@dataclass(frozen=True, slots=True)
+class Operand:
+    """A name of a formula and the number written for it."""
+
+    name: str
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class GenLine:
+    """One written line: ``lhs = formula = numbers = result unit``.
+
+    ``formula`` names its operands in braces (``"{πb}∙{Ka}"``); the numbers are the
+    formula with each operand's text. ``tags`` say what the line is (for the faults).
+    """
+
+    lhs: str
+    formula: str
+    operands: tuple[Operand, ...]
+    unit: str
+    digits: int = 5
+    sign: int = 1
+    tags: tuple[str, ...] = ()
+    result_text: str | None = None
+
+    @property
+    def numbers(self) -> str:
+        out = self.formula
+        for op in self.operands:
+            out = out.replace("{" + op.name + "}", op.text)
+        return out
+
+    @property
+    def template(self) -> str:
+        return re.sub(r"\{([^}]+)\}", r"\1", self.formula)
+
+    @property
+    def result(self) -> float:
+        if not self.operands:
+            return evaluate(self.result_text or "0").number
+        return evaluate(self.numbers).number
+
+    def text(self) -> str:
+        if not self.operands:
+            return f"{self.lhs} = {self.result_text} {self.unit}".strip()
+        res = self.result_text if self.result_text is not None else _fmt(self.result,
+                                                                         self.digits)
+        return f"{self.lhs} = {self.template} = {self.numbers} = {res} {self.unit}".strip()
+
+
+@dataclass(frozen=True, slots=True)
+class GenPosition:
+    label: str
+    lines: tuple[GenLine, ...]
+    arms: tuple[tuple[str, str, str], ...] = ()  # name, force, about
+
+
+@dataclass(frozen=True, slots=True)
+class Generated:
+    """A generated work: general lines and positions, and the variant's path as written."""
+
+    variant: str
+    general: tuple[GenLine, ...]
+    positions: tuple[GenPosition, ...]
+    student: str = "graphplan"
+
+    def toml(self) -> str:
+        """The student file (``docs/check-format.md``)."""
+        out = ["[work]", f"variant = {_q(self.variant)}", f"student = {_q(self.student)}",
+               'lang = "ru"', "", "[general]", "lines = ["]
+        out += [f"  {_q(ln.text())}," for ln in self.general]
+        out.append("]")
+        for p in self.positions:
+            out += ["", "[[positions]]", f"label = {_q(p.label)}"]
+            if p.arms:
+                arms = ", ".join(f"{_q(n)} = {{ force = {_q(f)}, about = {_q(a)} }}"
+                                 for n, f, a in p.arms)
+                out.append(f"arms = {{ {arms} }}")
+            out.append("lines = [")
+            out += [f"  {_q(ln.text())}," for ln in p.lines]
+            out.append("]")
+        return "\n".join(out) + "\n"
+
+
+def _q(s: str) -> str:
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _name(quantity: str) -> str:
+    """graphplan's reading quantity (``"v_B"``, ``"aⁿ_BA"``) → a student's name."""
+    return quantity.replace("ⁿ_", "n").replace("τ_", "τ").replace("_", "")
+
+
+def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
+             variant_ref: str | None = None, student: str = "graphplan") -> Generated:
+    """The calculation of a variant as a careful student writes it (module docstring).
+
+    Parameters
+    ----------
+    variant : path
+        The variant file.
+    positions : tuple of str, optional
+        Labels to write (default: every position of the variant where the force plans
+        can be drawn).
+    variant_ref : str, optional
+        How the student file names the variant (default: its absolute path).
+    """
+    from ..force_plans import force_plans
+    from ..scales import sheet_scales
+
+    ref = Reference.of(variant)
+    mech, kin = ref.mech, ref.kin
+    sc = sheet_scales(mech, kin)
+    kl, kv, ka = sc.kl.per_mm, sc.kv.per_mm, sc.ka.per_mm
+    cr = mech.crank
+    piv, A = cr.pivot, cr.pin
+    oa_mm = cr.length / kl
+    general = [
+        GenLine("Кl", f"{{l{piv}{A}}}/{{{piv}{A}}}",
+                (Operand(f"l{piv}{A}", _fmt(cr.length, 6)),
+                 Operand(f"{piv}{A}", _fmt(oa_mm, 6))),
+                "м/мм", 6, tags=("scale",)),
+        GenLine("ω1", "π∙{n1}/30",
+                (Operand("n1", _fmt(cr.rpm, 6)),), "рад/с", 5),
+    ]
+    w1 = general[-1].result
+    va = w1 * cr.length
+    aa = w1 ** 2 * cr.length
+    general += [
+        GenLine(f"v{A}", f"{{ω1}}∙{{l{piv}{A}}}", (Operand("ω1", _fmt(w1, 5)),
+                                                Operand(f"l{piv}{A}", _fmt(cr.length, 6))),
+                "м/с", 5),
+        GenLine("Kv", f"{{v{A}}}/{{p{A.lower()}}}", (Operand(f"v{A}", _fmt(va, 5)),
+                                                     Operand(f"p{A.lower()}",
+                                                             _fmt(va / kv, decimals=2))),
+                "(м/с)/мм", 4, tags=("scale",), result_text=_fmt(kv, 6)),
+        GenLine(f"a{A}", f"{{ω1}}^2∙{{l{piv}{A}}}", (Operand("ω1", _fmt(w1, 5)),
+                                                  Operand(f"l{piv}{A}", _fmt(cr.length, 6))),
+                "м/с²", 5),
+        GenLine("Ka", f"{{a{A}}}/{{π{A.lower()}}}", (Operand(f"a{A}", _fmt(aa, 5)),
+                                                     Operand(f"π{A.lower()}",
+                                                             _fmt(aa / ka, decimals=2))),
+                "(м/с²)/мм", 4, tags=("scale",), result_text=_fmt(ka, 6)),
+    ]
+    g = float(np.hypot(*mech.gravity))
+    for ln, props in mech.links.items():
+        if props.mass > 0 and g > 0:
+            general.append(GenLine(f"G{ln}", f"{{m{ln}}}∙{{g}}",
+                                   (Operand(f"m{ln}", _fmt(props.mass, 6)),
+                                    Operand("g", _fmt(g, 4))), "Н", 6))
+    weights = {ln.lhs: ln.result for ln in general if ln.lhs.startswith("G")}
+    loads, forces = ref.loads["rule"], ref.forces["rule"]
+    kl_s = sc.kl
+    out_positions = []
+    labels = positions or kin.labels
+    for label in labels:
+        k = ref.index(label)
+        if k is None:
+            raise ValueError(f"the variant has no position {label!r}")
+        try:
+            plans = force_plans(mech, kin, forces, loads, k, kl_s)
+        except Exception:
+            if positions:
+                raise
+            continue
+        lines: list[GenLine] = []
+        vals: dict[str, float] = {}
+        for seg, quantity, scale_name, unit in _readings(ref, k, kl, kv, ka):
+            name = _name(quantity)
+            if seg in (f"p{A.lower()}", f"π{A.lower()}"):
+                continue
+            mm = _fmt(ref.reading_mm(seg, k, kl, kv, ka) or 0.0, decimals=2)
+            scale_txt = _fmt(kv if scale_name == "Kv" else ka, 6)
+            gl = GenLine(name, f"{{{seg}}}∙{{{scale_name}}}",
+                         (Operand(seg, mm), Operand(scale_name, scale_txt)), unit, 5,
+                         tags=("reading", scale_name))
+            lines.append(gl)
+            vals[name] = float(_fmt(gl.result, 5).replace(",", "."))
+        for ln, props in mech.links.items():
+            if props.mass <= 0 or props.centre is None:
+                continue
+            a_name = f"a{props.centre}"
+            if a_name not in vals:
+                continue
+            lines.append(GenLine(f"Pи{ln}", f"{{m{ln}}}∙{{{a_name}}}",
+                                 (Operand(f"m{ln}", _fmt(props.mass, 6)),
+                                  Operand(a_name, _fmt(vals[a_name], 5))), "Н", 5,
+                                 tags=("load",)))
+        for ln, props in mech.links.items():
+            eps = ref.value(("eps", ln), k)
+            mi = ref.value(("inertia_moment", ln), k)
+            if props.inertia > 0 and eps and mi:
+                lines.append(GenLine(f"Mи{ln}", f"{{IS{ln}}}∙{{ε{ln}}}",
+                                     (Operand(f"IS{ln}", _fmt(props.inertia, 6)),
+                                      Operand(f"ε{ln}", _fmt(eps, 5))), "Нм", 5,
+                                     tags=("load",)))
+        for f in loads.all_forces():
+            if f.kind == "resistance" and np.hypot(*f.vector[k]) > 0:
+                lines.append(GenLine(f.name, "", (), "Н", tags=("load",),
+                                     result_text=_fmt(float(np.hypot(*f.vector[k])), 6)))
+        for mm_ in loads.all_moments():
+            if mm_.kind == "resistance" and mm_.moment[k] != 0:
+                lines.append(GenLine(mm_.name, "", (), "Нм", tags=("load",),
+                                     result_text=_fmt(abs(float(mm_.moment[k])), 6)))
+        arms: list[tuple[str, str, str]] = []
+        written = {ln.lhs: ln.result for ln in lines}
+        written.update(weights)
+        kp = max(fp.scale.per_mm for fp in plans[:-1]) if len(plans) > 1 else \
+            plans[-1].scale.per_mm
+        kp_t = _fmt(kp, 6)
+        first = plans[0]
+        basis = first.scale.quantity
+        if basis in first.readings:
+            lines.append(GenLine("Кр", f"{{{basis}}}/{{{basis}_mm}}",
+                                 (Operand(basis, _fmt(first.readings[basis].value, 6)),
+                                  Operand(f"{basis}_mm",
+                                          _fmt(first.readings[basis].value / kp, decimals=2))),
+                                 "Н/мм", 4, tags=("scale",), result_text=kp_t))
+        for fp in plans:
+            if fp.group.startswith("crank"):
+                gl = _crank_line(fp, written, arms, kl, cr)
+                if gl is not None:
+                    lines.extend(gl)
+                continue
+            for eq in fp.equations:
+                gl = _tangential(eq, fp, written, arms, kl)
+                if gl is not None:
+                    lines.append(gl)
+            for q, r in fp.readings.items():
+                if not re.fullmatch(r"R\d\d", q) or q in written or f"R{q[2]}{q[1]}" in \
+                        written:
+                    continue
+                gl = GenLine(q, f"{{{q}_mm}}∙{{Кр}}", (Operand(f"{q}_mm",
+                                                              _fmt(r.value / kp, decimals=2)),
+                                                      Operand("Кр", kp_t)), "Н", 6,
+                             tags=("reaction",))
+                lines.append(gl)
+                written[q] = float(_fmt(gl.result, 6).replace(",", "."))
+        out_positions.append(GenPosition(label, tuple(lines), tuple(arms)))
+    return Generated(variant_ref or str(Path(variant).resolve()), tuple(general),
+                     tuple(out_positions), student)
+
+
+def _readings(ref: Reference, k: int, kl: float, kv: float, ka: float):
+    ref.reading_mm("pa", k, kl, kv, ka)  # builds the plans at these scales
+    vp, ap = ref._plans[(k, kl, kv, ka)]
+    for r in vp.readings.values():
+        yield r.name, r.quantity, "Kv", "м/с"
+    for r in ap.readings.values():
+        yield r.name, r.quantity, "Ka", "м/с²"
+
+
+_TERM = re.compile(r"([+−-])\s*([^\s·/]+)(?:·(\S+)|/Kl)")
+
+
+def _size(force: str, fp, written: dict[str, float]) -> float | None:
+    if force in written:
+        return written[force]
+    rev = f"R{force[2]}{force[1]}" if re.fullmatch(r"R\d\d", force) else None
+    if rev and rev in written:
+        return written[rev]
+    if force in fp.readings:
+        return fp.readings[force].value
+    return None
+
+
+def _terms(rest: str, about: str, fp, written, arms, skip: str = ""):
+    """The known moments of an equation as formula terms and operands (signs moved to the
+    other side), or None when a term cannot be written."""
+    terms, ops = [], []
+    for sgn, force, h_name in _TERM.findall(rest):
+        s = "-" if sgn == "+" else "+"
+        if not h_name:  # a couple M/Kl
+            size = _size(force, fp, written)
+            if size is None:
+                return None
+            terms.append(f"{s}{{{force}}}/{{Кl}}")
+            ops += [Operand(force, _fmt(size, 6))]
+            continue
+        if force == skip:
+            continue
+        h = fp.arms_mm.get(f"h_{force}@{about}")
+        size = _size(force, fp, written)
+        if h is None or size is None:
+            return None
+        aname = f"h{force}{about}"
+        if (aname, force, about) not in arms:
+            arms.append((aname, force, about))
+        terms.append(f"{s}{{{force}}}∙{{{aname}}}")
+        ops += [Operand(force, _fmt(size, 6)), Operand(aname, _fmt(h, decimals=2))]
+    return terms, ops
+
+
+def _tangential(eq: str, fp, written: dict[str, float], arms: list, kl: float
+                ) -> GenLine | None:
+    """``ΣM_B(link 2): Rτ12·AB − G2·h_G2 = 0`` as ``Rτ12 = (G2∙hG2B)/AB = …``."""
+    m = re.match(r"ΣM_(\w+)\(link [^)]*\): (Rτ\d\d)·(\w+)(.*) = 0$", eq)
+    if m is None:
+        return None
+    about, unknown, arm_name, rest = m.groups()
+    h_unknown = fp.arms_mm.get(f"h_{unknown}@{about}")
+    got = _terms(rest, about, fp, written, arms)
+    if not h_unknown or got is None or not got[0]:
+        return None
+    terms, ops = got
+    if any("/{Кl}" in t for t in terms):
+        ops.append(Operand("Кl", _fmt(kl, 6)))
+    body = "".join(terms)
+    body = body[1:] if body.startswith("+") else body
+    if arm_name.startswith("h_"):
+        arm_name = f"h{unknown}{about}"
+        arms.append((arm_name, unknown, about))
+    return GenLine(unknown, f"({body})/{{{arm_name}}}",
+                   (*_order(ops, body), Operand(arm_name, _fmt(h_unknown, decimals=2))), "Н",
+                   5, tags=("tangential",))
+
+
+def _order(ops: list[Operand], body: str) -> list[Operand]:
+    """Operands in the order their names appear in the formula (Кl once, where it is)."""
+    out, seen = [], set()
+    for name in re.findall(r"\{([^}]+)\}", body):
+        for o in ops:
+            if o.name == name and name not in seen:
+                out.append(o)
+                seen.add(name)
+                break
+    return out
+
+
+def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr):
+    """``ΣM_O(link 1): Mур/Kl − R21·h_R21 + G1·h_G1 = 0`` as h21 and
+    ``Мур = (R21∙h21 − G1∙hG1O)∙Кl = …``."""
+    eq = fp.equations[0]
+    m = re.match(r"ΣM_(\w+)\(link [^)]*\): Mур/Kl(.*) = 0$", eq)
+    if m is None:
+        return None
+    about, rest = m.groups()
+    lines = []
+    react = [f for _s, f, _h in _TERM.findall(rest) if re.fullmatch(r"R\d\d", f)]
+    terms, ops = [], []
+    for sgn, force, h_name in _TERM.findall(rest):
+        s = "-" if sgn == "+" else "+"
+        size = _size(force, fp, written)
+        if size is None:
+            return None
+        if not h_name:
+            terms.append(f"{s}{{{force}}}/{{Кl}}")
+            ops.append(Operand(force, _fmt(size, 6)))
+            continue
+        h = fp.arms_mm.get(f"h_{force}@{about}")
+        if h is None:
+            return None
+        if force in react:
+            aname = f"h{force[1:]}"
+            lines.append(GenLine(aname, "", (), "мм", result_text=_fmt(h, decimals=2)))
+        else:
+            aname = f"h{force}{about}"
+            arms.append((aname, force, about))
+        terms.append(f"{s}{{{force}}}∙{{{aname}}}")
+        ops += [Operand(force, _fmt(size, 6)), Operand(aname, _fmt(h, decimals=2))]
+    if not terms:
+        return None
+    if len(terms) == 1:
+        body = terms[0]
+        formula = (body[1:] if body.startswith("+") else body) + "∙{Кl}"
+    else:
+        body = "".join(terms)
+        formula = "(" + (body[1:] if body.startswith("+") else body) + ")∙{Кl}"
+    ops.append(Operand("Кl", _fmt(kl, 6)))
+    lines.append(GenLine("Мур", formula, tuple(_order(ops, formula)), "Нм", 5,
+                         tags=("M_bal",)))
+    return lines
+
+
+# --- faults ---------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Fault:
+    """A fault put into a generated work, and the finding it must give."""
+
+    kind: str  # one of FAULT_KINDS
+    position: str
+    quantity: str  # the name the finding must carry
+    finding_kind: str
+    line: str  # the faulty line as written
+
+
+def _positions_with(gen: Generated, pred) -> list[tuple[int, int]]:
+    return [(i, j) for i, p in enumerate(gen.positions) for j, ln in enumerate(p.lines)
+            if pred(p, ln)]
+
+
+def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
+           ref: Reference | None = None) -> tuple[Generated, tuple[Fault, ...]]:
+    """Put one fault of each of ``kinds`` into ``gen``, each at a position of its own.
+
+    Raises
+    ------
+    ValueError
+        If a fault cannot be placed (no suitable line is left).
+    """
+    ref = ref or Reference.of(gen.variant)
+    positions = [list(p.lines) for p in gen.positions]
+    used_pos: set[int] = set()
+    faults = []
+    for kind in kinds:
+        cands = [(i, j) for i, lines in enumerate(positions) for j, ln in enumerate(lines)
+                 if i not in used_pos and _fits(kind, ln, gen.positions[i].label, ref, gen)]
+        if not cands:
+            raise ValueError(f"no line left for a fault of kind {kind!r}")
+        i, j = rng.choice(cands)
+        label = gen.positions[i].label
+        new, quantity = _apply(kind, positions[i][j], label, ref, gen, rng)
+        positions[i][j] = new
+        used_pos.add(i)
+        faults.append(Fault(kind, label, quantity, KIND_OF_FAULT[kind], new.text()))
+    out = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
+                                       zip(gen.positions, positions, strict=True)))
+    return out, tuple(faults)
+
+
+def _scales(gen: Generated) -> dict[str, float]:
+    return {ln.lhs: (evaluate(ln.result_text).number if ln.result_text else ln.result)
+            for ln in gen.general if "scale" in ln.tags}
+
+
+def _segment_elsewhere(ln: GenLine, label: str, ref: Reference, gen: Generated):
+    """Another position whose segment differs by 15 % or more (and is no plain ratio)."""
+    seg = ln.operands[0]
+    sc = _scales(gen)
+    kl, kv, ka = sc.get("Кl", 1e-3), sc.get("Kv"), sc.get("Ka")
+    mine = float(seg.text.replace(",", "."))
+    out = []
+    for other in ref.labels:
+        if other == label:
+            continue
+        v = ref.reading_mm(seg.name, ref.index(other), kl, kv, ka)
+        if v is None or v < 5 or mine < 5:
+            continue
+        r = v / mine
+        if abs(r - 1) < 0.15 or any(abs(r / s - 1) < 0.03 for s in
+                                    (2, 0.5, 2.5, 0.4, 4, 0.25, 5, 0.2, 10, 0.1)):
+            continue
+        out.append((other, v))
+    return out
+
+
+def _fits(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated) -> bool:
+    if kind == "arithmetic":
+        return bool(ln.operands) and "scale" not in ln.tags and abs(ln.result) > 1e-6 \
+            and "M_bal" not in ln.tags
+    if kind == "scale":
+        return "reading" in ln.tags and abs(ln.result) > 1e-3 and float(
+            ln.operands[0].text.replace(",", ".")) >= 5
+    if kind == "other":
+        return "reading" in ln.tags and bool(_segment_elsewhere(ln, label, ref, gen))
+    if kind == "sign":
+        return "M_bal" in ln.tags and abs(ln.result) > 0.05 * max(
+            abs(x) for x in ref.forces["rule"].M_bal)
+    if kind == "unit":
+        return "reaction" in ln.tags and ln.result > 1.0
+    if kind == "lever-arm":
+        if "tangential" not in ln.tags:
+            return False
+        return bool(_other_arms(ln, label, ref, gen))
+    raise ValueError(f"unknown fault kind {kind!r} (expected one of {', '.join(FAULT_KINDS)})")
+
+
+def _other_arms(ln: GenLine, label: str, ref: Reference, gen: Generated):
+    kl = _scales(gen).get("Кl", 1e-3)
+    k = ref.index(label)
+    out = []
+    names = {p_[0]: (p_[1], p_[2]) for p in gen.positions if p.label == label for p_ in p.arms}
+    for op in ln.operands:
+        if op.name not in names:
+            continue
+        force, about = names[op.name]
+        mine = float(op.text.replace(",", "."))
+        if mine < 3:
+            continue
+        for pt in ref.kin.pos.points:
+            if pt == about:
+                continue
+            v = ref.value(("arm", force, pt), k)
+            if v is None:
+                continue
+            v /= kl
+            if v > 3 and abs(v / mine - 1) > 0.15:
+                out.append((op.name, v))
+    return out
+
+
+def _apply(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated,
+           rng: random.Random) -> tuple[GenLine, str]:
+    if kind == "arithmetic":
+        factor = rng.choice((1.2, 1.3, 1.45, 1.6, 1.75, 1.9))
+        return replace(ln, result_text=_fmt(ln.result * factor, ln.digits)), ln.lhs
+    if kind == "scale":
+        sc = _scales(gen)
+        name = ln.operands[1].name
+        other = "Ka" if name == "Kv" else "Kv"
+        ops = (ln.operands[0], replace(ln.operands[1], text=_fmt(sc[other], 6)))
+        return replace(ln, operands=ops), name
+    if kind == "other":
+        other, v = rng.choice(_segment_elsewhere(ln, label, ref, gen))
+        ops = (replace(ln.operands[0], text=_fmt(v, decimals=2)), *ln.operands[1:])
+        return replace(ln, operands=ops), ln.operands[0].name
+    if kind == "sign":
+        return replace(ln, result_text=_fmt(-ln.result, ln.digits)), ln.lhs
+    if kind == "unit":
+        return replace(ln, unit="кН"), ln.lhs
+    name, v = rng.choice(_other_arms(ln, label, ref, gen))
+    ops = tuple(replace(op, text=_fmt(v, decimals=2)) if op.name == name else op
+                for op in ln.operands)
+    return replace(ln, operands=ops), name
+
+
+__all__ = ["FAULT_KINDS", "KIND_OF_FAULT", "Fault", "GenLine", "Generated", "generate",
+           "inject"]

@@ -1,0 +1,366 @@
+"""What graphplan says each figure should be: its exact results, and a few wrong models.
+
+A :class:`Reference` runs graphplan on the student's variant once —
+:func:`graphplan.analysis.analyze` (kinematics of every position),
+:func:`graphplan.applied_loads.compute_loads` and
+:func:`graphplan.kinetostatics.solve_forces` (loads, reactions, Mур), the velocity and
+acceleration plans of :mod:`graphplan.constructions` at the student's own scales — and
+answers :meth:`Reference.value`: the physical value (SI) of a quantity's key at a position
+under a *model*:
+
+``rule``
+    the variant's model (its neglect rule): what the student should have;
+``full``
+    nothing neglected (a student who keeps a small load is not wrong);
+``reversed``
+    every inertia force and moment reversed (Pи = +m·a): the classic sign error;
+``no-inertia``
+    inertia left out.
+
+Nothing of the mechanics is computed here: the values are graphplan's, only picked,
+measured (arms on the position plan) and divided by the student's scales.
+
+The pseudo-position ``max`` stands for the largest magnitude over one turn (a fine grid
+of :data:`MAX_GRID` crank angles), for figures such as "the largest inertia force".
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from functools import cached_property
+
+import numpy as np
+
+from ..analysis import analyze
+from ..applied_loads import Loads, compute_loads
+from ..kinematics import solve
+from ..kinetostatics import Forces, reaction_name, solve_forces
+from ..loader import load
+from ..model import Mechanism
+from .quantities import Key, Quantity, Vocabulary
+from .units import fold
+
+MAX_GRID = 360
+"""Crank angles of the grid over which the pseudo-position ``max`` takes its maxima."""
+
+MODELS = ("rule", "full", "reversed", "no-inertia")
+
+
+def _reverse_inertia(loads: Loads) -> Loads:
+    fs = {ln: tuple(replace(f, vector=-f.vector) if f.kind == "inertia" else f for f in v)
+          for ln, v in loads.forces.items()}
+    ms = {ln: tuple(replace(m, moment=-m.moment) if m.kind == "inertia" else m for m in v)
+          for ln, v in loads.moments.items()}
+    return replace(loads, forces=fs, moments=ms)
+
+
+class Reference:
+    """graphplan's results for one variant, at its positions and at the student's extra ones.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    extra : dict[str, float]
+        Labels → crank angles (degrees) of positions the variant does not number.
+    """
+
+    def __init__(self, mech: Mechanism, extra: dict[str, float] | None = None):
+        self.mech = mech
+        self.analysis = analyze(mech)
+        kin = self.analysis.kin
+        extra = {k: v for k, v in (extra or {}).items() if k not in kin.labels}
+        if extra:
+            phi = np.concatenate([kin.phi, np.radians(list(extra.values()))])
+            kin = solve(mech, phi, (*kin.labels, *extra))
+        self.kin = kin
+        self.cycle = self.analysis.cycle
+        self.labels: tuple[str, ...] = kin.labels
+        self._plans: dict = {}
+
+    @classmethod
+    def of(cls, variant, extra: dict[str, float] | None = None) -> Reference:
+        """A reference for a variant file (or a loaded mechanism)."""
+        mech = variant if isinstance(variant, Mechanism) else load(variant)
+        return cls(mech, extra)
+
+    # --- the models -------------------------------------------------------------------
+
+    @cached_property
+    def loads(self) -> dict[str, Loads]:
+        mech, kin, cy = self.mech, self.kin, self.cycle
+        rule = compute_loads(mech, kin, cy)
+        return {"rule": rule, "full": compute_loads(mech, kin, cy, neglect_below=0.0),
+                "reversed": _reverse_inertia(rule),
+                "no-inertia": compute_loads(mech, kin, cy, inertia=False)}
+
+    @cached_property
+    def forces(self) -> dict[str, Forces]:
+        return {m: solve_forces(self.mech, self.kin, ld) for m, ld in self.loads.items()}
+
+    @cached_property
+    def vocabulary_parts(self) -> tuple[dict[str, str], tuple[str, ...], tuple[str, ...]]:
+        """Reading names of the plans, reaction names, load names (for a Vocabulary)."""
+        from ..constructions import acceleration_plan, velocity_plan
+        from ..units import Scale
+
+        k = 0
+        kl = Scale("Kl", 1e-3, "m/mm")
+        vp = velocity_plan(self.mech, self.kin, k, kl, Scale("Kv", 0.01, "(m/s)/mm"))
+        ap = acceleration_plan(self.mech, self.kin, k, kl, Scale("Ka", 0.05, "(m/s²)/mm"), vp)
+        readings = {r.name: r.quantity for r in (*vp.readings.values(), *ap.readings.values())}
+        reactions = tuple(self.forces["rule"].reactions)
+        names = tuple(f.name for f in self.loads["full"].all_forces()) + tuple(
+            m.name for m in self.loads["full"].all_moments())
+        return readings, reactions, names
+
+    def vocabulary(self, arms=None) -> Vocabulary:
+        """The names a student may use for this variant (with the declared arms)."""
+        readings, reactions, loads = self.vocabulary_parts
+        return Vocabulary(self.mech, readings, reactions, loads, arms)
+
+    @cached_property
+    def _max(self) -> tuple:
+        """Kinematics, loads and forces on a fine grid over one turn (for ``max``)."""
+        phi = self.kin.phi[0] + np.linspace(0.0, 2 * math.pi, MAX_GRID, endpoint=False)
+        kin = solve(self.mech, phi)
+        full = compute_loads(self.mech, kin, self.cycle, neglect_below=0.0)
+        rule = compute_loads(self.mech, kin, self.cycle)
+        return kin, {"rule": rule, "full": full}, {"rule": solve_forces(self.mech, kin, rule),
+                                                  "full": solve_forces(self.mech, kin, full)}
+
+    def index(self, label: str) -> int | None:
+        """Index of a position label (``None`` if the variant has no such position)."""
+        return self.labels.index(label) if label in self.labels else None
+
+    # --- values -----------------------------------------------------------------------
+
+    def point(self, name: str) -> str | None:
+        """A point of the mechanism by name (look-alike letters folded)."""
+        pts = self.kin.pos.points
+        if name in pts:
+            return name
+        f = fold(name)
+        hits = [p for p in pts if fold(p) == f] or [p for p in pts if fold(p).lower() ==
+                                                    f.lower()]
+        return hits[0] if len(hits) == 1 else None
+
+    def value(self, key: Key, where: str | int, model: str = "rule") -> float | None:
+        """The physical value (SI, a magnitude unless signed) of ``key`` at a position.
+
+        ``where`` is a position index, a label, or ``"max"``; ``None`` when graphplan has
+        no such value (an arm of a zero force, a key of another mechanism).
+        """
+        if where == "max":
+            return self._max_value(key, model)
+        k = where if isinstance(where, int) else self.index(where)
+        if k is None:
+            return None
+        return self._value(key, k, self.kin, self.loads, self.forces, model)
+
+    def _max_value(self, key: Key, model: str) -> float | None:
+        if key[0] in ("mass", "weight", "g", "rpm", "omega1", "eps1", "inertia",
+                      "resistance_max", "length"):
+            return self._value(key, 0, self.kin, self.loads, self.forces, model)
+        kin, loads, forces = self._max
+        model = model if model in loads else "rule"
+        vals = [self._value(key, k, kin, loads, forces, model) for k in range(kin.n)]
+        vals = [abs(v) for v in vals if v is not None]
+        return max(vals) if vals else None
+
+    def _value(self, key: Key, k: int, kin, loads, forces, model: str) -> float | None:
+        mech = self.mech
+        what = key[0]
+        P, V, A = kin.pos.points, kin.vel.points, kin.acc.points
+        if what == "mass":
+            return mech.links[key[1]].mass
+        if what == "inertia":
+            return mech.links[key[1]].inertia
+        if what == "g":
+            return float(np.hypot(*mech.gravity))
+        if what == "weight":
+            return mech.links[key[1]].mass * float(np.hypot(*mech.gravity))
+        if what == "rpm":
+            return mech.crank.rpm
+        if what == "omega1":
+            return abs(mech.crank.omega)
+        if what == "eps1":
+            return 0.0
+        if what == "resistance_max":
+            return mech.resistances[0].maximum if mech.resistances else None
+        if what == "length":
+            return float(np.hypot(*(P[key[1]][k] - P[key[2]][k])))
+        if what == "v":
+            return float(np.hypot(*V[key[1]][k]))
+        if what == "a":
+            return float(np.hypot(*A[key[1]][k]))
+        if what == "v_rel":
+            return float(np.hypot(*(V[key[1]][k] - V[key[2]][k])))
+        if what == "a_rel":
+            return float(np.hypot(*(A[key[1]][k] - A[key[2]][k])))
+        if what in ("a_n", "a_t"):
+            link = self._common_link(key[1], key[2])
+            if link is None:
+                return None
+            length = float(np.hypot(*(P[key[1]][k] - P[key[2]][k])))
+            if what == "a_n":
+                return float(kin.vel.omega[link][k]) ** 2 * length
+            return abs(float(kin.acc.epsilon[link][k])) * length
+        if what == "omega":
+            return abs(float(kin.vel.omega[key[1]][k]))
+        if what == "eps":
+            return abs(float(kin.acc.epsilon[key[1]][k]))
+        ld = loads["full"] if "full" in loads else loads["rule"]
+        if what == "inertia_force":
+            f = self._load(ld, f"Pи{key[1]}")
+            return None if f is None else float(np.hypot(*f.vector[k]))
+        if what == "inertia_moment":
+            m = next((m for m in ld.all_moments() if m.name == f"Mи{key[1]}"), None)
+            return None if m is None else abs(float(m.moment[k]))
+        if what == "resistance":
+            f = self._load(ld, key[1])
+            if f is not None:
+                return float(np.hypot(*f.vector[k]))
+            m = next((m for m in ld.all_moments() if m.name == key[1]), None)
+            return None if m is None else abs(float(m.moment[k]))
+        fs = forces.get(model) or forces["rule"]
+        if what in ("reaction", "reaction_t", "reaction_n"):
+            vec, r = self._reaction(fs, key[1], key[2], k)
+            if vec is None:
+                return None
+            if what == "reaction":
+                return float(np.hypot(*vec))
+            return self._component(r, vec, k, kin, what == "reaction_n")
+        if what == "crank_arm":
+            name = reaction_name(key[1], mech.crank.link)
+            arms = fs.crank_arms()
+            return float(arms[name][k]) if name in arms else None
+        if what == "M_bal":
+            return float(fs.M_bal[k])
+        if what == "arm":
+            return self._arm(key[1], key[2], k, kin, ld, fs)
+        return None
+
+    @staticmethod
+    def _load(loads: Loads, name: str):
+        f = fold(name)
+        return next((x for x in loads.all_forces() if fold(x.name) == f), None)
+
+    def _common_link(self, p: str, q: str) -> str | None:
+        for ln in self.mech.moving_links:
+            pts = self.mech.points_of(ln)
+            if p in pts and q in pts:
+                return ln
+        return None
+
+    @staticmethod
+    def _reaction(fs: Forces, i: str, j: str, k: int):
+        for name, sign in ((f"R{i}{j}", 1.0), (f"R{j}{i}", -1.0)):
+            if name in fs.reactions:
+                r = fs.reactions[name]
+                return sign * np.asarray(r.vector[k], float), r
+        return None, None
+
+    def _component(self, r, vec, k, kin, normal: bool) -> float | None:
+        """The part of a reaction along (normal) or across (tangential) its dyad link."""
+        link = next((ln for ln in (r.on, r.by) if ln != self.mech.frame_link and
+                     ln != self.mech.crank.link), None)
+        if link is None or r.pair != "R":
+            return None
+        centres = {lp.centre for lp in self.mech.links.values()}
+        others = [p for p in self.mech.points_of(link) if p != r.point and p not in centres]
+        if not others:
+            return None
+        d = kin.pos.points[others[0]][k] - kin.pos.points[r.point][k]
+        u = d / float(np.hypot(*d))
+        along = float(np.dot(vec, u))
+        return abs(along) if normal else abs(float(vec[0] * u[1] - vec[1] * u[0]))
+
+    def force_line(self, force: str, k: int, model: str = "rule", kin=None, loads=None,
+                   forces=None):
+        """Point (m) and vector (N) of a load or reaction by name at position k."""
+        kin = kin or self.kin
+        ld = (loads or self.loads)["full"]
+        fs = (forces or self.forces).get(model) or (forces or self.forces)["rule"]
+        f = self._load(ld, force)
+        if f is not None:
+            return np.asarray(f.at[k], float), np.asarray(f.vector[k], float)
+        name = fold(force).replace("R", "R", 1)
+        for r in fs.reactions.values():
+            for nm, sign in ((r.name, 1.0), (reaction_name(r.on, r.by), -1.0)):
+                if fold(nm) == name:
+                    return np.asarray(r.at[k], float), sign * np.asarray(r.vector[k], float)
+        return None
+
+    def _arm(self, force: str, about: str, k: int, kin, loads, fs) -> float | None:
+        pt = self.point(about)
+        line = self.force_line(force, k, kin=kin, loads={"full": loads},
+                               forces={"rule": fs})
+        if pt is None or line is None:
+            return None
+        at, vec = line
+        mag = float(np.hypot(*vec))
+        if mag == 0:
+            return None
+        c = kin.pos.points[pt][k]
+        return abs(float((at[0] - c[0]) * vec[1] - (at[1] - c[1]) * vec[0])) / mag
+
+    def arm_limit(self, force: str, about: str, k: int) -> float | None:
+        """The longest arm a force can have about a point: the distance from the point to
+        the force's point of application (m)."""
+        pt = self.point(about)
+        line = self.force_line(force, k)
+        if pt is None or line is None:
+            return None
+        return float(np.hypot(*(line[0] - self.kin.pos.points[pt][k])))
+
+    # --- plans at the student's scales ------------------------------------------------
+
+    def reading_mm(self, name: str, k: int, kl: float, kv: float | None,
+                   ka: float | None) -> float | None:
+        """Exact length (mm) of a segment of the velocity or acceleration plan of position
+        k built by graphplan at the student's scales (``None`` without that scale)."""
+        from ..constructions import acceleration_plan, velocity_plan
+        from ..units import Scale
+
+        key = (k, kl, kv, ka)
+        if key not in self._plans:
+            kv_ = Scale("Kv", kv or 0.01, "(m/s)/mm")
+            vp = velocity_plan(self.mech, self.kin, k, Scale("Kl", kl, "m/mm"), kv_)
+            ap = acceleration_plan(self.mech, self.kin, k, Scale("Kl", kl, "m/mm"),
+                                   Scale("Ka", ka or 0.05, "(m/s²)/mm"), vp)
+            self._plans[key] = (vp, ap)
+        vp, ap = self._plans[key]
+        if name in vp.readings:
+            return None if kv is None else vp.readings[name].exact_mm
+        if name in ap.readings:
+            return None if ka is None else ap.readings[name].exact_mm
+        return None
+
+    def expected(self, q: Quantity, where: str | int, scales: dict[str, float],
+                 model: str = "rule") -> float | None:
+        """The value of ``q`` in its own unit (mm on paper, at the student's ``scales``)."""
+        if q.kind == "scale":
+            return None
+        if q.kind == "segment" and where != "max":
+            k = where if isinstance(where, int) else self.index(where)
+            if k is not None and model in ("rule", "full") and q.scale in ("Kv", "Ka"):
+                mm = self.reading_mm(q.name, k, scales.get("Kl", 1e-3), scales.get("Kv"),
+                                     scales.get("Ka"))
+                if mm is not None:
+                    return mm
+        key = q.key[1:] if q.kind == "segment" else q.key
+        if q.kind == "drawn":
+            key = ("length", *q.key[1:])
+        v = self.value(key, where, model)
+        if v is None:
+            return None
+        if q.on_paper:
+            s = scales.get(q.scale or "")
+            if not s:
+                return None
+            return abs(v / s)
+        return v
+
+
+__all__ = ["MAX_GRID", "MODELS", "Reference"]

@@ -1,0 +1,76 @@
+"""Numbers, units and short phrases of the reports in English and Russian."""
+
+from __future__ import annotations
+
+import math
+
+UNITS_RU = {"N": "Н", "N·m": "Н·м", "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²",
+            "rad/s": "рад/с", "rad/s²": "рад/с²", "kg": "кг", "N/mm": "Н/мм", "m/mm": "м/мм",
+            "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "rpm": "об/мин",
+            "kg·m²": "кг·м²", "": ""}
+
+
+def unit_text(unit: str, lang: str) -> str:
+    """A unit in the report's language."""
+    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+
+
+def num(x: float | None, lang: str = "en", digits: int = 5) -> str:
+    """A number with ``digits`` significant digits, no exponent for everyday sizes, a
+    decimal comma in Russian."""
+    if x is None:
+        return "—"
+    if not math.isfinite(x):
+        raise ValueError(f"a non-finite number ({x!r}) reached a report")
+    if x == 0:
+        return "0"
+    mag = math.floor(math.log10(abs(x)))
+    if -4 <= mag < 9:
+        dec = max(0, digits - 1 - mag)
+        s = f"{x:.{dec}f}"
+        if "." in s:
+            s = s.rstrip("0").rstrip(".")
+    else:
+        s = f"{x:.{digits - 1}e}"
+    if s in ("-0", "−0"):
+        s = "0"
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+def qty(x: float | None, unit: str, lang: str = "en", digits: int = 5) -> str:
+    """``"4456.1 N"`` / ``"4456,1 Н"``."""
+    u = unit_text(unit, lang)
+    return f"{num(x, lang, digits)} {u}".strip()
+
+
+def pct(rel: float | None, lang: str = "en") -> str:
+    """A relative difference as a signed percentage: ``+9.4 %``."""
+    if rel is None:
+        return "—"
+    s = f"{rel * 100:+.1f} %"
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+def scale_text(symbol: str, per_mm: float, lang: str = "en") -> str:
+    """``Kl = 0.002 m/mm``."""
+    unit = {"Kl": "m/mm", "Kv": "(m/s)/mm", "Ka": "(m/s²)/mm", "Kp": "N/mm"}.get(symbol, "")
+    return f"{symbol} = {qty(per_mm, unit, lang, 6)}"
+
+
+VERDICT_WORDS = {"en": {"ok": "ok", "inaccurate": "inaccurate", "wrong": "wrong"},
+                 "ru": {"ok": "верно", "inaccurate": "неточно", "wrong": "неверно"}}
+
+KIND_WORDS = {
+    "en": {"arithmetic": "arithmetic", "consistency": "consistency", "unit": "unit",
+           "scale": "scale", "sign": "sign", "other-variant": "other variant/position",
+           "lever-arm": "lever arm", "geometry": "geometry", "formula": "formula",
+           "label": "label", "propagated": "propagated", "model": "model"},
+    "ru": {"arithmetic": "арифметика", "consistency": "согласованность", "unit": "единицы",
+           "scale": "масштаб", "sign": "знак", "other-variant": "чужой вариант/положение",
+           "lever-arm": "плечо", "geometry": "геометрия", "formula": "формула",
+           "label": "обозначение", "propagated": "следствие", "model": "расчёт"},
+}
+
+
+__all__ = ["KIND_WORDS", "UNITS_RU", "VERDICT_WORDS", "num", "pct", "qty", "scale_text",
+           "unit_text"]
