@@ -1,0 +1,155 @@
+"""The words and numbers of the captions, in Russian and English.
+
+Numbers are written as a student writes them: lengths on the drawing to 0.01 mm, values
+to four significant figures without an exponent between 10⁻³ and 10⁶ (``423918 N``,
+``0.4219 m/s``), otherwise as ``1.234·10^7``; a scale with up to six figures
+(:func:`graphplan.units.fmt`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..units import fmt
+from .model import Result
+
+UNITS_RU = {
+    "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм",
+    "J": "Дж", "kg·m²": "кг·м²", "rad/s": "рад/с", "rad/s²": "рад/с²", "W": "Вт", "kg": "кг",
+    "°": "°", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "m/mm": "м/мм", "N/mm": "Н/мм",
+    "J/mm": "Дж/мм", "N·m/mm": "Н·м/мм", "rad/mm": "рад/мм", "kg·m²/mm": "кг·м²/мм",
+}
+
+WORDS = {
+    "en": {
+        "velocity": "Velocity plan", "acceleration": "Acceleration plan",
+        "forces": "Force plans", "zhukovsky": "Zhukovsky's lever", "flywheel": "Flywheel",
+        "position": "position", "step": "Step", "of": "of", "prev": "Previous", "next": "Next",
+        "try": "Try it yourself", "print": "All steps / print", "check": "Check",
+        "vector": "Vector", "direction": "Direction", "magnitude": "Magnitude",
+        "unknown": "?", "known": "known", "drawn": "drawn", "yours": "your reading",
+        "correct": "correct", "deviation": "deviation", "scales": "Scales",
+        "enter": "enter the length in mm", "keys": "Keys: ← → (or PgUp/PgDn, Space) step, "
+        "Home/End, T try it yourself, P all steps",
+        "try_hint": "Try it yourself: each result is hidden until you enter your reading "
+        "(measure on the print-out, where the drawing is at its true size, or compute it); "
+        "then the correct value and your deviation are shown.",
+        "scale_bar": "10 mm",
+        "no_script": "Without scripts the page shows every step one after another.",
+        "units": "Units: SI; lengths on the drawing in mm; angles CCW positive.",
+    },
+    "ru": {
+        "velocity": "План скоростей", "acceleration": "План ускорений",
+        "forces": "Планы сил", "zhukovsky": "Рычаг Жуковского", "flywheel": "Маховик",
+        "position": "положение", "step": "Шаг", "of": "из", "prev": "Назад", "next": "Далее",
+        "try": "Проверь себя", "print": "Все шаги / печать", "check": "Проверить",
+        "vector": "Вектор", "direction": "Направление", "magnitude": "Величина",
+        "unknown": "?", "known": "известен", "drawn": "построен", "yours": "ваш отсчёт",
+        "correct": "верно", "deviation": "отклонение", "scales": "Масштабы",
+        "enter": "введите длину в мм", "keys": "Клавиши: ← → (или PgUp/PgDn, пробел) — шаг, "
+        "Home/End, T — проверь себя, P — все шаги",
+        "try_hint": "Проверь себя: результат шага скрыт, пока вы не введёте свой отсчёт "
+        "(измерьте на распечатке, где чертёж в натуральную величину, или вычислите); "
+        "затем показаны верное значение и ваше отклонение.",
+        "scale_bar": "10 мм",
+        "no_script": "Без сценариев страница показывает все шаги подряд.",
+        "units": "Единицы СИ; длины на чертеже в мм; углы против часовой стрелки — плюс.",
+    },
+}
+
+KIND_TITLES = {
+    "en": {
+        "pole": "The pole", "lay": "Lay off a known vector", "intersect": "Draw the two lines "
+        "of the equation", "read": "Measure the result", "similar": "Theorem of similarity",
+        "point": "A coincident point", "moment": "Equation of moments", "couple":
+        "Point of application", "turn": "Turn the velocity plan", "force": "Apply a force",
+        "balance": "Balancing force", "couple_pair": "A couple as two forces",
+        "diagram": "Diagram", "integrate": "Graphical integration", "tangent": "Tangent",
+        "result": "Result", "size": "Dimensions",
+    },
+    "ru": {
+        "pole": "Полюс", "lay": "Откладываем известный вектор", "intersect": "Проводим две "
+        "линии уравнения", "read": "Измеряем результат", "similar": "Теорема подобия",
+        "point": "Совпадающая точка", "moment": "Уравнение моментов", "couple":
+        "Точка приложения", "turn": "Поворачиваем план скоростей", "force": "Прикладываем силу",
+        "balance": "Уравновешивающая сила", "couple_pair": "Момент — пара сил",
+        "diagram": "Диаграмма", "integrate": "Графическое интегрирование",
+        "tangent": "Касательная", "result": "Результат", "size": "Размеры",
+    },
+}
+
+
+_RU_PHRASES = (
+    (" through ", " через "), ("∥ guide of ", "∥ направляющей звена "),
+    ("⟂ guide of ", "⟂ направляющей звена "), ("∥ guide", "∥ направляющей"),
+    ("⟂ guide", "⟂ направляющей"), ("∥ slot", "∥ кулисе"), ("⟂ slot", "⟂ кулисе"),
+    (": similarity on link ", ": подобие, звено "), ("(link ", "(звено "),
+)
+_RU_UNITS = (
+    ("(m/s²)/mm", "(м/с²)/мм"), ("(m/s)/mm", "(м/с)/мм"), ("kg·m²/mm", "кг·м²/мм"),
+    ("N·m/mm", "Н·м/мм"), ("J/mm", "Дж/мм"), ("rad/mm", "рад/мм"), ("N/mm", "Н/мм"),
+    ("m/mm", "м/мм"),
+)
+
+
+def localise(text: str, lang: str) -> str:
+    """The construction's words for ``lang``: the names of its lines and equations are
+    English in both texts of a step (``⟂AB through a``, ``ΣM_B(link 2)``)."""
+    if lang != "ru":
+        return text
+    for en, ru in _RU_PHRASES:
+        text = text.replace(en, ru)
+    return text
+
+
+def scale_text(text: str, lang: str) -> str:
+    """A scale as written on a sheet of ``lang``: ``Kv = 0.01 (м/с)/мм``."""
+    if lang != "ru":
+        return text
+    for en, ru in _RU_UNITS:
+        text = text.replace(en, ru)
+    return text
+
+
+ZERO_MM = 1e-9
+"""A length below this (mm) is round-off of an exact construction and is written as 0."""
+
+
+def unit(u: str, lang: str) -> str:
+    """A unit as lettered in ``lang``."""
+    return UNITS_RU.get(u, u) if lang == "ru" else u
+
+
+def num(x: float, sig: int = 4) -> str:
+    """A value to ``sig`` significant figures, no exponent within 10⁻³ … 10⁶."""
+    x = float(x)
+    if x == 0 or not math.isfinite(x):
+        return "0" if x == 0 else str(x)
+    mag = math.floor(math.log10(abs(x)))
+    if -3 <= mag < 6:
+        dec = max(0, sig - 1 - mag)
+        s = f"{x:.{dec}f}"
+        return "0" if float(s) == 0 else s
+    return fmt(x, sig)
+
+
+def mm(x: float) -> str:
+    """A length on the drawing, to 0.01 mm."""
+    s = f"{float(x):.2f}"
+    return "0.00" if s == "-0.00" else s
+
+
+def result_text(r: Result, lang: str) -> str:
+    """``pb = 42.19 mm → v_B = pb·Kv = 42.19·0.01 = 0.4219 m/s`` (or the laid-off form)."""
+    u_mm, u = unit("mm", lang), unit(r.unit, lang)
+    k = fmt(r.per_mm)
+    if abs(r.mm) < ZERO_MM:  # a dead centre: round-off, not a length
+        r = Result(r.segment, r.quantity, 0.0, 0.0, r.unit, r.factor, r.per_mm, r.laid)
+    if r.laid:
+        return (f"{r.quantity} = {num(r.value)} {u} → {r.segment} = {r.quantity}/{r.factor} = "
+                f"{num(r.value)}/{k} = {mm(r.mm)} {u_mm}")
+    return (f"{r.segment} = {mm(r.mm)} {u_mm} → {r.quantity} = {r.segment}·{r.factor} = "
+            f"{mm(r.mm)}·{k} = {num(r.value)} {u}")
+
+
+__all__ = ["KIND_TITLES", "WORDS", "localise", "mm", "num", "result_text", "scale_text", "unit"]

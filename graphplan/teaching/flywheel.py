@@ -1,0 +1,252 @@
+"""The lesson of the flywheel: work diagrams by graphical integration, then the
+energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics`).
+
+Only the public results of :func:`graphplan.dynamics.flywheel` (and its
+:class:`~graphplan.dynamics.WorkDiagrams`) and of :func:`graphplan.dynamics.dynamic_model`
+are drawn; nothing is solved again. Sign conventions are those of
+:mod:`graphplan.dynamics`: moments positive in the sense of rotation, so the resisting
+moment Mс is negative where it resists and ``Aс`` falls; the abscissa is the crank
+travel from the first position, ``x = τ/Kφ`` mm.
+
+Panel 1, the work diagrams (mm, y up): Mс(φ) on its axis at KM; the mean ordinate of
+each interval, projected on the ordinate axis and joined to the pole P at H mm left of
+the origin; the chords of Aс(φ) parallel to those rays (``Δy_A = y_M·Δx/H``) at
+``KA = Kφ·KM·H``, on a second axis below; the straight line Aд (``Aд(2π) = −Aс(2π)``)
+and ``ΔT = Aд + Aс``. The exact curves are drawn thin and dashed beside the graphical
+ones. Panel 2, the energy–mass diagram: ``(I_var/KI, ΔT/KT)`` over the cycle (exact ΔT,
+as the flywheel is computed), the tangents at ψmax and ψmin cutting the ΔT axis at k
+and l, and the segment kl: ``J_I = kl·KT/(ω²·δ)``, ``Iм = J_I − I_const``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..dynamics import dynamic_model, flywheel
+from ..units import fmt
+from .captions import WORDS, mm, num, unit
+from .model import Lesson, LessonStep, Mark, Panel, Result, Term
+
+GAP = 14.0  #: between the Mс diagram and the work diagram below it, mm
+MAX_POINTS = 361  #: points of a drawn curve (the grid is thinned to this)
+
+
+def _xy(x, y) -> tuple[float, float]:
+    return (float(x), float(y))
+
+
+def _curve(name, xs, ys, role, dashed=False) -> Mark:
+    xs, ys = np.asarray(xs, float), np.asarray(ys, float)
+    step = max(1, math.ceil((len(xs) - 1) / (MAX_POINTS - 1)))
+    idx = list(range(0, len(xs), step))
+    if idx[-1] != len(xs) - 1:
+        idx.append(len(xs) - 1)
+    return Mark("curve", name, tuple(_xy(xs[i], ys[i]) for i in idx), role, dashed=dashed)
+
+
+def _axes(name, x0, x1, y0, y1, oy, xlabel, ylabel) -> list[Mark]:
+    return [Mark("vector", f"{name}-x", (_xy(x0, oy), _xy(x1, oy)), "context"),
+            Mark("vector", f"{name}-y", (_xy(0, y0), _xy(0, y1)), "context"),
+            Mark("text", f"{name}-xl", (_xy(x1 - 4, oy + 3),), "context", text=xlabel),
+            Mark("text", f"{name}-yl", (_xy(2, y1 - 3),), "context", text=ylabel)]
+
+
+def _two(en: str, ru: str) -> dict[str, str]:
+    return {"en": en, "ru": ru}
+
+
+def flywheel_lesson(analysis) -> Lesson:
+    """The flywheel of a variant as a lesson (module docstring).
+
+    Raises
+    ------
+    InputError, DynamicsError, LayoutError
+        As :func:`graphplan.dynamics.flywheel` (no δ in the variant, no work of the
+        resistance, a pole distance under 1 mm).
+    """
+    mech = analysis.mech
+    model = dynamic_model(analysis)
+    fw = flywheel(model)
+    wd = fw.work
+    L, KM, KA, H, Kphi = wd.length_mm, wd.KM, wd.KA, wd.H, wd.Kphi
+    n = wd.intervals
+    dx = L / n
+    w, delta = fw.omega, fw.delta
+    x_grid = wd.tau / Kphi
+    x_nodes = wd.node_tau / Kphi
+    yM_exact = model.moment.M / KM
+    steps: list[LessonStep] = []
+
+    def add(panel, kind, eq, text, terms=(), results=(), marks=(), notes=()):
+        steps.append(LessonStep(len(steps) + 1, panel, kind, eq, text, tuple(terms),
+                                tuple(results), tuple(marks), tuple(notes)))
+
+    # --- panel 0: Mс(φ), mean ordinates, rays, chords, Aд, ΔT
+    m_lo, m_hi = min(0.0, float(yM_exact.min())), max(0.0, float(yM_exact.max()))
+    a_vals = np.concatenate([wd.yA_mm, wd.A_d / KA, wd.dT / KA, wd.A_c / KA, [0.0]])
+    oy = m_lo - GAP - float(a_vals.max())  # the ordinate 0 of the work diagram
+    u_m = unit("N·m", "en")
+    i_ext = int(np.argmax(np.abs(model.moment.M)))
+    M_ext = float(model.moment.M[i_ext])
+    marks = _axes("M", -H - 6.0, L + 10.0, m_lo - 4.0, m_hi + 10.0, 0.0, "φ", "Mс")
+    marks.append(_curve("Mс", x_grid, yM_exact, "curve"))
+    add(0, "diagram", "Mс = ΣP/|ω1|",
+        _two(f"The reduced moment of the resisting forces Mс(φ) (weights and the technological "
+             f"resistance, no inertia: they enter through Iп), drawn at KM = {fmt(KM)} N·m/mm "
+             f"over the abscissa L = {mm(L)} mm of one turn: Kφ = 2π/L = {fmt(Kphi, 4)} rad/mm.",
+             f"Приведённый момент сил сопротивления Mс(φ) (веса и технологическое "
+             f"сопротивление, без сил инерции: они входят через Iп) в масштабе KM = {fmt(KM)} "
+             f"Н·м/мм на отрезке L = {mm(L)} мм за оборот: Kφ = 2π/L = {fmt(Kphi, 4)} рад/мм."),
+        [Term("Mс", "±", f"{num(M_ext)} {u_m}")],
+        [Result("y_M", "Mс", abs(M_ext) / KM, abs(M_ext), "N·m", "KM", KM, laid=True)], marks)
+
+    stair = []
+    rays = []
+    for i in range(n):
+        stair += [_xy(x_nodes[i], wd.yM_mm[i]), _xy(x_nodes[i + 1], wd.yM_mm[i])]
+        rays.append(Mark("line", f"ray{i + 1}", (_xy(-H, 0.0), _xy(0.0, wd.yM_mm[i])), "ray"))
+    marks = [Mark("curve", "mean", tuple(stair), "relative"), *rays,
+             Mark("point", "P", (_xy(-H, 0.0),), "point"),
+             Mark("label", "P", (_xy(-H, 0.0),), "label", text="P")]
+    add(0, "integrate", "KA = Kφ·KM·H",
+        _two(f"Graphical integration: {n} intervals of Δx = {mm(dx)} mm; the mean ordinate y_M "
+             f"of each (at its midpoint) is projected on the ordinate axis and joined to the "
+             f"pole P, H = {mm(H)} mm to the left of the origin.",
+             f"Графическое интегрирование: {n} интервалов по Δx = {mm(dx)} мм; средняя ордината "
+             f"y_M каждого (в его середине) проецируется на ось ординат и соединяется с полюсом "
+             f"P на расстоянии H = {mm(H)} мм левее начала координат."),
+        [Term("H", "←", f"{mm(H)} mm")], (), marks)
+
+    marks = _axes("A", -6.0, L + 10.0, oy + float(a_vals.min()) - 4.0,
+                  oy + float(a_vals.max()) + 10.0, oy, "φ", "A")
+    marks.append(_curve("Aс exact", x_grid, oy + wd.A_c / KA, "exact", dashed=True))
+    marks.append(Mark("curve", "Aс", tuple(_xy(x, oy + y) for x, y in zip(x_nodes, wd.yA_mm,
+                                                                          strict=True)),
+                      "curve", text=""))
+    marks.append(Mark("label", "Aс", (_xy(x_nodes[-1], oy + wd.yA_mm[-1]),), "label", text="Aс"))
+    yA_end = float(wd.yA_mm[-1])
+    add(0, "integrate", "Δy_A = y_M·Δx/H",
+        _two(f"Aс(φ) by chords: on each interval a chord parallel to its ray, rising "
+             f"Δy_A = y_M·Δx/H mm; KA = Kφ·KM·H = {fmt(KA, 5)} J/mm. The exact integral is "
+             f"dashed; the chords' largest error is {100 * wd.error:.2f} % of max|Aс|.",
+             f"Aс(φ) по хордам: на каждом интервале хорда параллельна своему лучу и "
+             f"поднимается на Δy_A = y_M·Δx/H мм; KA = Kφ·KM·H = {fmt(KA, 5)} Дж/мм. Точный "
+             f"интеграл — штрихами; наибольшая ошибка хорд {100 * wd.error:.2f} % от max|Aс|."),
+        [Term("Aс", None, None)],
+        [Result("y_A(2π)", "|Aс(2π)|", abs(yA_end), abs(yA_end) * KA, "J", "KA", KA)], marks)
+
+    Md = wd.M_d_graph
+    marks = [Mark("line", "Aд", (_xy(0.0, oy), _xy(L, oy - yA_end)), "tangent", text="Aд"),
+             Mark("line", "Mд", (_xy(0.0, Md / KM), _xy(L, Md / KM)), "tangent", text="Mд")]
+    add(0, "result", "Mд = −Aс(2π)/2π",
+        _two(f"Steady motion: the driving work over the cycle equals the resisting one. Aд is "
+             f"the straight line to Aд(2π) = −Aс(2π); its moment Mд = −Aс(2π)/2π = "
+             f"{num(Md, 5)} N·m (the exact integral gives {num(wd.M_d, 5)} N·m) is drawn on "
+             f"the Mс diagram.",
+             f"Установившееся движение: работа движущих сил за цикл равна работе сил "
+             f"сопротивления. Aд — прямая до Aд(2π) = −Aс(2π); её момент Mд = −Aс(2π)/2π = "
+             f"{num(Md, 5)} Н·м (точный интеграл даёт {num(wd.M_d, 5)} Н·м) проведён на "
+             f"диаграмме Mс."),
+        [Term("Mд", "const", None)],
+        [Result("y_Mд", "Mд", Md / KM, Md, "N·m", "KM", KM, laid=True)], marks)
+
+    span_mm = fw.dT_max / KA
+    marks = [_curve("ΔT exact", x_grid, oy + wd.dT / KA, "exact", dashed=True),
+             Mark("curve", "ΔT", tuple(_xy(x, oy + y / KA) for x, y in
+                                       zip(x_nodes, wd.dT_graph, strict=True)), "curve"),
+             Mark("label", "ΔT", (_xy(x_nodes[int(np.argmax(wd.dT_graph))],
+                                      oy + float(wd.dT_graph.max()) / KA),), "label", text="ΔT")]
+    add(0, "diagram", "ΔT = Aд + Aс",
+        _two("The excess work ΔT(φ) = Aд + Aс: the sum of the ordinates of Aд and Aс at "
+             "every node (exact: dashed). Its span max ΔT − min ΔT is the energy the flywheel "
+             "must store and give back.",
+             "Избыточная работа ΔT(φ) = Aд + Aс: сумма ординат Aд и Aс в каждом узле (точно — "
+             "штрихами). Её размах max ΔT − min ΔT — энергия, которую маховик накапливает и "
+             "отдаёт."),
+        [Term("ΔT", None, None)],
+        [Result("y_ΔT", "ΔTmax", span_mm, fw.dT_max, "J", "KA", KA)], marks)
+
+    # --- panel 1: energy–mass diagram
+    KI, KT = fw.KI, fw.KT
+    xs = model.inertia.I_var / KI
+    ys = wd.dT / KT
+    x_hi = max(float(xs.max()), 20.0)
+    y_lo, y_hi = min(0.0, float(ys.min()), fw.l_mm), max(float(ys.max()), fw.k_mm)
+    marks = _axes("E", -6.0, x_hi + 12.0, y_lo - 8.0, y_hi + 12.0, 0.0, "Iv", "ΔT")
+    marks.append(_curve("ΔT(Iv)", xs, ys, "curve"))
+    add(1, "diagram", "ΔT(I_var)",
+        _two(f"The energy–mass diagram: for every crank angle the point (I_var/KI, ΔT/KT), "
+             f"KI = {fmt(KI)} kg·m²/mm, KT = KA = {fmt(KT, 5)} J/mm; I_var is the variable "
+             f"part of the reduced moment of inertia (the links of the groups), the constant "
+             f"part is I_const = {num(fw.I_const, 5)} kg·m².",
+             f"Диаграмма энергия–масса: для каждого угла кривошипа точка (I_var/KI, ΔT/KT), "
+             f"KI = {fmt(KI)} кг·м²/мм, KT = KA = {fmt(KT, 5)} Дж/мм; I_var — переменная часть "
+             f"приведённого момента инерции (звенья групп), постоянная I_const = "
+             f"{num(fw.I_const, 5)} кг·м²."),
+        [Term("I_var", None, None), Term("ΔT", None, None)], (), marks)
+
+    for which, tau_t, tan_, psi, y0, letter, sign in (
+            ("max", fw.tangent_tau[0], fw.tan_max, fw.psi_max, fw.k_mm, "k", "+"),
+            ("min", fw.tangent_tau[1], fw.tan_min, fw.psi_min, fw.l_mm, "l", "−")):
+        xt = float(np.interp(tau_t, model.tau, model.inertia.I_var)) / KI
+        x_end = max(x_hi, xt) + 8.0
+        marks = [Mark("line", f"tangent-{which}", (_xy(-4.0, y0 - 4.0 * tan_),
+                                                  _xy(x_end, y0 + x_end * tan_)), "tangent"),
+                 Mark("point", letter, (_xy(0.0, y0),), "point"),
+                 Mark("label", letter, (_xy(0.0, y0),), "label", text=letter),
+                 Mark("point", f"touch-{which}", (_xy(xt, y0 + xt * tan_),), "point")]
+        where = "above" if which == "max" else "below"
+        where_ru = "сверху" if which == "max" else "снизу"
+        add(1, "tangent", f"tan ψ{which} = KI·ω²·(1 {sign} δ)/(2·KT)",
+            _two(f"tan ψ{which} = {fmt(KI)}·{num(w)}²·(1 {sign} {fmt(delta)})/(2·{fmt(KT, 5)}) "
+                 f"= {tan_:.5f}, ψ{which} = {psi:.3f}°: the tangent at this angle touching the "
+                 f"curve from {where} cuts the ΔT axis at {letter}.",
+                 f"tan ψ{which} = {fmt(KI)}·{num(w)}²·(1 {sign} {fmt(delta)})/(2·{fmt(KT, 5)}) "
+                 f"= {tan_:.5f}, ψ{which} = {psi:.3f}°: касательная под этим углом, касающаяся "
+                 f"кривой {where_ru}, пересекает ось ΔT в точке {letter}."),
+            (), (), marks)
+
+    marks = [Mark("vector", "kl", (_xy(0.0, fw.l_mm), _xy(0.0, fw.k_mm)), "absolute", text="kl")]
+    factor = KT / (w * w * delta)
+    notes = [_two(f"Iм = J_I − I_const = {num(fw.J_I, 5)} − {num(fw.I_const, 5)} = "
+                  f"{num(fw.I_m, 5)} kg·m²; by Merkalov {num(fw.I_m_approx, 5)} kg·m² "
+                  f"({fw.difference_pct:+.2f} %)",
+                  f"Iм = J_I − I_const = {num(fw.J_I, 5)} − {num(fw.I_const, 5)} = "
+                  f"{num(fw.I_m, 5)} кг·м²; по Мерцалову {num(fw.I_m_approx, 5)} кг·м² "
+                  f"({fw.difference_pct:+.2f} %)")]
+    add(1, "result", "J_I = kl·KT/(ω²·δ)",
+        _two(f"The segment kl between the tangents on the ΔT axis gives the constant reduced "
+             f"inertia that keeps ω within δ = {fmt(delta)}: J_I = kl·KT/(ω²·δ).",
+             f"Отрезок kl между касательными на оси ΔT даёт постоянный приведённый момент "
+             f"инерции, при котором неравномерность не больше δ = {fmt(delta)}: "
+             f"J_I = kl·KT/(ω²·δ)."),
+        [Term("J_I", None, None)],
+        [Result("kl", "J_I", fw.segment_mm, fw.segment_mm * factor, "kg·m²", "KT/(ω²·δ)",
+                factor)], marks, notes)
+
+    sz = fw.size
+    ok = {"en": "within" if sz.speed_ok else "above", "ru": "в пределах" if sz.speed_ok
+          else "выше"}
+    shape = {"en": "rim" if sz.shape == "rim" else "disc",
+             "ru": "обод" if sz.shape == "rim" else "диск"}
+    add(1, "size", "I = m·D²/4" if sz.shape == "rim" else "I = m·D²/8",
+        _two(f"A steel {shape['en']} on the crank shaft (u = {fmt(sz.ratio)}): D = "
+             f"{num(sz.D)} m, b = {num(sz.b)} m, h = {num(sz.h)} m, mass {num(sz.mass)} kg; "
+             f"rim speed {num(sz.speed)} m/s, {ok['en']} the 40 m/s limit.",
+             f"Стальной {shape['ru']} на валу кривошипа (u = {fmt(sz.ratio)}): D = "
+             f"{num(sz.D)} м, b = {num(sz.b)} м, h = {num(sz.h)} м, масса {num(sz.mass)} кг; "
+             f"окружная скорость {num(sz.speed)} м/с, {ok['ru']} предела 40 м/с."))
+
+    panels = (Panel("work", _two("Work diagrams: Mс(φ), Aс, Aд, ΔT", "Диаграммы работ: Mс(φ), "
+                                 "Aс, Aд, ΔT"), f"KM = {fmt(KM)} N·m/mm; KA = {fmt(KA, 5)} J/mm"),
+              Panel("energy-mass", _two("Energy–mass diagram", "Диаграмма энергия–масса"),
+                    f"KI = {fmt(KI)} kg·m²/mm; KT = {fmt(KT, 5)} J/mm"))
+    title = {lang: f"{WORDS[lang]['flywheel']} — {mech.name}" for lang in ("ru", "en")}
+    scales = (f"Kφ = 2π/L = {fmt(Kphi, 4)} rad/mm", f"KM = {fmt(KM)} N·m/mm",
+              f"KA = Kφ·KM·H = {fmt(KA, 5)} J/mm", f"KI = {fmt(KI)} kg·m²/mm")
+    return Lesson("flywheel", mech.name, mech.source, None, title, panels, tuple(steps), scales)
+
+
+__all__ = ["flywheel_lesson"]

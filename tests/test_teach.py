@@ -1,0 +1,415 @@
+"""Teaching pages without a browser: the numbers of every caption against independent
+routes (the exact kinematic and kinetostatic solvers, a brute-force Wittenbauer), the
+pages of every example and position, the frames, the command line and the notebook views.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from graphplan.analysis import analyze
+from graphplan.cli import main
+from graphplan.constructions import velocity_plan
+from graphplan.dynamics import dynamic_model
+from graphplan.files import bundled_example, examples_dir
+from graphplan.loader import load
+from graphplan.scales import sheet_scales
+from graphplan.teaching import PLANS, lesson, page_name, teaching_page, write_lesson
+from graphplan.teaching.captions import ZERO_MM, localise, mm, num, result_text
+from graphplan.teaching.context import context
+from graphplan.teaching.drawing import COLOURS, GREY, frame_svg
+from graphplan.teaching.model import Result
+from graphplan.teaching.page import CSP
+
+EXAMPLES = sorted(examples_dir().glob("*.toml"))
+SVG = "{http://www.w3.org/2000/svg}"
+POINT = re.compile(r"[A-Z][a-z]*\d*")
+NUMBER = re.compile(r"(?<![\w.])[−-]?\d+(?:\.\d+)?(?:·10\^-?\d+)?")
+
+
+def parse(s: str) -> float:
+    s = s.replace("−", "-")
+    if "·10^" in s:
+        m, e = s.split("·10^")
+        return float(m) * 10 ** int(e)
+    return float(s)
+
+
+_ANALYSES: dict[str, object] = {}
+
+
+def analysis_of(path: Path):
+    if path.stem not in _ANALYSES:
+        _ANALYSES[path.stem] = analyze(load(path))
+    return _ANALYSES[path.stem]
+
+
+@pytest.fixture(scope="module")
+def press():
+    return analysis_of(bundled_example("press"))
+
+
+def quoted(text: str) -> list[float]:
+    return [parse(x) for x in NUMBER.findall(text)]
+
+
+def assert_quotes(text: str, r: Result) -> None:
+    """The caption quotes the length to 0.01 mm and the value to its 4 figures."""
+    nums = quoted(text)
+    assert any(abs(x - r.mm) <= 0.005 + 1e-12 for x in nums), (text, r.mm)
+    tol = 5e-4 * abs(r.value) + ZERO_MM * r.per_mm + 1e-12  # round-off lengths read as 0
+    assert any(abs(x - r.value) <= tol for x in nums), (text, r.value)
+
+
+# ------------------------------------------------------- captions against the solvers
+
+
+def _exact_vector(kin, table, quantity: str, k: int):
+    """|v_X| or |v_X − v_Y| from the exact solver, for a quantity naming model points."""
+    sub = quantity.partition("_")[2]
+    pts = POINT.findall(sub)
+    if "".join(pts) != sub or not all(p in table for p in pts):
+        return None
+    if len(pts) == 1:
+        return float(np.hypot(*table[pts[0]][k]))
+    if len(pts) == 2:
+        return float(np.hypot(*(table[pts[0]][k] - table[pts[1]][k])))
+    return None
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_kinematic_captions_quote_the_exact_velocities_and_accelerations(path):
+    """Every v_X, v_XY, a_X the velocity and acceleration lessons read off their plans is
+    the exact solver's (closed-form loop equations, not a construction) to round-off, and
+    every angular velocity a caption derives is the solver's ω with its sense."""
+    a = analysis_of(path)
+    kin = a.kin
+    checked = {"velocity": 0, "acceleration": 0, "omega": 0}
+    for k in range(kin.n):
+        for plan, table in (("velocity", kin.vel.points), ("acceleration", kin.acc.points)):
+            les = lesson(a, plan, kin.labels[k])
+            for r in les.results:
+                if plan == "acceleration" and not r.quantity.startswith("a_"):
+                    continue
+                exact = _exact_vector(kin, table, r.quantity, k)
+                if exact is None:
+                    continue
+                assert r.value == pytest.approx(exact, rel=1e-9, abs=1e-12), (r, k)
+                assert_quotes(result_text(r, "en"), r)
+                checked[plan] += 1
+            for s in les.steps:
+                for note in s.notes:
+                    m = re.match(r"([ωε])(\w+) = .* = ([\d.]+)(?: rad/s²?, (\S+))?$", note["en"])
+                    assert m, note
+                    exact = (kin.vel.omega if m[1] == "ω" else kin.acc.epsilon)[m[2]][k]
+                    assert float(m[3]) == pytest.approx(abs(exact), rel=1e-3, abs=1e-6)
+                    if abs(exact) > 1e-9:
+                        assert m[4] == ("counter-clockwise" if exact > 0 else "clockwise")
+                    checked["omega"] += 1
+    assert checked["velocity"] >= 2 * kin.n and checked["acceleration"] >= kin.n, checked
+
+
+def test_press_velocity_steps_by_hand(press):
+    # Position 2 of the press: ω1 = π·55/30 = 5.7596 rad/s, l_OA = 0.08 m, so
+    # v_A = 0.46077 m/s and pa = v_A/Kv = 0.46077/0.01 = 46.08 mm (Kv of sheet 1).
+    les = lesson(press, "velocity", "2")
+    assert [s.kind for s in les.steps] == ["pole", "lay", "intersect", "read", "similar",
+                                           "similar"]
+    lay = les.steps[1].results[0]
+    assert lay.laid and lay.segment == "pa"
+    assert lay.value == pytest.approx(math.pi * 55 / 30 * 0.08, rel=1e-12)
+    assert lay.mm == pytest.approx(lay.value / 0.01, rel=1e-12)
+    assert result_text(lay, "en") == "v_A = 0.4608 m/s → pa = v_A/Kv = 0.4608/0.01 = 46.08 mm"
+    terms = {t.name: t for t in les.steps[2].terms}
+    # v_B = v_A + v_BA = v_B4 + v_B3B4: v_B sought, v_A drawn, v_BA ⟂AB, v_B4 = 0, v_B3B4 ∥ guide
+    assert (terms["v_B"].direction, terms["v_B"].magnitude) == (None, None)
+    assert terms["v_A"].direction == "= pa"
+    assert (terms["v_BA"].direction, terms["v_BA"].magnitude) == ("⟂AB", None)
+    assert terms["v_B4"].magnitude == "0"
+    assert (terms["v_B3B4"].direction, terms["v_B3B4"].magnitude) == ("∥ guide", None)
+    pb = les.steps[3].results[0]
+    assert result_text(pb, "ru").startswith(f"pb = {mm(pb.mm)} мм → v_B = pb·Kv = ")
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_force_captions_quote_the_exact_reactions(path):
+    """Each reaction a force plan's caption reads (segment·Kp) is the exact kinetostatics'
+    (a linear solve of all groups at once), and the lever's note quotes the force plans'
+    Mур and its own, equal by the power balance."""
+    a = analysis_of(path)
+    ctx = context(a)
+    checked = 0
+    for k in range(a.kin.n):
+        les = lesson(a, "forces", a.kin.labels[k])
+        for r in les.results:
+            if r.quantity in ctx.forces.reactions and r.factor == "Kp":
+                exact = float(ctx.forces.reactions[r.quantity].magnitude[k])
+                assert r.value == pytest.approx(exact, rel=1e-6, abs=1e-6 * max(exact, 1.0))
+                assert_quotes(result_text(r, "ru"), r)
+                checked += 1
+        lever = lesson(a, "zhukovsky", a.kin.labels[k])
+        note = lever.steps[-1].notes[0]["en"]
+        m_plans, m_lever = quoted(note)[:2]
+        exact = float(ctx.forces.M_bal[k])
+        scale = max(abs(exact), 1.0)
+        assert m_plans == pytest.approx(exact, rel=1e-4, abs=1e-4 * scale)
+        assert m_lever == pytest.approx(exact, rel=1e-4, abs=1e-4 * scale)
+    assert checked >= a.kin.n
+
+
+def test_scheme_arms_are_the_perpendiculars_measured(press):
+    """Each arm drawn on a scheme runs from the moment centre to the foot of the
+    perpendicular on the force's line of action, and its length is the arm the caption
+    converts (the force plan's reading)."""
+    les = lesson(press, "forces", "(3)")
+    arms = 0
+    for s in les.steps:
+        if s.kind not in ("moment", "couple"):
+            continue
+        byname = {m.name: m for m in s.marks}
+        for r in s.results:
+            arm = byname.get(r.segment)
+            if arm is None:
+                assert r.mm == pytest.approx(0.0, abs=1e-9)  # a force through the centre
+                continue
+            (cx, cy), (fx, fy) = arm.points
+            assert math.hypot(fx - cx, fy - cy) == pytest.approx(r.mm, rel=1e-9)
+            force = byname[r.factor]
+            (ax, ay), (bx, by) = force.points
+            # the foot is on the line of action and the arm is perpendicular to it
+            assert abs((fx - ax) * (by - ay) - (fy - ay) * (bx - ax)) < 1e-6 * math.hypot(
+                bx - ax, by - ay) * max(1.0, math.hypot(fx - ax, fy - ay))
+            assert abs((fx - cx) * (bx - ax) + (fy - cy) * (by - ay)) < 1e-6 * max(1.0, r.mm)
+            arms += 1
+    assert arms >= 1
+
+
+def test_flywheel_segment_kl_gives_the_wittenbauer_inertia(press):
+    """J_I from the caption's kl against a brute force over the grid: the tangents at
+    ψmax, ψmin touch ΔT(I_var) where ΔT − k±·I_var is extreme, k± = ω²(1 ± δ)/2, and
+    J_I = (b+ − b−)/(ω²δ). The drawn upper tangent lies on or above every point of the
+    curve and touches it; the lower one on or below."""
+    les = lesson(press, "flywheel")
+    m = dynamic_model(press)
+    w, delta = m.omega1, m.delta
+    from graphplan.dynamics import work_diagrams
+
+    dT, Iv = work_diagrams(m).dT, m.inertia.I_var  # exact ΔT: the grid, whatever n
+    kl = next(r for r in les.results if r.segment == "kl")
+    b_up = max(dT[i] - w * w * (1 + delta) / 2 * Iv[i] for i in range(len(dT)))
+    b_lo = min(dT[i] - w * w * (1 - delta) / 2 * Iv[i] for i in range(len(dT)))
+    assert kl.value == pytest.approx((b_up - b_lo) / (w * w * delta), rel=1e-9)
+    curve = next(mk for s in les.steps for mk in s.marks if mk.name == "ΔT(Iv)")
+    pts = np.array(curve.points)
+    span = float(np.ptp(pts[:, 1]))
+    for name, above in (("tangent-max", True), ("tangent-min", False)):
+        line = next(mk for s in les.steps for mk in s.marks if mk.name == name)
+        (x0, y0), (x1, y1) = line.points
+        y = y0 + (pts[:, 0] - x0) * (y1 - y0) / (x1 - x0)
+        gap = (y - pts[:, 1]) if above else (pts[:, 1] - y)
+        assert gap.min() > -1e-3 * span  # the whole curve on one side (thinned curve)
+        assert gap.min() < 1e-2 * span  # and touching it
+    assert_quotes(result_text(kl, "en"), kl)
+
+
+# ------------------------------------------------------------- pages of every example
+
+
+def _check_page(text: str, les, lang: str) -> None:
+    assert text.startswith("<!DOCTYPE html>")
+    assert f'content="{CSP}"' in text
+    assert f'<html lang="{lang}">' in text
+    assert "nan" not in re.findall(r"\bnan\b|\binf\b", text.lower())
+    # nothing to fetch: no URL but the SVG namespaces and data: fonts
+    urls = re.findall(r"""(?:src|href)\s*[=:]\s*["']?(?:url\()?([^"')\s>]+)""", text)
+    assert all(u.startswith(("data:", "#")) for u in urls), urls[:3]
+    assert not re.search(r"https?://(?!www\.w3\.org/)", text)
+    sections = re.findall(r'<section class="step" id="step-(\d+)"', text)
+    assert [int(s) for s in sections] == list(range(1, len(les.steps) + 1))
+    mms = [float(x) for x in re.findall(r'data-mm="([^"]+)"', text)]
+    assert mms == [r.mm for r in les.results]
+    answers = re.findall(r'<span class="answer">(.*?)</span></li>', text)
+    for r, ans in zip(les.results, answers, strict=True):
+        plain = html.unescape(re.sub(r"<[^>]+>", "", ans)).replace("\u00a0", " ")
+        assert_quotes(plain, r)
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_every_plan_of_every_position_makes_a_page(path):
+    a = analysis_of(path)
+    for plan in PLANS:
+        for label in (a.kin.labels if plan != "flywheel" else [None]):
+            les = lesson(a, plan, label)
+            assert les.steps and all(s.panel < len(les.panels) for s in les.steps)
+            lang = "en" if len(les.steps) % 2 else "ru"
+            _check_page(teaching_page(les, lang), les, lang)
+
+
+def test_the_page_is_deterministic_and_carries_its_fonts(press):
+    les = lesson(press, "acceleration", "(3)")
+    one, two = teaching_page(les, "en"), teaching_page(les, "en")
+    assert one == two
+    from graphplan import fonts
+
+    for fam in fonts.FONT_CHAIN:
+        if fonts.find_font_file(fam) is not None:
+            assert f"@font-face{{font-family:'{fam}'" in one
+    assert len(one) < 400_000
+
+
+# ------------------------------------------------------------------------- frames
+
+
+def _items(g):
+    return [e for e in g if e.tag != f"{SVG}text" and e.tag != f"{SVG}g"] + \
+        [e for sub in g if sub.tag == f"{SVG}g" for e in sub]
+
+
+def test_frames_colour_the_new_step_over_the_grey_ones(press):
+    les = lesson(press, "acceleration", "2")
+    earlier = 0
+    for s in les.steps:
+        root = ET.fromstring(frame_svg(les, s.number))
+        groups = {g.get("class"): g for g in root.findall(f"{SVG}g")}
+        new, old = groups["new"], groups["old"]
+        def paint(g):  # strokes, and the fills of the arrowheads
+            return ({e.get("stroke") for e in _items(g)} | {e.get("fill") for e in _items(g)
+                                                           if e.tag == f"{SVG}polygon"}) - {
+                None, "none"}
+
+        strokes_new, strokes_old = paint(new), paint(old)
+        assert strokes_old <= {GREY}
+        assert strokes_new <= set(COLOURS.values())
+        lines = [e for e in _items(new) if e.tag in (f"{SVG}line", f"{SVG}polyline")]
+        if any(m.kind in ("vector", "line") for m in s.marks):
+            assert lines, s.number
+        n_old = sum(1 for e in _items(old) if e.tag == f"{SVG}line")
+        assert n_old >= earlier  # nothing drawn before disappears
+        earlier = n_old + len([e for e in lines if e.tag == f"{SVG}line"])
+        # every mark lies inside the frame's viewBox (paper y is −y of the plan)
+        x, y, w, h = (float(v) for v in root.get("viewBox").split())
+        for m in s.marks:
+            for px, py in m.points:
+                assert x <= px <= x + w and y <= -py <= y + h
+
+
+def test_frames_for_slides(press, tmp_path):
+    les = lesson(press, "velocity", "2")
+    files = write_lesson(les, tmp_path, lang="en", frames=True)
+    assert files[0] == tmp_path / "teach-velocity-2.html"
+    frames = sorted((tmp_path / "teach-velocity-2").glob("*.svg"))
+    assert [f.name for f in frames] == [f"step-{i:02d}.svg" for i in range(1, 7)]
+    for i, f in enumerate(frames, start=1):
+        root = ET.parse(f).getroot()
+        assert root.get("width").endswith("mm") and root.get("data-step") == str(i)
+        texts = ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]
+        assert any(f"{i}/6" in t for t in texts)
+        style = "".join(root.find(f"{SVG}defs").itertext())
+        assert "@font-face" in style or not style
+
+
+# ---------------------------------------------------------------- the command line
+
+
+def test_command_writes_the_pages(tmp_path, capsys):
+    out = tmp_path / "out"
+    press = str(bundled_example("press"))
+    assert main(["teach", press, "--position", "2", "(2)", "--plan", "velocity", "flywheel",
+                 "--lang", "en", "-o", str(out)]) == 0
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["teach-flywheel.html", "teach-velocity-(2).html", "teach-velocity-2.html"]
+    assert capsys.readouterr().out.count("steps") == 3
+    assert page_name("forces", "(3)") == "teach-forces-(3).html"
+    assert page_name("velocity", "a b/c") == "teach-velocity-a_b_c.html"
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--position", "9"], r"--position: expected one of 1, 2, .*\(got '9'\)"),
+    ([], r"--position: the velocity plan needs a position"),
+    (["--position", "1", "--plan", "flywheel"], None),
+])
+def test_command_errors_are_one_line(tmp_path, capsys, argv, message):
+    press = str(bundled_example("press"))
+    code = main(["teach", press, *argv, "-o", str(tmp_path)])
+    err = capsys.readouterr().err
+    if message is None:
+        assert code == 0 and err == ""
+        return
+    assert code == 2
+    assert err.count("\n") == 1 and re.search(message, err), err
+    assert not list(tmp_path.iterdir())
+
+
+def test_flywheel_without_delta_is_an_input_error(tmp_path, capsys):
+    src = (examples_dir() / "press.toml").read_text(encoding="utf-8")
+    variant = tmp_path / "no-delta.toml"
+    variant.write_text(re.sub(r"(?m)^delta = .*$", "", src), encoding="utf-8")
+    assert main(["teach", str(variant), "--plan", "flywheel", "-o", str(tmp_path)]) == 2
+    assert "dynamics.delta is missing" in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------- notebook views
+
+
+def test_notebook_views(press):
+    sc = sheet_scales(press.mech, press.kin)
+    plan = velocity_plan(press.mech, press.kin, 1, sc.kl, sc.kv)
+    root = ET.fromstring(plan._repr_svg_())
+    arrows = [g for g in root.iter(f"{SVG}g") if g.get("class") == "arrow"]
+    assert len(arrows) == len({e.name for s in plan.steps for e in s.elements
+                               if e.kind == "segment" and e.start != e.end})
+    ctx = context(press)
+    from graphplan.force_plans import force_plans
+
+    fp = force_plans(press.mech, press.kin, ctx.forces, ctx.loads, 1, sc.kl)[0]
+    texts = ["".join(t.itertext()) for t in ET.fromstring(fp._repr_svg_()).iter(f"{SVG}text")]
+    assert any(q in " ".join(texts) for q in fp.readings)
+    from graphplan.kinematics_sheet import kinematics_sheet
+
+    sheet_svg = kinematics_sheet(press, diagrams=False)._repr_svg_()
+    root = ET.fromstring(sheet_svg)
+    assert root.get("width") == "100%" and root.get("height") is None
+    assert root.get("viewBox") == "0 0 841 594"
+    les = lesson(press, "velocity", "2")
+    frame = les._repr_html_()
+    assert frame.startswith("<iframe srcdoc=") and 'sandbox="allow-scripts"' in frame
+    assert html.unescape(re.search(r'srcdoc="([^"]*)"', frame)[1]) == teaching_page(les, "ru")
+
+
+def test_russian_words_replace_the_constructions_english(press):
+    les = lesson(press, "velocity", "2")
+    text = teaching_page(les, "ru")
+    assert "через" in text and " through " not in re.sub(r"<svg.*?</svg>", "", text, flags=re.S)
+    assert localise("ΣM_B(link 2): Rτ12·AB = 0", "ru") == "ΣM_B(звено 2): Rτ12·AB = 0"
+    assert num(423918.40231) == "423918" and num(0.421887) == "0.4219"
+    assert num(1.5849e7) == "1.585·10^7"
+
+
+# ------------------------------------------------------------- the committed pages
+
+
+COMMITTED = Path(__file__).resolve().parent.parent / "drawings" / "press"
+
+
+@pytest.mark.parametrize("page", sorted(COMMITTED.glob("teach-*.html")), ids=lambda p: p.name)
+def test_committed_pages_are_up_to_date(press, page):
+    """The pages in drawings/press are what `graphplan teach` writes now (structure and
+    every reading; regenerate with the command in graphplan/teaching/command.py)."""
+    m = re.fullmatch(r"teach-([a-z]+)(?:-(.+))?\.html", page.name)
+    les = lesson(press, m[1], m[2])
+    text = page.read_text(encoding="utf-8")
+    lang = re.search(r'<html lang="(\w+)">', text)[1]
+    fresh = teaching_page(les, lang)
+
+    def shape(t):
+        return (re.findall(r'data-kind="(\w+)"', t),
+                [round(float(x), 6) for x in re.findall(r'data-mm="([^"]+)"', t)])
+
+    assert shape(text) == shape(fresh)
