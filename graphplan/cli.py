@@ -1,8 +1,12 @@
 """Command line.
 
 ``graphplan analyze [VARIANT.toml] [--json] [--lang ru|en] [-o FILE]`` — structure and
-exact kinematics; ``graphplan sheets [VARIANT.toml ...] -o DIR`` — the sheets, the
-tables and the JSON report of each variant (see :mod:`graphplan.project`).
+exact kinematics; ``graphplan sheets [VARIANT.toml ...] -o DIR [--format svg,dxf,pdf,png]``
+— the sheets, the tables and the JSON report of each variant (see
+:mod:`graphplan.project`, :mod:`graphplan.exports`); ``graphplan check STUDENT.toml`` —
+a student's calculation checked figure by figure (:mod:`graphplan.checking`);
+``graphplan teach VARIANT.toml --position N --plan PLAN -o DIR`` — step-by-step teaching
+pages (:mod:`graphplan.teaching`).
 
 A thin layer over the library: every :class:`GraphplanError` becomes one line
 on standard error and exit status 2 (a traceback only with ``--debug``).
@@ -17,14 +21,18 @@ import sys
 from pathlib import Path
 
 from . import __version__
+from .checking import command as check_command
 from .errors import GraphplanError
+from .teaching import command as teach_command
 
 
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="graphplan",
-        description="The graphical method of TMM: structure, kinematics and plans of a "
-        "class-II linkage described in a variant file.",
+        description="The graphical method of TMM for a class-II linkage described in a "
+        "variant file: structure, plans of positions, velocities and accelerations, force "
+        "plans, Zhukovsky's lever, flywheel and motor, drawn on ESKD sheets; students' "
+        "calculations checked; step-by-step teaching pages.",
     )
     p.add_argument("--version", action="version", version=f"graphplan {__version__}")
     p.add_argument("--debug", action="store_true", help="show tracebacks of errors")
@@ -46,6 +54,14 @@ def _parser() -> argparse.ArgumentParser:
     s.add_argument("--precision", type=float, default=None, metavar="MM",
                    help="reading precision of the drafting tables, mm (default: the "
                    "variant's drawing.reading_mm, 0.5)")
+    s.add_argument("--format", default="svg", metavar="FORMATS",
+                   help="formats of the sheets, separated by commas: svg, dxf (CAD, with "
+                   "layers), pdf (true size), png (preview), or all (default: svg); dxf, "
+                   "pdf and png need pip install 'graphplan[export]'")
+    s.add_argument("--dpi", type=float, default=None, metavar="DPI",
+                   help="resolution of the PNG previews (default: 100)")
+    for name, command in (("check", check_command), ("teach", teach_command)):
+        command.add_arguments(sub.add_parser(name, help=command.HELP))
     return p
 
 
@@ -77,22 +93,29 @@ def _analyze(args) -> int:
 
 def _sheets(args) -> int:
     from .errors import InputError
+    from .exports import check_formats, parse_formats
+    from .exports.png import check_dpi
     from .project import write_project
 
     if args.precision is not None and not (0 <= args.precision <= 5):
         raise InputError(f"--precision: expected a reading precision of 0 … 5 mm "
                          f"(got {args.precision:g})")
+    formats = parse_formats(args.format)
+    check_formats(formats)
+    if args.dpi is not None:
+        check_dpi(args.dpi)
     variants = [Path(v) for v in args.variants] or [_variant_path(None)]
     out = Path(args.output)
     for v in variants:
         target = out / v.stem if len(variants) > 1 else out
         done = write_project(v, target, lang=args.lang, precision=args.precision,
-                             page=args.page)
+                             page=args.page, formats=formats, dpi=args.dpi)
         print(f"{v}: " + ", ".join(str(f) for f in done.files))
     return 0
 
 
-COMMANDS = {"analyze": _analyze, "sheets": _sheets}
+COMMANDS = {"analyze": _analyze, "sheets": _sheets, "check": check_command.run,
+            "teach": teach_command.run}
 
 
 def main(argv: list[str] | None = None) -> int:
