@@ -25,6 +25,14 @@ class Analysis:
     cycle: Cycle
     kin: Kinematics
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the tables of ``graphplan analyze`` (structure, cycle, kinematics)."""
+        import html
+
+        from .render.tables import analysis_text
+
+        return f"<pre>{html.escape(analysis_text(self, 'en'))}</pre>"
+
     def to_json(self, unit=None) -> dict:
         """The JSON report of ``graphplan analyze --json``.
 

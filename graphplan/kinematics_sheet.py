@@ -364,7 +364,8 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     drawn: set[str] = set()
     for n, e in enumerate(elems):
         if e.kind == "line":
-            items.append(Line(to(e.start), to(e.end), THIN, layer=layer, id=f"{ident}-l{n}"))
+            items.append(Line(to(e.start), to(e.end), THIN, layer="construction",
+                              id=f"{ident}-l{n}"))
         elif e.kind == "segment":
             key = e.name
             if key in drawn or math.dist(e.start, e.end) < 1e-9:
@@ -372,7 +373,8 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
             drawn.add(key)
             style = MEDIUM if e.role in ("absolute", "relative", "load", "reaction",
                                          "force") else THIN
-            items.append(Arrow(to(e.start), to(e.end), style, 3.0, 1.0, layer=layer,
+            items.append(Arrow(to(e.start), to(e.end), style, 3.0, 1.0,
+                               layer="dimensions" if e.role == "arm" else layer,
                                id=f"{ident}-{e.name}"))
     reqs = [LabelRequest(to(q), _label(name), 3.5, group=ident) for name, q in plan.points.items()]
     if segment_labels:

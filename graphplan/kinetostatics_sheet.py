@@ -149,9 +149,11 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
         foot = a + float(np.dot(o - a, d)) * d
         ends = sorted([0.0, float(np.dot(foot - a, d))])
         items.append(Line(tuple(a + (ends[0] - 6.0) * d), tuple(a + (ends[1] + 6.0) * d),
-                          Style(0.25, (4.0, 1.5)), layer=L, id=f"{ident}-r21-line"))
+                          Style(0.25, (4.0, 1.5)), layer="construction",
+                          id=f"{ident}-r21-line"))
         if math.dist(foot, o) > 0.5:
-            items.append(Line(tuple(o), tuple(foot), THIN, layer=L, id=f"{ident}-h21"))
+            items.append(Line(tuple(o), tuple(foot), THIN, layer="dimensions",
+                              id=f"{ident}-h21"))
             reqs.append(LabelRequest(tuple((o + foot) / 2), "h21", 3.5, group=ident))
     # the balancing moment: a turning arrow about the crank's pivot
     c = P(pivot)

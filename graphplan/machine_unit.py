@@ -94,6 +94,12 @@ class MachineUnit:
         """(δ simulated − δ target)/δ target·100."""
         return (self.simulation.delta_actual / self.flywheel.delta - 1.0) * 100.0
 
+    def _repr_markdown_(self) -> str:
+        """Jupyter: the hand calculation of sheet 3 (``dynamics.en.md``)."""
+        from .render.dynamics_tables import dynamics_markdown
+
+        return dynamics_markdown(self, "en")
+
     def to_json(self) -> dict:
         """The ``"dynamics"`` entry of the JSON report (SI units)."""
         fw, mc, mo = self.flywheel, self.motor, self.motor.motor

@@ -965,6 +965,16 @@ def _describe(t: Leaf) -> str:
     return f"{name} [{t.layer}]"
 
 
+#: Layers that hold the construction lines and the arms of the plans drawn in these layers.
+_PLAN_LAYERS = frozenset({"position_plan", "velocity_plan", "acceleration_plan", "force_plan"})
+
+
+def _same_figure(text_layer: str, item_layer: str) -> bool:
+    """A plan's letters may cross its own construction lines and arms (other layers)."""
+    return text_layer == item_layer or (text_layer in _PLAN_LAYERS
+                                        and item_layer in ("construction", "dimensions"))
+
+
 def check_layout(sheet: Sheet) -> list[str]:
     """Problems of a sheet's layout, one line each (empty list: nothing found).
 
@@ -972,7 +982,7 @@ def check_layout(sheet: Sheet) -> list[str]:
     sheet, for the frame and title layers, whose graphs 31–32 sit in the margin); a
     text of another layer over the title block or graph 26; a drawing item leaving
     the inner frame; two texts whose boxes overlap; a text box crossed by a line of
-    another layer.
+    another layer (a plan's letters may cross its construction lines and arms).
     """
     problems: list[str] = []
     all_items = sheet.all_items()
@@ -1024,6 +1034,6 @@ def check_layout(sheet: Sheet) -> list[str]:
         for i, b in enumerate(boxes):
             for j in tree.query(b, predicate="intersects").tolist():
                 it, g = geoms[j]
-                if it.layer != texts[i].layer and not g.touches(b):
+                if not _same_figure(texts[i].layer, it.layer) and not g.touches(b):
                     problems.append(f"{_describe(texts[i])} is crossed by {_describe(it)}")
     return problems

@@ -274,6 +274,9 @@ def test_dxf_layers_are_the_sheets_layers_and_hold_their_content(name):
         assert {"frame", "title", "tables", "text"} <= used
         assert ({"position_plan", "velocity_plan", "acceleration_plan"} <= used
                 if name == "press-1" else "force_plan" in used)
+        if name in ("press-1", "press-2"):  # the plans' thin lines; h21 and the lever's arms
+            assert "construction" in used
+            assert ("dimensions" in used) == (name == "press-2")
 
 
 @pytest.mark.parametrize("name", SHEETS)

@@ -278,7 +278,11 @@ def test_random_mechanisms_force_plans_agree_with_the_power_balance():
         forces = solve_forces(m, kin, loads)
         power = power_balance_moment(m, kin, loads)
         kl = Scale("Kl", m.crank.length / 50.0, "m/mm")
-        scale = max(float(np.max(np.abs(power))), 1e-6)  # N·m: no loads, no moment
+        # N·m: the moments the forces can make about the pivot (round-off is relative to
+        # them, not to Mур, which may be ~0 when the loads do no work)
+        reach = m.crank.length + sum(sum(d.lengths) for d in m.dyads)
+        biggest = max(float(np.max(r.magnitude)) for r in forces.reactions.values())
+        scale = max(float(np.max(np.abs(power))), biggest * reach, 1e-6)
         for k in range(n):
             try:
                 plans = force_plans(m, kin, forces, loads, k, kl)

@@ -460,3 +460,15 @@ def test_everything_works_without_font_files(no_fonts):
     assert fonts.choose_family("Ёмкость") == "DejaVu Sans"
     assert fonts.choose_family("a ⟂ b") == "DejaVu Sans Mono"
     assert check_layout(_clean_sheet()) == []
+
+
+def test_a_plans_letters_may_cross_its_construction_lines_and_arms():
+    # 'A' (position_plan) at (100, 95), 5 mm high: a construction line and an arm through it
+    # are the plan's own; the same line through the caption (layer "text") is not
+    problems = check_layout(_clean_sheet([
+        Line((102, 85), (102, 99), THIN, layer="construction", id="through-a"),
+        Line((101, 85), (101, 99), THIN, layer="dimensions", id="arm-a"),
+        Line((310, 80), (310, 120), THIN, layer="construction", id="cut"),
+    ]))
+    assert [p for p in problems if "'lbl-a'" in p] == []
+    assert any("'cap'" in p and "crossed by line 'cut'" in p for p in problems)

@@ -194,6 +194,15 @@ class Report:
         """Nothing is wrong (inaccurate figures are allowed)."""
         return not self.wrong
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the HTML report, in a frame of its own (its styles stay inside)."""
+        import html
+
+        from .report_html import html_report
+
+        return (f'<iframe srcdoc="{html.escape(html_report(self), quote=True)}" sandbox="" '
+                'style="width:100%;height:640px;border:1px solid #ddd"></iframe>')
+
     def counts(self) -> dict[str, int]:
         """Figures by verdict, and the number of findings and of primary ones."""
         out = {v: 0 for v in VERDICTS}
