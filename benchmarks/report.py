@@ -99,7 +99,8 @@ def tables(results: dict) -> str:
             val = f"{t['value_s']:.3g} s (first in the process {t['first_s']:.3g} s)"
         else:
             val = f"{t['value']:.3g}"
-        out.append(f"| {t['target']} | {val} | {'yes' if t['met'] else '**no**'} |")
+        met = {True: 'yes', False: '**no**', None: 'not judged'}[t['met']]
+        out.append(f"| {t['target']} | {val} | {met} |")
     out.append("")
     return "\n".join(out)
 
