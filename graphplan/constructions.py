@@ -49,6 +49,17 @@ class Element:
     role: str
 
 
+ZERO_MM = 1e-9
+"""A segment shorter than this (mm) is round-off of an exact construction: its value is
+written 0 in the steps' texts (a dead centre's v_B of 1e-16 m/s)."""
+
+def _written(value: float, vec_mm) -> float:
+    """``value`` as a step's text writes it: 0 when its vector on the plan is round-off."""
+    return 0.0 if float(np.hypot(*vec_mm)) < ZERO_MM else value
+
+
+_RU_UNITS = {"m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²"}
+
 MAX_ERROR_MM = 1e6
 """The uncertainty written for lines that do not meet (parallel): finite, and off any sheet."""
 
@@ -409,8 +420,10 @@ def _result(b: _Builder, eq: str, segments) -> None:
         rd = b.read(name, frm, to, quantity)
         elements.append(b.segment(name, frm, to, role))
         names.append(name)
-        en.append(f"{name} = {rd.mm:.2f} mm → {quantity} = {name}·{rd.scale} = {rd.value:.4g} {rd.unit}")
-        ru.append(f"{name} = {rd.mm:.2f} мм → {quantity} = {name}·{rd.scale} = {rd.value:.4g} {rd.unit}")
+        value = 0.0 if abs(rd.mm) < ZERO_MM else rd.value  # round-off written as 0
+        said = f"{quantity} = {name}·{rd.scale} = {value:.4g}"
+        en.append(f"{name} = {rd.mm:.2f} mm → {said} {rd.unit}")
+        ru.append(f"{name} = {rd.mm:.2f} мм → {said} {_RU_UNITS.get(rd.unit, rd.unit)}")
     b.add_step(eq, "; ".join(en) + ".", "; ".join(ru) + ".", elements, tuple(names))
 
 
@@ -611,20 +624,26 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         """aⁿ of ``tip`` about ``base`` on ``link``: ω²·l, from tip toward base."""
         name = f"n_{tip}{base}"
         vec = unit_vector(P[base] - P[tip]) * (W[link] ** 2 * l_m / ka.per_mm)
+        an = _written(W[link] ** 2 * l_m, vec)
         _lay(b, name, frm, vec, "normal", f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {W[link] ** 2 * l_m:.4g} m/s², ∥ {tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {W[link] ** 2 * l_m:.4g} м/с², ∥ {tip}{base}")
+             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {an:.4g} m/s², ∥ {tip}{base}",
+             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {an:.4g} м/с², ∥ {tip}{base}")
         return name
 
     def coriolis_from(frm: str, name: str, omega_k: float, v_r: float, u: Vec2, sign=1.0) -> str:
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
+        # a factor that is round-off (a dead centre) is written 0: ω against ω1, v_r
+        # against the crank pin's speed
+        w = omega_k if abs(omega_k) > 1e-12 * abs(cr.omega) else 0.0
+        vr = abs(v_r) if abs(v_r) > 1e-12 * abs(cr.omega) * cr.length else 0.0
+        ak = _written(abs(2 * omega_k * v_r), vec)
         return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω·v_r",
-                    f"Coriolis aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = {abs(2 * omega_k * v_r):.4g} "
+                    f"Coriolis aᵏ = 2·{w:.4g}·{vr:.4g} = {ak:.4g} "
                     "m/s², the relative velocity turned 90° in the sense of ω",
-                    f"Кориолисово aᵏ = 2·{omega_k:.4g}·{abs(v_r):.4g} = "
-                    f"{abs(2 * omega_k * v_r):.4g} м/с², относительная скорость, повёрнутая на 90° "
+                    f"Кориолисово aᵏ = 2·{w:.4g}·{vr:.4g} = "
+                    f"{ak:.4g} м/с², относительная скорость, повёрнутая на 90° "
                     "по ω")
 
     S = vplan.sliding

@@ -302,12 +302,17 @@ class _Draw:
         tau = -total / h + 0.0
         eq = " ".join([f"ΣM_{cname}(link {link}): {q}·{arm_name}", *sym, "= 0"])
         self.equations.append(eq)
-        nums = " ".join([f"{q}·{h:.2f}", *num, f"= 0 → {q} = {tau:.6g} N"])
+        # the text writes round-off of the moments (a dead centre: 1e-13 N) as 0
+        shown = 0.0 if abs(tau) <= 1e-12 * self.big else tau
+        nums = " ".join([f"{q}·{h:.2f}", *num, f"= 0 → {q} = {shown:.6g}"])
+        none = none_ru = ""
         if not sym:
-            nums += f" (no known load of link {link} has a moment about {cname})"
-        rev = " (negative: the sense is opposite to the assumed one)" if tau < 0 else ""
-        rev_ru = " (знак минус: направление противоположно принятому)" if tau < 0 else ""
-        self.step(eq, f"{eq}; {nums}{rev}.", f"{eq}; {nums}{rev_ru}.")
+            none = f" (no known load of link {link} has a moment about {cname})"
+            none_ru = (f" (ни одна известная нагрузка звена {link} не даёт момента "
+                       f"относительно {cname})")
+        rev = " (negative: the sense is opposite to the assumed one)" if shown < 0 else ""
+        rev_ru = " (знак минус: направление противоположно принятому)" if shown < 0 else ""
+        self.step(eq, f"{eq}; {nums} N{none}{rev}.", f"{eq}; {nums} Н{none_ru}{rev_ru}.")
         return tau * e
 
     def couple(self, q, link, cname, c, vec, u, sign, forces, couples):

@@ -383,13 +383,18 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
     m_bal = math.copysign(1.0, cr.omega) * mu * total
     a_t = turned[cr.pin.lower() + "'"]
     fvec = -math.copysign(f_bal, total) * perp(a_t / pa.mm)  # its moment about p is −Σ M_p
+    # the text writes round-off (a dead centre: every arm ~0) as 0, relative to the moments
+    # the forces could make on a lever of this size
+    size = sum(f.magnitude for f in forces) * pa.mm
+    t_s = 0.0 if abs(total) <= 1e-12 * size else total
+    f_s, m_s = abs(t_s) / pa.mm, math.copysign(1.0, cr.omega) * mu * t_s
     step("Σ M_p = 0: F_ур·pa + Σ M_p(F_i) = 0",
-         f"Σ M_p(F_i) = {total:+.5g} N·mm; F_ур = |Σ M_p|/pa = {abs(total):.5g}/{pa.mm:.2f} = "
-         f"{f_bal:.5g} N at {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
-         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_bal:+.5g} N·m (CCW positive).",
-         f"Σ M_p(F_i) = {total:+.5g} Н·мм; F_ур = |Σ M_p|/pa = {abs(total):.5g}/{pa.mm:.2f} = "
-         f"{f_bal:.5g} Н в точке {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
-         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_bal:+.5g} Н·м (против часовой — плюс).",
+         f"Σ M_p(F_i) = {t_s:+.5g} N·mm; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
+         f"{f_s:.5g} N at {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
+         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} N·m (CCW positive).",
+         f"Σ M_p(F_i) = {t_s:+.5g} Н·мм; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
+         f"{f_s:.5g} Н в точке {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
+         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} Н·м (против часовой — плюс).",
          [Element("segment", "F_ур", as_xy(a_t), as_xy(a_t + fvec / kf.per_mm), "force")])
     power = float(power_balance_moment(mech, kin, loads)[k])
     return Lever(plan.label, k, plan, turned, tuple(forces), tuple(steps), readings, total, mu,

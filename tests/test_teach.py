@@ -413,3 +413,29 @@ def test_committed_pages_are_up_to_date(press, page):
                 [round(float(x), 6) for x in re.findall(r'data-mm="([^"]+)"', t)])
 
     assert shape(text) == shape(fresh)
+
+
+def _page_words(page: str) -> set[str]:
+    """Latin words of 3+ letters in a page's visible text (no scripts, styles, drawings),
+    the English units after numbers (``232.7 N``, ``0.42 m/s``) and round-off numbers."""
+    for tag in ("script", "style", "svg"):
+        page = re.sub(rf"<{tag}.*?</{tag}>", " ", page, flags=re.S)
+    text = html.unescape(re.sub(r"<[^>]+>", " ", page))
+    units = re.findall(r"\d[\s\u00a0](N|N·m|N·mm|mm|m|m/s|m/s²|rad/s|rad/s²)(?![\w/²])", text)
+    # round-off (a dead centre's 1e-16 m/s) is written 0, never as a number of 1e-10 or less
+    tiny = re.findall(r"\d(?:e-|·10\^-)(?:1\d|[2-9]\d)", text)
+    return set(re.findall(r"(?<![\w_·/])[a-zA-Z]{3,}(?![\w_])", text)) | set(units) | set(tiny)
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_a_russian_page_speaks_russian(path):
+    # the words the page may keep: keys, file names, the kinds of groups, the scales' names
+    allowed = {"Home", "End", "PgUp", "PgDn", "lOA", "RRR", "RRP", "RPR", "PRP", "RPP",
+               "DIR", "graphplan", "teach", "toml", "lang", "plan", "position", "examples",
+               path.stem, *path.stem.split("_"), "forces", "velocity", "acceleration",
+               "zhukovsky", "lAB", "lBC", "lCD", "lO3A", "lAO3"}
+    an = analyze(load(path))
+    for plan in ("velocity", "acceleration", "forces", "zhukovsky"):
+        for label in an.kin.labels:
+            words = _page_words(teaching_page(lesson(an, plan, label), "ru")) - allowed
+            assert not words, (path.stem, plan, label, sorted(words))

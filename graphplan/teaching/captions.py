@@ -133,6 +133,11 @@ def num(x: float, sig: int = 4) -> str:
     return fmt(x, sig)
 
 
+def shown(r: Result) -> float:
+    """A result's value as written: 0 when its length is round-off (a dead centre)."""
+    return 0.0 if abs(r.mm) < ZERO_MM else r.value
+
+
 def mm(x: float) -> str:
     """A length on the drawing, to 0.01 mm."""
     s = f"{float(x):.2f}"
@@ -144,7 +149,7 @@ def result_text(r: Result, lang: str) -> str:
     u_mm, u = unit("mm", lang), unit(r.unit, lang)
     k = fmt(r.per_mm)
     if abs(r.mm) < ZERO_MM:  # a dead centre: round-off, not a length
-        r = Result(r.segment, r.quantity, 0.0, 0.0, r.unit, r.factor, r.per_mm, r.laid)
+        r = Result(r.segment, r.quantity, 0.0, shown(r), r.unit, r.factor, r.per_mm, r.laid)
     if r.laid:
         return (f"{r.quantity} = {num(r.value)} {u} → {r.segment} = {r.quantity}/{r.factor} = "
                 f"{num(r.value)}/{k} = {mm(r.mm)} {u_mm}")
@@ -152,4 +157,5 @@ def result_text(r: Result, lang: str) -> str:
             f"{mm(r.mm)}·{k} = {num(r.value)} {u}")
 
 
-__all__ = ["KIND_TITLES", "WORDS", "localise", "mm", "num", "result_text", "scale_text", "unit"]
+__all__ = ["KIND_TITLES", "WORDS", "localise", "mm", "num", "result_text", "scale_text", "shown",
+           "unit"]

@@ -25,7 +25,7 @@ import numpy as np
 from ..constructions import Step, position_mm, unit_vector
 from ..force_plans import ForcePlan, force_plans
 from ..kinetostatics import reaction_name
-from .captions import WORDS, num
+from .captions import WORDS, num, shown
 from .context import context
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -246,7 +246,7 @@ def _plan_step(number, panel, fp: ForcePlan, s: Step, labelled: set[str]) -> Les
             results.append(Result(rd.name, q, rd.mm, rd.value, "N", "Kp", fp.scale.per_mm, laid))
         kind = "lay" if laid else "read"
         if laid:
-            terms = [Term(s.readings[0], f"∥ {s.readings[0]}", f"{num(results[0].value)} N")]
+            terms = [Term(s.readings[0], f"∥ {s.readings[0]}", f"{num(shown(results[0]))} N")]
     elif lines:
         kind = "intersect"
         dirs = {n.split(" ", 1)[0]: n.split(" ", 1)[1] for n in lines if " " in n}

@@ -23,7 +23,7 @@ import numpy as np
 
 from ..constructions import Plan, Step, acceleration_plan, velocity_plan
 from ..scales import sheet_scales
-from .captions import WORDS, ZERO_MM, num, unit
+from .captions import WORDS, ZERO_MM, num, shown, unit
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
 _POINT = re.compile(r"[A-Z][a-z]*\d*")
@@ -190,7 +190,7 @@ def _laid_term(mech, plan: Plan, step: Step, r: Result) -> Term:
         direction = "v_r ↻ 90°, ω"
     else:
         direction = f"∥ {cr.pin}{cr.pivot}: {cr.pin} → {cr.pivot}"
-    return Term(q, direction, f"{expr} = {num(r.value)} {r.unit}")
+    return Term(q, direction, f"{expr} = {num(shown(r))} {r.unit}")
 
 
 def _model_point(kin, name: str) -> tuple[str | None, str | None]:

@@ -250,8 +250,8 @@ def _step_html(lesson: Lesson, step: LessonStep, lang: str, svg: str) -> str:
     parts.append(_terms_html(step, lang))
     if step.kind != "read":  # a reading's sentence is its results, written below
         hide = " answer" if step.results or step.notes else ""
-        parts.append(f'<p class="what{hide}">'
-                     f'{nowrap_values(math_html(localise(step.text[lang], lang)))}</p>')
+        what = localise_units(localise(step.text[lang], lang), lang)
+        parts.append(f'<p class="what{hide}">{nowrap_values(math_html(what))}</p>')
     if step.results:
         parts.append(f'<p class="scale">{math_html(scale_text(panel.scale, lang))}</p>')
     parts.append(_results_html(step, lang))
