@@ -26,6 +26,10 @@ FLOOR = 1e-17
 """Errors below this (exact zeros) are drawn at it."""
 
 
+
+#: Vertical offsets (points) of the names of the drafting precisions on the chart.
+LABEL_DY = {0.1: -13.0, 0.25: -4.5, 0.5: 4.5, 1.0: 13.0}
+
 def _pyplot():
     import matplotlib
 
@@ -73,9 +77,12 @@ def speed_accuracy_chart(results: dict, folder: Path) -> Path:
                            label=label if (label, ax) not in seen else None)
                 seen.add((label, ax))
                 if meth.startswith("drafting") and e["magnify"] == 1.0 and mname == "press":
+                    # the four precisions lie close together: their names fan out
+                    dy = LABEL_DY.get(e["precision_mm"], 0.0)
                     ax.annotate(f"{e['precision_mm']:g} mm", (t * 1e3 * scale, err), fontsize=6,
-                                xytext=(-30, 0), textcoords="offset points", va="center",
-                                color="#a04000")
+                                xytext=(-38, dy), textcoords="offset points", va="center",
+                                ha="right", color="#a04000",
+                                arrowprops={"arrowstyle": "-", "color": "#a04000", "lw": 0.4})
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("time of one turn, 360 positions, ms (median)")
