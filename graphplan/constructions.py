@@ -726,7 +726,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             rel[k1], rel[k2] = _slide(b, r1, u1), _slide(b, r2, u2)
             img.add(i, B, pb), img.add(j, B, pb)
         elif dy.kind == "RPP":
-            A, D = dy.joints
+            A, _ = dy.joints
             pa = key(A)
             g = dy.guides[0]
             kj, ki = f"{j}/{g.link}", f"{i}/{j}"

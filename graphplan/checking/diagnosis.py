@@ -485,7 +485,7 @@ class Diagnoser:
         arm = self._arm(f)
         if arm is None:
             return None
-        q, o, k, kl = arm
+        q, _, k, kl = arm
         mech = self.ref.mech
         if q.key[0] == "crank_arm":
             limit, force, about, at = mech.crank.length, f"R{q.key[1]}{mech.crank.link}", \
