@@ -93,23 +93,17 @@ def _analyze(args) -> int:
 
 def _sheets(args) -> int:
     from .errors import InputError
-    from .exports import check_formats, parse_formats
-    from .exports.png import check_dpi
     from .project import write_project
 
     if args.precision is not None and not (0 <= args.precision <= 5):
         raise InputError(f"--precision: expected a reading precision of 0 … 5 mm "
                          f"(got {args.precision:g})")
-    formats = parse_formats(args.format)
-    check_formats(formats)
-    if args.dpi is not None:
-        check_dpi(args.dpi)
     variants = [Path(v) for v in args.variants] or [_variant_path(None)]
     out = Path(args.output)
     for v in variants:
         target = out / v.stem if len(variants) > 1 else out
         done = write_project(v, target, lang=args.lang, precision=args.precision,
-                             page=args.page, formats=formats, dpi=args.dpi)
+                             page=args.page, formats=args.format, dpi=args.dpi)
         print(f"{v}: " + ", ".join(str(f) for f in done.files))
     return 0
 

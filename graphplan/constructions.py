@@ -28,7 +28,7 @@ import numpy as np
 
 from .geometry import cross, perp
 from .model import Dyad, Mechanism
-from .units import Scale
+from .units import Scale, unit_text
 
 Vec2 = np.ndarray
 
@@ -57,8 +57,6 @@ def _written(value: float, vec_mm) -> float:
     """``value`` as a step's text writes it: 0 when its vector on the plan is round-off."""
     return 0.0 if float(np.hypot(*vec_mm)) < ZERO_MM else value
 
-
-_RU_UNITS = {"m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²"}
 
 MAX_ERROR_MM = 1e6
 """The uncertainty written for lines that do not meet (parallel): finite, and off any sheet."""
@@ -423,7 +421,7 @@ def _result(b: _Builder, eq: str, segments) -> None:
         value = 0.0 if abs(rd.mm) < ZERO_MM else rd.value  # round-off written as 0
         said = f"{quantity} = {name}·{rd.scale} = {value:.4g}"
         en.append(f"{name} = {rd.mm:.2f} mm → {said} {rd.unit}")
-        ru.append(f"{name} = {rd.mm:.2f} мм → {said} {_RU_UNITS.get(rd.unit, rd.unit)}")
+        ru.append(f"{name} = {rd.mm:.2f} мм → {said} {unit_text(rd.unit, 'ru')}")
     b.add_step(eq, "; ".join(en) + ".", "; ".join(ru) + ".", elements, tuple(names))
 
 

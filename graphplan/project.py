@@ -88,20 +88,24 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
 
 def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None = None,
                   precision: float | None = None, page: str | None = None,
-                  formats: tuple[str, ...] = ("svg",), dpi: float | None = None) -> Written:
+                  formats: str | tuple[str, ...] = ("svg",), dpi: float | None = None
+                  ) -> Written:
     """Analyse ``variant`` and write its output files into ``out_dir``.
 
     ``page`` ("A1", "A2", "A3") overrides the variant's ``drawing.format``; ``formats``
-    and ``dpi`` as in :func:`project_files` (a missing export package is reported before
-    any work is done).
+    and ``dpi`` as in :func:`project_files` (``formats`` also as ``"svg,dxf"``; a bad format
+    or dpi and a missing export package are reported before any work is done).
     """
     from .analysis import analyze
     from .exports import check_formats, parse_formats
+    from .exports.png import check_dpi
     from .files import write_atomic
     from .loader import load
 
     formats = parse_formats(formats)
     check_formats(formats)
+    if dpi is not None:
+        check_dpi(dpi)
     variant = Path(variant)
     mech = load(variant)
     if page:  # the format decides the scales: the sheet, tables and JSON must agree

@@ -14,6 +14,21 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+UNITS_RU: dict[str, str] = {
+    "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм",
+    "J": "Дж", "kg·m²": "кг·м²", "rad/s": "рад/с", "rad/s²": "рад/с²", "W": "Вт", "kg": "кг",
+    "°": "°", "rpm": "об/мин", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "m/mm": "м/мм",
+    "N/mm": "Н/мм", "J/mm": "Дж/мм", "N·m/mm": "Н·м/мм", "rad/mm": "рад/мм",
+    "kg·m²/mm": "кг·м²/мм",
+}
+"""SI units as lettered in Russian (the units of the scales are per mm of drawing)."""
+
+
+def unit_text(unit: str, lang: str) -> str:
+    """A unit as lettered in ``lang`` (``"ru"``: :data:`UNITS_RU`; otherwise as given)."""
+    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+
+
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 """Mantissas of the usual scale factors."""
 

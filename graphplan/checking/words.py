@@ -4,15 +4,7 @@ from __future__ import annotations
 
 import math
 
-UNITS_RU = {"N": "Н", "N·m": "Н·м", "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²",
-            "rad/s": "рад/с", "rad/s²": "рад/с²", "kg": "кг", "N/mm": "Н/мм", "m/mm": "м/мм",
-            "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "rpm": "об/мин",
-            "kg·m²": "кг·м²", "": ""}
-
-
-def unit_text(unit: str, lang: str) -> str:
-    """A unit in the report's language."""
-    return UNITS_RU.get(unit, unit) if lang == "ru" else unit
+from ..units import UNITS_RU, unit_text
 
 
 def num(x: float | None, lang: str = "en", digits: int = 5) -> str:

@@ -10,15 +10,9 @@ from __future__ import annotations
 
 import math
 
-from ..units import fmt
+from ..constructions import ZERO_MM
+from ..units import UNITS_RU, fmt, unit_text
 from .model import Result
-
-UNITS_RU = {
-    "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм",
-    "J": "Дж", "kg·m²": "кг·м²", "rad/s": "рад/с", "rad/s²": "рад/с²", "W": "Вт", "kg": "кг",
-    "°": "°", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "m/mm": "м/мм", "N/mm": "Н/мм",
-    "J/mm": "Дж/мм", "N·m/mm": "Н·м/мм", "rad/mm": "рад/мм", "kg·m²/mm": "кг·м²/мм",
-}
 
 WORDS = {
     "en": {
@@ -85,11 +79,9 @@ _RU_PHRASES = (
     ("⟂ guide", "⟂ направляющей"), ("∥ slot", "∥ кулисе"), ("⟂ slot", "⟂ кулисе"),
     (": similarity on link ", ": подобие, звено "), ("(link ", "(звено "),
 )
-_RU_UNITS = (
-    ("(m/s²)/mm", "(м/с²)/мм"), ("(m/s)/mm", "(м/с)/мм"), ("kg·m²/mm", "кг·м²/мм"),
-    ("N·m/mm", "Н·м/мм"), ("J/mm", "Дж/мм"), ("rad/mm", "рад/мм"), ("N/mm", "Н/мм"),
-    ("m/mm", "м/мм"),
-)
+#: The units of the scales, longest first (``(m/s)/mm`` before ``m/mm``).
+_RU_UNITS = tuple(sorted(((en, ru) for en, ru in UNITS_RU.items() if en.endswith("/mm")),
+                         key=lambda p: -len(p[0])))
 
 
 def localise(text: str, lang: str) -> str:
@@ -111,13 +103,9 @@ def scale_text(text: str, lang: str) -> str:
     return text
 
 
-ZERO_MM = 1e-9
-"""A length below this (mm) is round-off of an exact construction and is written as 0."""
-
-
 def unit(u: str, lang: str) -> str:
     """A unit as lettered in ``lang``."""
-    return UNITS_RU.get(u, u) if lang == "ru" else u
+    return unit_text(u, lang)
 
 
 def num(x: float, sig: int = 4) -> str:
@@ -157,5 +145,5 @@ def result_text(r: Result, lang: str) -> str:
             f"{mm(r.mm)}·{k} = {num(r.value)} {u}")
 
 
-__all__ = ["KIND_TITLES", "WORDS", "localise", "mm", "num", "result_text", "scale_text", "shown",
-           "unit"]
+__all__ = ["KIND_TITLES", "UNITS_RU", "WORDS", "ZERO_MM", "localise", "mm", "num", "result_text",
+           "scale_text", "shown", "unit"]
