@@ -439,3 +439,21 @@ def test_a_russian_page_speaks_russian(path):
         for label in an.kin.labels:
             words = _page_words(teaching_page(lesson(an, plan, label), "ru")) - allowed
             assert not words, (path.stem, plan, label, sorted(words))
+
+
+def test_embedded_fonts_keep_their_own_date():
+    # fontTools stamps a saved font with the time of saving unless told not to: the pages
+    # would then differ from run to run (the committed ones churned on every regeneration)
+    import io as _io
+
+    from fontTools.ttLib import TTFont
+
+    from graphplan import fonts
+    from graphplan.teaching.webfonts import _subset_woff
+
+    family = fonts.FONT_CHAIN[0]
+    woff = _subset_woff(family, "Планvb0123")
+    assert woff is not None
+    with TTFont(str(fonts.find_font_file(family)), lazy=True) as src:
+        original = src["head"].modified
+    assert TTFont(_io.BytesIO(woff))["head"].modified == original

@@ -60,6 +60,7 @@ def _subset_woff(family: str, chars: str) -> bytes | None:
         sub.subset(font)
         buf = io.BytesIO()
         font.flavor = "woff"
+        font.recalcTimestamp = False  # keep the font's own date: the same page every run
         font.save(buf)
         font.close()
         return buf.getvalue()
