@@ -1,8 +1,13 @@
 """The lettering font of the sheets (GOST 2.304-81 type B, slanted) and its metrics.
 
-The sheets are lettered in **osifont** (Debian/Ubuntu package ``fonts-osifont``), an
-ISO 3098 CAD font close to GOST type B. Its Debian bookworm build
-(0.1.20220224) cannot letter every text of a TMM sheet:
+The sheets are lettered in **osifont**, an ISO 3098 CAD font close to GOST type B,
+which graphplan ships (``graphplan/data/fonts/osifont.ttf``, Debian's fonts-osifont
+0.1.20220224, with its licence: GPL-3 with the font exception, which lets documents
+embed it under any licence). The symbols osifont lacks come from the DejaVu fonts that
+matplotlib ships. So the lettering, its metrics and so every SVG, table and report are
+the same bytes on every machine, with or without installed fonts; fonts installed on the
+system are never used for the sheets (:func:`find_font_file`). The bundled build of
+osifont cannot letter every text of a TMM sheet:
 
 * the glyphs of **Ё ё Э э** are blank: each is one filled quadrilateral (a single
   contour of 4 points) instead of a letter;
@@ -13,34 +18,36 @@ So every text gets its own font-family list. Its first family is the first font 
 :data:`FONT_CHAIN` that really draws every character of the text (checked glyph by
 glyph with fontTools), then the rest of the chain, then the generic ``sans-serif``.
 The first family matters: CairoSVG (and so the PNG previews) uses only the first
-family of the list and does no glyph fallback. On a machine with ``fonts-osifont`` and
-``fonts-dejavu-core`` the required symbols come from::
+family of the list and does no glyph fallback. The required symbols come from::
 
     osifont           А–я (without Ё ё Э э), ω ε φ π μ δ Δ Σ ψ τ ° ± ×
     DejaVu Sans       Ё ё Э э, − ∥ ₁ ₂ ₃ √ ⊥ (and any text that contains them)
     DejaVu Sans Mono  ⟂ (U+27C2 is in neither osifont nor DejaVu Sans; prefer ⊥ U+22A5)
 
-When a font file is not installed the choice falls back on the coverage the
-reference build is known to have (:data:`_ASSUMED`), so the SVG text is the same on
-a machine without the fonts; widths then use :data:`FALLBACK_ADVANCE` per character.
+Should a font file be unreadable (a damaged installation), the choice falls back on the
+coverage the bundled build is known to have (:data:`_ASSUMED`), and widths on
+:data:`FALLBACK_ADVANCE` per character.
+
+Fonts outside the package (for the renderers' fallback on characters no family of the
+chain draws) are found with matplotlib's font manager on every platform, or only in
+the folders of ``$GRAPHPLAN_FONT_PATH`` when it is set: pointed at a folder that does
+not exist, it hides every system font (:func:`font_dirs`).
 
 The size of a text is its capital height ``h`` in mm (GOST 2.304). SVG's ``font-size``
 is the em size, so the renderer writes ``font-size = h / cap_ratio(family)``; for
 osifont ``cap_ratio = sCapHeight / unitsPerEm = 1515 / 2048 = 0.740``.
 
-fontTools (a dependency of matplotlib) is imported only when a font file is read.
+fontTools (a declared dependency) is imported only when a font file is read.
 """
 
 from __future__ import annotations
 
 import os
-import shutil
-import subprocess
-import sys
 import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cache, lru_cache
+from importlib import resources
 from pathlib import Path
 from types import MappingProxyType
 
@@ -64,13 +71,12 @@ FALLBACK_ADVANCE = 0.85
 FALLBACK_NARROW = 0.45
 _NARROW = frozenset(" .,:;!|'`()[]ijlI1і·")
 
-#: File names of the families of FONT_CHAIN, searched in the usual font folders.
-_FILE_NAMES: Mapping[str, tuple[str, ...]] = MappingProxyType(
-    {
-        "osifont": ("osifont.ttf", "osifont-lgpl3fe.ttf", "osifont-gpl2fe.ttf"),
-        "DejaVu Sans": ("DejaVuSans.ttf",),
-        "DejaVu Sans Mono": ("DejaVuSansMono.ttf",),
-    }
+#: Environment variable: the folders searched for fonts other than the bundled ones.
+FONT_PATH_ENV = "GRAPHPLAN_FONT_PATH"
+
+#: The DejaVu files of FONT_CHAIN, as matplotlib ships them.
+_MATPLOTLIB_FILES: Mapping[str, str] = MappingProxyType(
+    {"DejaVu Sans": "DejaVuSans.ttf", "DejaVu Sans Mono": "DejaVuSansMono.ttf"}
 )
 
 #: Measured cap ratios of the reference builds, used when the file is absent.
@@ -134,53 +140,97 @@ class FontInfo:
         return self.cap_height / self.units_per_em
 
 
-def _font_dirs() -> list[Path]:
-    dirs = [Path(p) for p in os.environ.get("GRAPHPLAN_FONT_PATH", "").split(os.pathsep) if p]
-    home = Path.home()
-    dirs += [home / ".local/share/fonts", home / ".fonts", Path("/usr/local/share/fonts"),
-             Path("/usr/share/fonts")]
-    if sys.platform == "darwin":
-        dirs += [home / "Library/Fonts", Path("/Library/Fonts"), Path("/System/Library/Fonts")]
-    if sys.platform == "win32":
-        dirs.append(Path(os.environ.get("WINDIR", r"C:\Windows")) / "Fonts")
-    return [d for d in dirs if d.is_dir()]
+def bundled_font_file(family: str) -> Path | None:
+    """The file of ``family`` that comes with graphplan or matplotlib (None if not one).
+
+    osifont is in ``graphplan/data/fonts`` (with its licence); DejaVu Sans and DejaVu
+    Sans Mono are the files matplotlib ships in ``mpl-data/fonts/ttf`` (DejaVu 2.35:
+    the same advance widths and capital height as Debian's 2.37, a dozen fewer glyphs
+    outside the lettering's alphabet).
+    """
+    if family == "osifont":
+        return Path(str(resources.files("graphplan") / "data" / "fonts" / "osifont.ttf"))
+    name = _MATPLOTLIB_FILES.get(family)
+    if name is None:
+        return None
+    import matplotlib
+
+    return Path(matplotlib.get_data_path()) / "fonts" / "ttf" / name
 
 
-def _fc_list(family: str) -> Path | None:
-    """Ask fontconfig for a regular file of ``family`` (files renamed by a distribution)."""
-    if shutil.which("fc-list") is None:
+def font_dirs() -> tuple[Path, ...] | None:
+    """Folders searched for fonts outside the package, or None for the system's own.
+
+    ``$GRAPHPLAN_FONT_PATH`` (folders separated by ``os.pathsep``) replaces the
+    system's font folders; pointed at a folder that does not exist it hides every
+    system font (the tests and CI do that to prove the output does not depend on
+    them). Unset, matplotlib's font manager looks where the platform keeps fonts
+    (fontconfig, the X11 and macOS folders, the Windows registry and the per-user
+    folder ``%LOCALAPPDATA%\\Microsoft\\Windows\\Fonts``).
+    """
+    spec = os.environ.get(FONT_PATH_ENV)
+    if spec is None:
         return None
-    try:
-        out = subprocess.run(
-            ["fc-list", "--format", "%{file}\t%{style}\n", f":family={family}"],
-            capture_output=True, text=True, timeout=10, check=False,
-        ).stdout
-    except (OSError, subprocess.SubprocessError):
-        return None
-    files = sorted(line.split("\t") for line in out.splitlines() if "\t" in line)
-    for path, style in files:
-        if any(s in style for s in ("Regular", "Book", "Medium", "Normal")):
-            return Path(path)
-    return Path(files[0][0]) if files else None
+    return tuple(Path(p) for p in spec.split(os.pathsep) if p)
+
+
+def system_fonts_hidden() -> bool:
+    """True when ``$GRAPHPLAN_FONT_PATH`` names no existing folder (no system font seen)."""
+    dirs = font_dirs()
+    return dirs is not None and not any(d.is_dir() for d in dirs)
+
+
+def system_font_files() -> tuple[Path, ...]:
+    """Font files outside the package (``$GRAPHPLAN_FONT_PATH``'s or the system's)."""
+    from matplotlib import font_manager
+
+    dirs = font_dirs()
+    if dirs is None:
+        return tuple(sorted(Path(f) for f in font_manager.findSystemFonts()))
+    found = font_manager.findSystemFonts(fontpaths=[str(d) for d in dirs if d.is_dir()])
+    return tuple(sorted(Path(f) for f in found))
+
+
+@cache
+def find_system_font(family: str) -> Path | None:
+    """A regular font file of ``family`` outside the package, or None.
+
+    In ``$GRAPHPLAN_FONT_PATH``'s folders when it is set, else through matplotlib's
+    font manager (every platform's system and per-user font folders).
+    """
+    from matplotlib import font_manager
+
+    if font_dirs() is None:
+        prop = font_manager.FontProperties(family=family, style="normal", weight="normal")
+        try:
+            return Path(font_manager.fontManager.findfont(prop, fallback_to_default=False,
+                                                          rebuild_if_missing=False))
+        except ValueError:
+            return None
+    best = None
+    for path in system_font_files():
+        try:
+            entry = font_manager.ttfFontProperty(font_manager.get_font(str(path)))
+        except Exception:  # not a font matplotlib can read
+            continue
+        if entry.name == family and (best is None or (entry.style, entry.weight) == ("normal", 400)):
+            best = path
+    return best
 
 
 @cache
 def find_font_file(family: str) -> Path | None:
-    """Path of the installed font file of ``family`` (one of FONT_CHAIN), or None.
+    """Path of the font file of ``family``, or None.
 
-    Looks for the known file names in ``$GRAPHPLAN_FONT_PATH`` and the usual font
-    folders, then asks ``fc-list``.
+    The families of :data:`FONT_CHAIN` always come with the package (osifont) or with
+    matplotlib (DejaVu): the sheets are lettered, measured and embedded in the same
+    fonts on every machine, whatever it has installed. Any other family is looked up
+    with :func:`find_system_font`.
     """
-    names = _FILE_NAMES.get(family, ())
-    for name in names:
-        for d in _font_dirs():
-            direct = d / name
-            if direct.is_file():
-                return direct
-            for found in sorted(d.rglob(name)):
-                if found.is_file():
-                    return found
-    return _fc_list(family)
+    path = bundled_font_file(family)
+    if path is not None and path.is_file():
+        return path
+    return find_system_font(family)
 
 
 def glyph_is_blank(glyph_set, glyph_name: str, char: str) -> bool:

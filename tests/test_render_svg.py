@@ -170,8 +170,6 @@ def test_text_lettering_attributes(root):
     assert "scale(" not in svg
 
 
-@pytest.mark.skipif(not (fonts.is_installed("osifont") and fonts.missing_chars("osifont", "Ё")),
-                    reason="needs the osifont build without Ё")
 def test_text_with_yo_is_lettered_in_the_fallback(root):
     el = elements(root)
     assert el["yo"].get("font-family").startswith("'DejaVu Sans', ")

@@ -53,27 +53,27 @@ TEXT = {
 }
 
 
-@lru_cache(maxsize=1)
-def _osifont() -> str | None:
-    """Register osifont with matplotlib once; its family name, or None if not installed."""
-    path = fonts.find_font_file("osifont")
-    if path is None:
-        return None
-    from matplotlib import font_manager
+@lru_cache(maxsize=8)
+def _font_file(family: str):
+    """matplotlib FontProperties of the bundled file of ``family`` (see graphplan.fonts).
 
-    font_manager.fontManager.addfont(str(path))
-    return font_manager.FontProperties(fname=str(path)).get_name()
+    Given by file, not by name: matplotlib's own font lookup (its cache, the system's
+    fonts, ``MPL_IGNORE_SYSTEM_FONTS``) never decides which font letters a figure.
+    """
+    from matplotlib.font_manager import FontProperties
+
+    path = fonts.find_font_file(family)
+    return FontProperties(fname=str(path)) if path is not None else FontProperties(family=family)
 
 
 def _font(text: str, height_mm: float) -> dict:
     """Font keywords lettering ``text`` with capitals ``height_mm`` tall.
 
-    osifont when it is installed and draws every character (its blank Ё ё Э э and
-    missing −, ₁ … are checked by :mod:`graphplan.fonts`), else DejaVu Sans.
+    osifont when it draws every character (its blank Ё ё Э э and missing −, ₁ … are
+    checked by :mod:`graphplan.fonts`), else DejaVu Sans.
     """
-    osi = _osifont()
-    family = "osifont" if osi and not fonts.missing_chars("osifont", text) else "DejaVu Sans"
-    return {"fontfamily": osi if family == "osifont" else family,
+    family = "osifont" if not fonts.missing_chars("osifont", text) else "DejaVu Sans"
+    return {"fontproperties": _font_file(family),
             "fontsize": height_mm / fonts.cap_ratio(family) * MM}
 
 
@@ -261,9 +261,11 @@ def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
                           markersize=1.0 * MM)]
         legend = [t["exact"], t["chords"]]
         lf = _font("".join(legend), SMALL_H)
+        legend_font = lf["fontproperties"].copy()
+        legend_font.set_size(lf["fontsize"])
         fig.legend(handles, legend, loc="upper right", ncols=2, frameon=False,
                    bbox_to_anchor=((x0 + f.box_w) / width_mm, 1 - 0.5 / height_mm),
-                   prop={"family": lf["fontfamily"], "size": lf["fontsize"]},
+                   prop=legend_font,
                    handlelength=2.5, borderaxespad=0.0)
         buf = io.StringIO()
         fig.savefig(buf, format="svg", metadata={"Date": None})
