@@ -25,7 +25,7 @@ from pathlib import Path
 
 from .diagnosis import Diag, Diagnoser, Fig
 from .engine import Occurrence, Tolerances, Work, _close, where_text
-from .expressions import show
+from .expressions import decimals, show
 from .findings import FigureCheck, Finding, LineCheck, Report
 from .quantities import SCALE_OF_DIMENSION, Quantity
 from .reference import Reference
@@ -71,12 +71,18 @@ class Checker:
             self._mag[q.key] = max(vals, default=0.0)
         return self._mag[q.key]
 
-    def band(self, q: Quantity, e: float, scales: dict[str, float]) -> tuple[float, float, float]:
-        """(ok, tolerance, relative tolerance) around the expected value ``e``."""
+    def band(self, q: Quantity, e: float, scales: dict[str, float],
+             written: str = "") -> tuple[float, float, float]:
+        """(ok, tolerance, relative tolerance) around the expected value ``e``.
+
+        A length read off a drawing is allowed the reading precision plus half a unit of
+        the last digit it is written with (``25,0`` read at ±0,5 mm may be 0,55 mm off).
+        """
         t = self.tol
         if q.tolerance == "segment":
-            return (max(t.segment_ok * abs(e), t.reading_mm / 2),
-                    max(t.segment * abs(e), t.reading_mm), t.segment)
+            digit = 0.5 * 10.0 ** (-decimals(written)) if written and t.reading_mm else 0.0
+            return (max(t.segment_ok * abs(e), t.reading_mm / 2 + digit),
+                    max(t.segment * abs(e), t.reading_mm + digit), t.segment)
         if q.tolerance == "exact":
             return (max(t.datum_ok * abs(e), 1e-12), max(t.datum * abs(e), 1e-12), t.datum)
         floor = 0.0
@@ -116,7 +122,7 @@ class Checker:
                 if e is None:
                     continue
                 e = e if q.signed else abs(e)
-                ok, tol, _ = self.band(q, e, sc)
+                ok, tol, _ = self.band(q, e, sc, o.text)
                 v = rank[self.verdict(s, e, ok, tol)]
                 # another scale or the full model only when they make the verdict better
                 score = (v, i, model != "rule") if v < 2 else (v, 0 if i == 0 else 1,
@@ -129,7 +135,7 @@ class Checker:
         note = ""
         if q.on_paper and q.scale and sc.get(q.scale) != base.get(q.scale):
             note = scale_text(q.scale, sc[q.scale], "en")
-        ok, tol, rel = self.band(q, e, sc)
+        ok, tol, rel = self.band(q, e, sc, o.text)
         return Fig(scope, q.key, occs, q, s, e, model, sc, note, ok, tol, rel,
                    self.verdict(s, e, ok, tol))
 
@@ -148,7 +154,7 @@ class Checker:
             if e is None:
                 continue
             e = abs(e)
-            ok, tol, rel = self.band(f.q, e, sc)
+            ok, tol, rel = self.band(f.q, e, sc, o.text)
             g = Fig(f.scope, f.key, f.occs, f.q, f.s, e, f.model, sc,
                     scale_text(f.q.scale, k, "en"), ok, tol, rel, self.verdict(f.s, e, ok, tol))
             if g.verdict != "wrong":
@@ -168,6 +174,14 @@ class Checker:
                 continue
             figs[(scope, key)] = self.evaluate(scope, occs)
         dg = Diagnoser(self, figs)
+        for f in figs.values():
+            if f.verdict == "wrong" and dg.own_chain(f):
+                f.verdict = "inaccurate"
+                f.extra_notes.append(_Say(
+                    "follows by a right formula from the student's own readings, which are "
+                    "within drafting accuracy",
+                    "получено по верной формуле из собственных отсчётов студента, которые в "
+                    "пределах точности построения")(self.lang))
         consistency = self._consistency(figs, dg)  # first: it adds notes to the figures
         findings: list[Finding] = []
         for key, f in list(figs.items()):
@@ -233,7 +247,7 @@ class Checker:
                 a, b = abs(o.value), abs(s0.value)
                 if _close(a, b, max(self.tol.arithmetic, 0.002), 1e-12):
                     continue
-                if o.q.on_paper and _close(a, b, 0, self.tol.reading_mm / 2):
+                if o.q.on_paper and _close(a, b, 0, self.tol.reading_mm):
                     continue
                 key_v = next((v for v in groups if _close(v, o.value, 1e-6)), o.value)
                 groups[key_v].append(o)

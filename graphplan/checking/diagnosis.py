@@ -248,10 +248,11 @@ class Diagnoser:
             out[sym] = o.value if votes > 0 else k0
         return out
 
-    def model_env(self, lw: LineWork, model: str = "rule"
+    def model_env(self, lw: LineWork, model: str = "rule", band: int = 0
                   ) -> tuple[dict[str, float] | None, list[str]]:
         """graphplan's values of the names of a line (in the student's units) and the
-        names whose written values are off."""
+        names whose written values are off (beyond their *ok* band, or with ``band=1``
+        beyond their tolerance: wrong)."""
         if lw.matched is None:
             return None, []
         scales = self.line_scales(lw)
@@ -274,13 +275,32 @@ class Diagnoser:
                                                       not q.signed else 1.0)
             val = o.value if q.signed else abs(o.value)
             right_c = right if q.signed else abs(right)
-            ok, _tol, _ = self.c.band(q, right_c, {**stated, **scales})
-            if abs(val - right_c) > ok:
+            allowed = self.c.band(q, right_c, {**stated, **scales}, o.text)[band]
+            if abs(val - right_c) > allowed:
                 label = o.name if o.position is None or q.scope == "global" or \
                     "@" in o.name else f"{o.name} ({o.position})"
                 if label not in offs:
                     offs.append(label)
         return env, offs
+
+    def own_chain(self, f: Fig) -> bool:
+        """The figure follows, by its own right arithmetic and a right formula, from the
+        student's figures that are all within their tolerances: its error is the drafting
+        error of those readings carried through the formula, not a fault (it is at worst
+        inaccurate)."""
+        o = f.occs[0]
+        lw = o.work
+        if o.role != "result" or lw is None or lw.arithmetic != "ok" or \
+                lw.template is None or lw.matched is None or f.e is None:
+            return False
+        env, offs = self.model_env(lw, band=1)
+        if env is None or offs:
+            return False
+        try:
+            F = self._canonical(lw, o, value(lw.template, env))
+        except ExpressionError:
+            return False
+        return F is not None and self.near(f, F, f.e)
 
     def _formula(self, f: Fig) -> Diag | None:
         o = f.occs[0]

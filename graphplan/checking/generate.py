@@ -58,6 +58,44 @@ def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
     return s.replace(".", ",")
 
 
+class Drafting:
+    """How a student reads lengths off a drawing: exactly (to 0,01 mm), or with the noise
+    of drafting — each length off by up to ``noise_mm`` (uniform) and written with 3 or 4
+    significant figures, results with 4.
+
+    Parameters
+    ----------
+    noise_mm : float
+        The largest reading error (mm); 0 reads exactly.
+    rng : random.Random, optional
+        The source of the noise (default: seeded with 0).
+    """
+
+    def __init__(self, noise_mm: float = 0.0, rng: random.Random | None = None):
+        self.noise_mm = noise_mm
+        self.rng = rng or random.Random(0)
+
+    @property
+    def digits(self) -> int:
+        """Significant figures of a computed result."""
+        return 4 if self.noise_mm else 5
+
+    def __call__(self, mm: float) -> str:
+        """A length measured on a drawing (mm), as written."""
+        if not self.noise_mm:
+            return _fmt(mm, decimals=2)
+        x = abs(mm + self.rng.uniform(-self.noise_mm, self.noise_mm)) if mm > \
+            self.noise_mm else mm
+        if x == 0:
+            return "0"
+        digits = self.rng.choice((3, 4))
+        mag = math.floor(math.log10(abs(x)))
+        return _fmt(x, decimals=min(2, max(0, digits - 1 - mag)))
+
+
+EXACT = Drafting()
+
+
 @dataclass(frozen=True, slots=True)
 class Operand:
     """A name of a formula and the number written for it."""
@@ -152,7 +190,8 @@ def _name(quantity: str) -> str:
 
 
 def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
-             variant_ref: str | None = None, student: str = "graphplan") -> Generated:
+             variant_ref: str | None = None, student: str = "graphplan",
+             drafting: Drafting = EXACT) -> Generated:
     """The calculation of a variant as a careful student writes it (module docstring).
 
     Parameters
@@ -164,7 +203,11 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
         can be drawn).
     variant_ref : str, optional
         How the student file names the variant (default: its absolute path).
+    drafting : Drafting, optional
+        How lengths are read off the drawings (default: exactly, to 0,01 mm).
     """
+    measure = drafting
+    dg = drafting.digits
     from ..force_plans import force_plans
     from ..scales import sheet_scales
 
@@ -229,13 +272,13 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
             name = _name(quantity)
             if seg in (f"p{A.lower()}", f"π{A.lower()}"):
                 continue
-            mm = _fmt(ref.reading_mm(seg, k, kl, kv, ka) or 0.0, decimals=2)
+            mm = measure(ref.reading_mm(seg, k, kl, kv, ka) or 0.0)
             scale_txt = _fmt(kv if scale_name == "Kv" else ka, 6)
             gl = GenLine(name, f"{{{seg}}}∙{{{scale_name}}}",
-                         (Operand(seg, mm), Operand(scale_name, scale_txt)), unit, 5,
+                         (Operand(seg, mm), Operand(scale_name, scale_txt)), unit, dg,
                          tags=("reading", scale_name))
             lines.append(gl)
-            vals[name] = float(_fmt(gl.result, 5).replace(",", "."))
+            vals[name] = float(_fmt(gl.result, dg).replace(",", "."))
         for ln, props in mech.links.items():
             if props.mass <= 0 or props.centre is None:
                 continue
@@ -244,7 +287,7 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                 continue
             lines.append(GenLine(f"Pи{ln}", f"{{m{ln}}}∙{{{a_name}}}",
                                  (Operand(f"m{ln}", _fmt(props.mass, 6)),
-                                  Operand(a_name, _fmt(vals[a_name], 5))), "Н", 5,
+                                  Operand(a_name, _fmt(vals[a_name], dg))), "Н", dg,
                                  tags=("load",)))
         for ln, props in mech.links.items():
             eps = ref.value(("eps", ln), k)
@@ -278,12 +321,12 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                                  "Н/мм", 4, tags=("scale",), result_text=kp_t))
         for fp in plans:
             if fp.group.startswith("crank"):
-                gl = _crank_line(fp, written, arms, kl, cr)
+                gl = _crank_line(fp, written, arms, kl, cr, measure)
                 if gl is not None:
                     lines.extend(gl)
                 continue
             for eq in fp.equations:
-                gl = _tangential(eq, fp, written, arms, kl)
+                gl = _tangential(eq, fp, written, arms, kl, measure)
                 if gl is not None:
                     lines.append(gl)
             for q, r in fp.readings.items():
@@ -291,11 +334,11 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                         written:
                     continue
                 gl = GenLine(q, f"{{{q}_mm}}∙{{Кр}}", (Operand(f"{q}_mm",
-                                                              _fmt(r.value / kp, decimals=2)),
-                                                      Operand("Кр", kp_t)), "Н", 6,
+                                                              measure(r.value / kp)),
+                                                      Operand("Кр", kp_t)), "Н", dg + 1,
                              tags=("reaction",))
                 lines.append(gl)
-                written[q] = float(_fmt(gl.result, 6).replace(",", "."))
+                written[q] = float(_fmt(gl.result, dg + 1).replace(",", "."))
         out_positions.append(GenPosition(label, tuple(lines), tuple(arms)))
     return Generated(variant_ref or str(Path(variant).resolve()), tuple(general),
                      tuple(out_positions), student)
@@ -324,7 +367,8 @@ def _size(force: str, fp, written: dict[str, float]) -> float | None:
     return None
 
 
-def _terms(rest: str, about: str, fp, written, arms, skip: str = ""):
+def _terms(rest: str, about: str, fp, written, arms, measure: Drafting = EXACT,
+           skip: str = ""):
     """The known moments of an equation as formula terms and operands (signs moved to the
     other side), or None when a term cannot be written."""
     terms, ops = [], []
@@ -347,19 +391,19 @@ def _terms(rest: str, about: str, fp, written, arms, skip: str = ""):
         if (aname, force, about) not in arms:
             arms.append((aname, force, about))
         terms.append(f"{s}{{{force}}}∙{{{aname}}}")
-        ops += [Operand(force, _fmt(size, 6)), Operand(aname, _fmt(h, decimals=2))]
+        ops += [Operand(force, _fmt(size, 6)), Operand(aname, measure(h))]
     return terms, ops
 
 
-def _tangential(eq: str, fp, written: dict[str, float], arms: list, kl: float
-                ) -> GenLine | None:
+def _tangential(eq: str, fp, written: dict[str, float], arms: list, kl: float,
+                measure: Drafting = EXACT) -> GenLine | None:
     """``ΣM_B(link 2): Rτ12·AB − G2·h_G2 = 0`` as ``Rτ12 = (G2∙hG2B)/AB = …``."""
     m = re.match(r"ΣM_(\w+)\(link [^)]*\): (Rτ\d\d)·(\w+)(.*) = 0$", eq)
     if m is None:
         return None
     about, unknown, arm_name, rest = m.groups()
     h_unknown = fp.arms_mm.get(f"h_{unknown}@{about}")
-    got = _terms(rest, about, fp, written, arms)
+    got = _terms(rest, about, fp, written, arms, measure)
     if not h_unknown or got is None or not got[0]:
         return None
     terms, ops = got
@@ -371,8 +415,10 @@ def _tangential(eq: str, fp, written: dict[str, float], arms: list, kl: float
         arm_name = f"h{unknown}{about}"
         arms.append((arm_name, unknown, about))
     return GenLine(unknown, f"({body})/{{{arm_name}}}",
-                   (*_order(ops, body), Operand(arm_name, _fmt(h_unknown, decimals=2))), "Н",
-                   5, tags=("tangential",))
+                   (*_order(ops, body), Operand(arm_name, measure(h_unknown) if
+                                                arm_name.startswith("h") else
+                                                _fmt(h_unknown, decimals=2))), "Н",
+                   measure.digits, tags=("tangential",))
 
 
 def _order(ops: list[Operand], body: str) -> list[Operand]:
@@ -387,7 +433,8 @@ def _order(ops: list[Operand], body: str) -> list[Operand]:
     return out
 
 
-def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr):
+def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr,
+                measure: Drafting = EXACT):
     """``ΣM_O(link 1): Mур/Kl − R21·h_R21 + G1·h_G1 = 0`` as h21 and
     ``Мур = (R21∙h21 − G1∙hG1O)∙Кl = …``."""
     eq = fp.equations[0]
@@ -410,14 +457,15 @@ def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr):
         h = fp.arms_mm.get(f"h_{force}@{about}")
         if h is None:
             return None
+        h_txt = measure(h)
         if force in react:
             aname = f"h{force[1:]}"
-            lines.append(GenLine(aname, "", (), "мм", result_text=_fmt(h, decimals=2)))
+            lines.append(GenLine(aname, "", (), "мм", result_text=h_txt))
         else:
             aname = f"h{force}{about}"
             arms.append((aname, force, about))
         terms.append(f"{s}{{{force}}}∙{{{aname}}}")
-        ops += [Operand(force, _fmt(size, 6)), Operand(aname, _fmt(h, decimals=2))]
+        ops += [Operand(force, _fmt(size, 6)), Operand(aname, h_txt)]
     if not terms:
         return None
     if len(terms) == 1:
@@ -427,7 +475,7 @@ def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr):
         body = "".join(terms)
         formula = "(" + (body[1:] if body.startswith("+") else body) + ")∙{Кl}"
     ops.append(Operand("Кl", _fmt(kl, 6)))
-    lines.append(GenLine("Мур", formula, tuple(_order(ops, formula)), "Нм", 5,
+    lines.append(GenLine("Мур", formula, tuple(_order(ops, formula)), "Нм", measure.digits,
                          tags=("M_bal",)))
     return lines
 
