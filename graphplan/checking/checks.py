@@ -130,7 +130,8 @@ class Checker:
                 if best is None or score < best[0]:
                     best = (score, e, model, sc)
         if best is None:
-            return Fig(scope, q.key, occs, q, s, None, "rule", base, "", 0, 0, 0, "ok")
+            return Fig(scope, q.key, occs, q, s, None, "rule", base, "", 0, 0, 0,
+                       "not compared")
         _, e, model, sc = best
         note = ""
         if q.on_paper and q.scale and sc.get(q.scale) != base.get(q.scale):
@@ -196,7 +197,9 @@ class Checker:
         findings += consistency
         findings += self._scales(figs)
         findings += self._lines(figs)
+        findings += self._unreadable()
         findings = _merge_same_line(findings)
+        self._reconcile(figs, findings)
         order = {p.label: i for i, p in enumerate(self.student.positions)}
         findings.sort(key=lambda x: (x.file_line or 10**9, order.get(x.position or "", -1)))
         return Report(
@@ -206,6 +209,36 @@ class Checker:
             figures=tuple(self._figure_rows(figs)), lines=tuple(self._line_rows()),
             positions=tuple(self._positions()), group=self.student.group,
             notes=tuple(self._notes()))
+
+    def _reconcile(self, figs: dict[tuple, Fig], findings: list[Finding]) -> None:
+        """A figure is never shown right under a finding of its own line that calls its
+        written value wrong (an Mур with a wrong sum is not "ok" because its value is)."""
+        wrong = {(f.file_line, f.quantity) for f in findings if f.verdict == "wrong"}
+        for f in figs.values():
+            o = f.occs[0]
+            if f.verdict in ("ok", "inaccurate") and (o.line.file_line, o.name) in wrong:
+                f.verdict = "wrong"
+
+    def _unreadable(self) -> list[Finding]:
+        """A line (or a member of one) that cannot be read is a finding, never a silence."""
+        out = []
+        for lw in self.w.lines:
+            bad = next((m for m in lw.members if m.kind == "bad" or (
+                m.kind == "text" and any(c.isdigit() or c in "()[]+-*/=^" for c in m.text))),
+                None)
+            if bad is None:
+                continue
+            why = bad.error or lw.note
+            en = f"the line cannot be read ({bad.text!r}: {why}); nothing of it is checked."
+            ru = (f"строку не удалось прочитать ({bad.text!r}: {why}); ничего из неё не "
+                  "проверено.")
+            lw.arithmetic = "unread"
+            out.append(Finding(where_text(lw.position, lw.line, self.lang),
+                               lw.result_name or bad.text, None, None, "", "unreadable",
+                               "wrong", ru if self.lang == "ru" else en, lw.position,
+                               lw.line.text, lw.line.file_line, explanation_en=en,
+                               explanation_ru=ru))
+        return out
 
     def _positions(self):
         import numpy as np
@@ -406,19 +439,41 @@ class Checker:
     # --- rows of the report -----------------------------------------------------------
 
     def _figure_rows(self, figs: dict[tuple, Fig]):
+        self._compared = set()
         for f in figs.values():
             o = f.occs[0]
             d = f.diag
+            why = (d.ru if self.lang == "ru" else d.en) if d else ""
+            if f.verdict == "not compared":
+                why = _NOT_COMPARED["figure"](self.lang)
+            else:
+                self._compared.update(id(x.work) for x in f.occs)
             yield FigureCheck(o.position, o.name, f.q.unit, f.s, f.e, f.verdict,
                               where_text(o.position, o.line, self.lang), o.line.text,
-                              d.kind if d else "", (d.ru if self.lang == "ru" else d.en)
-                              if d else "", f.scale_note, len(f.occs))
+                              d.kind if d else "", why, f.scale_note, len(f.occs))
         for (_scope, key), occs in self.w.figures.items():
             if key[0] == "scale":
                 o = occs[0]
-                yield FigureCheck(o.position, o.name, o.q.unit, o.value, None, "ok",
-                                  where_text(o.position, o.line, self.lang), o.line.text,
+                yield FigureCheck(o.position, o.name, o.q.unit, o.value, None,
+                                  "not compared", where_text(o.position, o.line, self.lang),
+                                  o.line.text, explanation=_NOT_COMPARED["scale"](self.lang),
                                   uses=len(occs))
+
+    def _not_compared(self, lw) -> str:
+        """Why nothing of a line was compared with graphplan ("" if something was)."""
+        if id(lw) in self._compared:
+            return ""
+        if lw.arithmetic == "unread":
+            return _NOT_COMPARED["unread"](self.lang)
+        if lw.occs and all(o.q.kind == "scale" for o in lw.occs):
+            return _NOT_COMPARED["scale"](self.lang)
+        if lw.result_name and lw.result_q is None:
+            return _NOT_COMPARED["name"](self.lang).format(name=lw.result_name)
+        if lw.result is None and any(m.kind == "formula" for m in lw.members):
+            return ""  # a formula alone: it is compared through the numbers of the next line
+        if not lw.occs:
+            return _NOT_COMPARED["nothing"](self.lang)
+        return _NOT_COMPARED["figure"](self.lang)
 
     def _line_rows(self):
         for lw in self.w.lines:
@@ -427,12 +482,27 @@ class Checker:
                             lw.line.text,
                             lw.result_name or None, lw.evaluated,
                             None if lw.result is None else lw.result.value, lw.arithmetic,
-                            names, lw.note or lw.line.note)
+                            names, lw.note or lw.line.note, self._not_compared(lw))
 
     def _notes(self):
         for lw in self.w.lines:
             if lw.note and lw.arithmetic != "unread":
                 yield f"{where_text(lw.position, lw.line, self.lang)}: {lw.note}"
+
+
+_NOT_COMPARED = {
+    "figure": _Say("graphplan has no value of this figure here to compare it with",
+                   "в расчёте graphplan нет этой величины для сравнения"),
+    "scale": _Say("a scale is the student's choice: only its arithmetic and its use are "
+                  "checked", "масштаб выбирает студент: проверены только его арифметика и "
+                  "применение"),
+    "name": _Say("the name {name!r} is not known for this variant (see docs/check-format.md, "
+                 "Names)", "обозначение {name!r} неизвестно для этого варианта (см. "
+                 "docs/check-format.md, «Names»)"),
+    "nothing": _Say("the line names no figure (give `quantity` or `symbols`)",
+                    "строка не называет величину (укажите `quantity` или `symbols`)"),
+    "unread": _Say("the line cannot be read", "строку не удалось прочитать"),
+}
 
 
 def _merge_same_line(findings: list[Finding]) -> list[Finding]:

@@ -382,16 +382,19 @@ class Work:
                                   "are not named")
             return
         names = {n for n, _ in m.bindings}
+        powers = _product_powers(lw.template)
         for name, node in m.bindings:
             q = lw.vocab.lookup(name)
             if q is None:
                 continue
-            q = self._in_product(lw, q, name, names)
+            q = self._in_product(lw, q, name, names, powers)
             composite = not _is_number(node)
             self._occurrence(lw, q, name, "operand", value(node), None, show(node), composite)
 
-    def _in_product(self, lw: LineWork, q: Quantity, name: str, names: set[str]) -> Quantity:
-        """A force named together with Kp stands for its segment (``R21∙Кр∙h21∙Кl``)."""
+    def _in_product(self, lw: LineWork, q: Quantity, name: str, names: set[str],
+                    powers: list[dict[str, int]] | None = None) -> Quantity:
+        """A force multiplied by Kp stands for its segment (``R21∙Кр∙h21∙Кl``); divided
+        by it, it is the force itself (``n_BA = anBA/Ka``: anBA is an acceleration)."""
         if q.on_paper or q.kind == "scale":
             return q
         scale = {"N": "Kp", "m/s": "Kv", "m/s²": "Ka"}.get(q.dimension)
@@ -400,6 +403,9 @@ class Work:
         for other in names:
             oq = lw.vocab.lookup(other)
             if oq is not None and oq.kind == "scale" and oq.name == scale:
+                if powers is not None and not any(
+                        t.get(name, 0) * t.get(other, 0) > 0 for t in powers):
+                    continue
                 seg = lw.vocab.segment_of(q)
                 return seg if seg is not None else q
         return q
@@ -479,6 +485,51 @@ class Work:
                 return v0
             return None
         return self.ref.expected(q, where, scales, model)
+
+
+def _product_powers(node: Node) -> list[dict[str, int]]:
+    """For each term of a sum, the names of its product and their powers' signs
+    (``R21∙Kp∙h21`` → ``{R21: 1, Kp: 1, h21: 1}``; ``anBA/Ka`` → ``{anBA: 1, Ka: -1}``);
+    a name inside a bracket of a sum gets the bracket's place."""
+    from .expressions import Bin, Call, Neg
+
+    def prod(n: Node, sign: int, out: dict[str, int]) -> None:
+        if isinstance(n, Sym):
+            out[n.name] = out.get(n.name, 0) + sign
+        elif isinstance(n, Neg):
+            prod(n.x, sign, out)
+        elif isinstance(n, Bin) and n.op == "*":
+            prod(n.a, sign, out)
+            prod(n.b, sign, out)
+        elif isinstance(n, Bin) and n.op == "/":
+            prod(n.a, sign, out)
+            prod(n.b, -sign, out)
+        elif isinstance(n, Bin) and n.op == "^":
+            prod(n.a, sign, out)
+        elif isinstance(n, Bin):  # a sum inside a product
+            for t in (n.a, n.b):
+                prod(t, sign, out)
+        elif isinstance(n, Call):
+            prod(n.arg, sign, out)
+
+    terms: list[Node] = []
+
+    def split(n: Node) -> None:
+        if isinstance(n, Bin) and n.op in "+-":
+            split(n.a)
+            split(n.b)
+        elif isinstance(n, Neg):
+            split(n.x)
+        else:
+            terms.append(n)
+
+    split(node)
+    out = []
+    for t in terms:
+        d: dict[str, int] = {}
+        prod(t, 1, d)
+        out.append(d)
+    return out
 
 
 def _sym_names(node: Node) -> list[str]:

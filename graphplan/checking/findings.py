@@ -9,7 +9,12 @@ Verdicts (stated once):
     off by more than that but within the method's tolerance (by default 2 % for a
     segment measured on a plan, 5 % for a value derived from measurements);
 ``wrong``
-    off by more than the tolerance, or a calculation that does not give its result.
+    off by more than the tolerance, or a calculation that does not give its result;
+``not compared``
+    written, but there is nothing of graphplan's to compare it with (a scale, the
+    student's own choice, is checked only for its arithmetic and its use; a name the
+    variant does not know; a figure graphplan does not compute): ``explanation`` says
+    why. Never counted as right.
 
 Kinds of findings: ``arithmetic`` (the written numbers do not give the written result),
 ``consistency`` (one quantity with different values in different places), ``unit``
@@ -19,7 +24,9 @@ of another position or of a neighbouring variant), ``lever-arm`` (the arm of ano
 force or about another point), ``geometry`` (an arm the mechanism cannot have),
 ``formula`` (the formula itself is wrong), ``label`` (a right number under a wrong name),
 ``propagated`` (right working from a wrong figure before it), ``model`` (differs from
-graphplan with no simpler explanation).
+graphplan with no simpler explanation), ``coriolis`` (the Coriolis acceleration without
+its factor 2, or left out of the vector equation), ``unreadable`` (a line that cannot be
+read: a finding, never a silence).
 
 Values are in the figure's unit: SI (N, N·m, m/s …) or mm for lengths on paper.
 """
@@ -29,9 +36,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-VERDICTS = ("ok", "inaccurate", "wrong")
+VERDICTS = ("ok", "inaccurate", "wrong", "not compared")
 KINDS = ("arithmetic", "consistency", "unit", "scale", "sign", "other-variant", "lever-arm",
-         "geometry", "formula", "label", "propagated", "model")
+         "geometry", "formula", "label", "propagated", "model", "coriolis", "unreadable")
 
 
 @dataclass(frozen=True, slots=True)
@@ -160,12 +167,14 @@ class LineCheck:
     arithmetic: str  # "ok" | "wrong" | "" (nothing to re-evaluate) | "unread"
     names: tuple[tuple[str, str], ...] = ()
     note: str = ""
+    compared: str = ""  # "" when a figure of the line was compared, else why not
 
     def to_json(self) -> dict:
         return {"where": self.where, "position": self.position, "text": self.text,
                 "quantity": self.quantity, "evaluated": _num(self.evaluated),
                 "stated": _num(self.stated), "arithmetic": self.arithmetic,
-                "names": dict(self.names), "note": self.note}
+                "names": dict(self.names), "note": self.note,
+                "compared": not self.compared, "not_compared_why": self.compared}
 
 
 @dataclass(frozen=True, slots=True)
@@ -208,9 +217,13 @@ class Report:
         out = {v: 0 for v in VERDICTS}
         for f in self.figures:
             out[f.verdict] += 1
+        out["not_compared"] = out.pop("not compared")
         out["findings"] = len(self.findings)
         out["primary"] = sum(1 for f in self.wrong if f.primary)
         out["lines"] = len(self.lines)
+        out["lines_wrong"] = sum(1 for ln in self.lines if ln.arithmetic in ("wrong", "sign"))
+        out["lines_unread"] = sum(1 for ln in self.lines if ln.arithmetic == "unread")
+        out["lines_not_compared"] = sum(1 for ln in self.lines if ln.compared)
         return out
 
     def to_json(self) -> dict:

@@ -249,7 +249,13 @@ class Vocabulary:
         for seg, what in readings.items():
             base = self.lookup(_reading_name(what))
             scale = "Kv" if what.startswith("v") else "Ka"
-            key = base.key if base is not None else ("unknown", what)
+            if base is None:
+                # a value only the plan names (Coriolis aᵏ_A3, relative aʳ_AA3, v_A3 of a
+                # point of a slider pair): compared with the plan's own reading
+                dim = "m/s" if scale == "Kv" else "m/s²"
+                base = _q(_reading_name(what), ("reading", seg, what), "kinematic", dim, dim)
+                add(base, *_reading_aliases(what))
+            key = base.key
             add(Quantity(seg, ("segment", *key), "segment", "mm", "m", 0.001, "position",
                          False, "segment", scale))
         for arm in (arms or {}).values():
@@ -301,6 +307,19 @@ class Vocabulary:
                 if best[j] is None or len(cand) < len(best[j]):
                     best[j] = cand
         return best[n]
+
+
+def _reading_aliases(what: str) -> tuple[str, ...]:
+    """Other spellings of a plan's value: ``aᵏ_A3`` is also ``akA3``, ``aкA3``, ``aкорA3``;
+    ``aʳ_AA3`` is ``arAA3``, ``aотнAA3``."""
+    m = re.fullmatch(r"([va])([ᵏʳⁿτ])?_(\w+)", what)
+    if m is None:
+        return ()
+    v, sup, pts = m.groups()
+    sups = {"ᵏ": ("k", "к", "кор", "K", "_k", "_к", "^k"), "ʳ": ("r", "отн", "_r", "^r"),
+            "ⁿ": ("n", "_n"), "τ": ("t", "_t", "τ")}.get(sup or "", ("",))
+    out = [f"{v}{s}{pts}" for s in sups] + [f"{v}{s}_{pts}" for s in sups]
+    return tuple(dict.fromkeys(out))
 
 
 def _reading_name(what: str) -> str:

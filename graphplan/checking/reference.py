@@ -206,6 +206,10 @@ class Reference:
             if what == "a_n":
                 return float(kin.vel.omega[link][k]) ** 2 * length
             return abs(float(kin.acc.epsilon[link][k])) * length
+        if what == "reading":  # a value of a plan (aᵏ_A3 …) at the reference positions
+            if kin is not self.kin:
+                return None
+            return self.plan_value(key[1], k)
         if what == "omega":
             return abs(float(kin.vel.omega[key[1]][k]))
         if what == "eps":
@@ -336,6 +340,14 @@ class Reference:
         if name in ap.readings:
             return None if ka is None else ap.readings[name].exact_mm
         return None
+
+    def plan_value(self, name: str, k: int) -> float | None:
+        """The physical value (SI) of a segment of the velocity or acceleration plan of
+        position k (``"k_A3"``: the Coriolis acceleration)."""
+        self.reading_mm(name, k, 1e-3, 0.01, 0.05)
+        vp, ap = self._plans[(k, 1e-3, 0.01, 0.05)]
+        r = vp.readings.get(name) or ap.readings.get(name)
+        return None if r is None else abs(float(r.value))
 
     def expected(self, q: Quantity, where: str | int, scales: dict[str, float],
                  model: str = "rule") -> float | None:

@@ -131,7 +131,8 @@ def html_report(report: Report, overlays: list[str] | None = None,
     out.append(f"<h2>{_e(w['summary'])}</h2><div class='banner {'ok' if ok else 'wrong'}'>"
                f"{_e(banner)}</div>")
     out.append("<p>" + " · ".join(f"<span class='{v}'>{_e(VERDICT_WORDS[lang][v])}: {c[v]}"
-                                  "</span>" for v in ("ok", "inaccurate", "wrong")) + "</p>")
+                                  "</span>" for v in ("ok", "inaccurate", "wrong")) +
+               f" · {_e(VERDICT_WORDS[lang]['not compared'])}: {c['not_compared']}</p>")
     if report.findings:
         out.append(f"<h2>{_e(w['findings'])}</h2><table class='findings'><tr>" + "".join(
             f"<th>{_e(w[k])}</th>" for k in ("where", "quantity", "stated", "expected",
@@ -159,6 +160,9 @@ def html_report(report: Report, overlays: list[str] | None = None,
         ar = w.get(f"a_{ln.arithmetic}", "") if ln.arithmetic else ""
         cls = {"ok": "ok", "wrong": "wrong", "sign": "wrong"}.get(ln.arithmetic, "")
         note = f"<br><span class='notes'>{_e(ln.note)}</span>" if ln.note else ""
+        if ln.compared:
+            note += (f"<br><span class='notes'>{_e(VERDICT_WORDS[lang]['not compared'])}: "
+                     f"{_e(ln.compared)}</span>")
         re_ = num(ln.evaluated, lang, 6) if ln.evaluated is not None else ""
         out.append(f"<tr><td>{_e(ln.where)}</td><td class='code'>{_e(ln.text)}{note}</td>"
                    f"<td class='n'>{_e(re_)}"

@@ -7,16 +7,22 @@ from .words import KIND_WORDS, VERDICT_WORDS, pct, qty
 
 WORDS = {
     "en": {"check": "check", "student": "student", "variant": "variant",
-           "figures": "{n} figures: {ok} ok, {inaccurate} inaccurate, {wrong} wrong",
-           "lines": "{n} written lines re-evaluated",
+           "figures": "{n} figures: {ok} ok, {inaccurate} inaccurate, {wrong} wrong, "
+           "{not_compared} not compared",
+           "lines": "{n} written lines re-evaluated: {lines_wrong} with wrong arithmetic, "
+           "{lines_unread} unreadable, {lines_not_compared} with nothing compared",
+           "uncompared": "not compared", 
            "faults": "{n} findings, {p} of them faults of their own (the rest follow from them)",
            "clean": "nothing is wrong", "general": "whole mechanism",
            "position": "position", "follows": "follows from", "stated": "stated",
            "expected": "graphplan", "tol": "tolerances: segments {seg} % (ok {sok} %), derived "
            "{der} % (ok {dok} %), reading {rd} mm"},
     "ru": {"check": "проверка", "student": "студент", "variant": "вариант",
-           "figures": "величин: {n}; верно {ok}, неточно {inaccurate}, неверно {wrong}",
-           "lines": "пересчитано строк: {n}",
+           "figures": "величин: {n}; верно {ok}, неточно {inaccurate}, неверно {wrong}, "
+           "не сравнено {not_compared}",
+           "lines": "пересчитано строк: {n}; с арифметической ошибкой {lines_wrong}, "
+           "не прочитано {lines_unread}, без сравнения {lines_not_compared}",
+           "uncompared": "не сравнено",
            "faults": "замечаний: {n}, из них самостоятельных ошибок: {p} (остальные — их "
            "следствия)",
            "clean": "ошибок нет", "general": "механизм в целом",
@@ -60,11 +66,13 @@ def text_report(report: Report, lang: str | None = None) -> str:
                           der=f"{t['derived'] * 100:g}", dok=f"{t['derived_ok'] * 100:g}",
                           rd=f"{t['reading_mm']:g}")
     out.append("  " + (tol.replace(".", ",") if lang == "ru" else tol))
-    out.append("  " + w["figures"].format(n=sum(c[v] for v in ("ok", "inaccurate", "wrong")),
-                                          **c))
-    out.append("  " + w["lines"].format(n=c["lines"]))
+    out.append("  " + w["figures"].format(n=len(report.figures), **c))
+    out.append("  " + w["lines"].format(n=c["lines"], **{k: v for k, v in c.items()
+                                                          if k != "lines"}))
+    uncompared = [ln for ln in report.lines if ln.compared]
     if not report.findings:
         out += ["", f"  {w['clean']}."]
+        out += _uncompared(uncompared, lang)
         return "\n".join(out) + "\n"
     out.append("  " + w["faults"].format(n=c["findings"], p=c["primary"]))
     groups: dict[str | None, list[Finding]] = {}
@@ -79,7 +87,17 @@ def text_report(report: Report, lang: str | None = None) -> str:
         out += ["", f"{title}:"]
         for f in groups[pos]:
             out += _line(f, lang)
+    out += _uncompared(uncompared, lang)
     return "\n".join(out) + "\n"
+
+
+def _uncompared(lines, lang: str) -> list[str]:
+    """The lines nothing of which was compared, and why (never shown as right)."""
+    if not lines:
+        return []
+    out = ["", f"{WORDS[lang]['uncompared']}:"]
+    out += [f"  · {ln.where}  {ln.text}  — {ln.compared}" for ln in lines]
+    return out
 
 
 __all__ = ["text_report"]

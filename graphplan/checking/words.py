@@ -49,18 +49,22 @@ def scale_text(symbol: str, per_mm: float, lang: str = "en") -> str:
     return f"{symbol} = {qty(per_mm, unit, lang, 6)}"
 
 
-VERDICT_WORDS = {"en": {"ok": "ok", "inaccurate": "inaccurate", "wrong": "wrong"},
-                 "ru": {"ok": "верно", "inaccurate": "неточно", "wrong": "неверно"}}
+VERDICT_WORDS = {"en": {"ok": "ok", "inaccurate": "inaccurate", "wrong": "wrong",
+                        "not compared": "not compared"},
+                 "ru": {"ok": "верно", "inaccurate": "неточно", "wrong": "неверно",
+                        "not compared": "не сравнено"}}
 
 KIND_WORDS = {
     "en": {"arithmetic": "arithmetic", "consistency": "consistency", "unit": "unit",
            "scale": "scale", "sign": "sign", "other-variant": "other variant/position",
            "lever-arm": "lever arm", "geometry": "geometry", "formula": "formula",
-           "label": "label", "propagated": "propagated", "model": "model"},
+           "label": "label", "propagated": "propagated", "model": "model",
+           "coriolis": "Coriolis", "unreadable": "unreadable"},
     "ru": {"arithmetic": "арифметика", "consistency": "согласованность", "unit": "единицы",
            "scale": "масштаб", "sign": "знак", "other-variant": "чужой вариант/положение",
            "lever-arm": "плечо", "geometry": "геометрия", "formula": "формула",
-           "label": "обозначение", "propagated": "следствие", "model": "расчёт"},
+           "label": "обозначение", "propagated": "следствие", "model": "расчёт",
+           "coriolis": "Кориолис", "unreadable": "не прочитано"},
 }
 
 
