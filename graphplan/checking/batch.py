@@ -56,14 +56,15 @@ class Row:
 
 def is_student_file(path: Path) -> bool:
     """A TOML file with a ``[work]`` table (a file that is not TOML counts: it is
-    reported as broken)."""
+    reported as broken; a TOML without ``[work]`` — a variant, a class file, any other
+    settings — is not a student's and is skipped with a note)."""
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError, ValueError):
         return True
     except OSError:
         return True
-    return "work" in data or not ("crank" in data or "variant" in data)
+    return "work" in data
 
 
 def check_one(path: str, out_dir: str | None = None, tolerances: dict | None = None,
@@ -150,6 +151,11 @@ def student_files(folder: str | Path) -> list[Path]:
     return [p for p in sorted(Path(folder).glob("*.toml")) if is_student_file(p)]
 
 
+def skipped_files(folder: str | Path) -> list[Path]:
+    """The ``*.toml`` of a folder that are TOML but not student files (no ``[work]``)."""
+    return [p for p in sorted(Path(folder).glob("*.toml")) if not is_student_file(p)]
+
+
 def check_folder(folder: str | Path, out_dir: str | Path | None = None, *,
                  jobs: int | None = None, tolerances: dict | None = None,
                  lang: str | None = None, overlay: bool = True) -> Batch:
@@ -185,4 +191,4 @@ def check_folder(folder: str | Path, out_dir: str | Path | None = None, *,
 
 
 __all__ = ["COLUMNS", "Batch", "Row", "check_folder", "check_one", "is_student_file",
-           "student_files"]
+           "skipped_files", "student_files"]

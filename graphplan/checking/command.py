@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -76,7 +77,11 @@ def run(args) -> int:
     if args.answer_key:
         from .generate import generate
 
-        text = generate(args.answer_key).toml()
+        ref = Path(args.answer_key)
+        if args.output:  # the variant as seen from the written file (a movable pair)
+            base = Path(args.output).resolve().parent
+            ref = Path(os.path.relpath(ref.resolve(), base))
+        text = generate(args.answer_key, variant_ref=ref.as_posix()).toml()
         if args.output:
             write_atomic(args.output, text, protect=(Path(args.answer_key),))
         else:
@@ -139,6 +144,10 @@ def _file(path: Path, args, tol: dict, multiple: bool) -> int:
 def _folder(folder: Path, args, tol: dict) -> int:
     from .batch import check_folder
 
+    from .batch import skipped_files
+
+    for p in skipped_files(folder):
+        print(f"{p.name}: not a student file (no [work] table), skipped", file=sys.stderr)
     batch = check_folder(folder, args.output, jobs=args.jobs, tolerances=tol, lang=args.lang)
     width = max(len(Path(r.file).name) for r in batch.rows)
     for r in batch.rows:
