@@ -18,12 +18,14 @@ from .structure import Structure, analyse
 
 @dataclass(frozen=True, slots=True)
 class Analysis:
-    """Structure, cycle and kinematics of a variant's positions."""
+    """Structure, cycle and kinematics of a variant's positions, and the warnings where the
+    machine is probably not the one meant (:mod:`graphplan.plausibility`)."""
 
     mech: Mechanism
     structure: Structure
     cycle: Cycle
     kin: Kinematics
+    warnings: tuple[str, ...] = ()
 
     def _repr_html_(self) -> str:
         """Jupyter: the tables of ``graphplan analyze`` (structure, cycle, kinematics)."""
@@ -73,6 +75,7 @@ class Analysis:
             "dead_centres_deg": [math.degrees(a) for a in cy.dead_centres],
             "working_stroke_deg": math.degrees(cy.working_turn),
             "time_ratio": cy.time_ratio,
+            "cycle_deg": math.degrees(cy.period),
             "min_conditioning": {
                 name: {"sine": s, "phi_deg": math.degrees(a) % 360.0}
                 for name, (s, a) in cy.min_conditioning.items()
@@ -93,7 +96,7 @@ class Analysis:
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
                               "segments_mm": segments, **_marks(vp, ap)}
         self._add_forces(positions, sc)
-        out = {"mechanism": mechanism, "positions": positions}
+        out = {"mechanism": mechanism, "positions": positions, "warnings": list(self.warnings)}
         if "delta" in self.mech.settings.get("dynamics", {}):
             from .machine_unit import machine_unit
 
@@ -155,7 +158,9 @@ def analyze(mech: Mechanism) -> Analysis:
     ------
     StructureError, AssemblyError, SingularPoseError, InputError
     """
+    from .plausibility import machine_warnings
+
     structure = analyse(mech)
     cycle = analyse_cycle(mech)
     kin = sweep(mech, cycle)  # the solver guarantees finite values (SingularPoseError otherwise)
-    return Analysis(mech, structure, cycle, kin)
+    return Analysis(mech, structure, cycle, kin, machine_warnings(mech, cycle))

@@ -40,11 +40,18 @@ from itertools import combinations, pairwise
 import numpy as np
 from numpy.typing import NDArray
 
-from .cycle import Cycle, analyse_cycle, in_working_stroke, output_coordinate, travel_fraction
+from .cycle import (
+    Cycle,
+    LinkTravel,
+    analyse_cycle,
+    link_coordinate,
+    output_coordinate,
+    travel_fraction,
+)
 from .geometry import dot, norm, perp, scale
 from .kinematics import Kinematics
 from .model import Mechanism, Resistance
-from .positions import as_complex
+from .positions import as_complex, solve_positions
 
 Array = NDArray[np.float64]
 
@@ -153,14 +160,18 @@ class Loads:
         }
 
 
-def diagram_value(diagram, travel) -> Array:
-    """Load fraction of a resistance diagram at the travel fractions ``travel``.
+def diagram_value(diagram, travel, signed: bool = False) -> Array:
+    """Value of a load diagram at the abscissae ``travel``.
 
-    Linear between consecutive ``(travel, load)`` pairs; zero outside the first and
-    last travel. At a jump (two pairs with the same travel) and within
-    :data:`JUMP_TOL` of it, the larger of the two values (the load is taken as
-    acting at the position where it switches on or off).
+    Linear between consecutive ``(x, value)`` pairs; zero outside the first and last x.
+    At a jump (two pairs with the same x) and within :data:`JUMP_TOL` of it, the larger of
+    the two values (the load is taken as acting at the position where it switches on or
+    off) — for a ``signed`` diagram the one larger in size. Unsigned values are clipped at 0.
     """
+    if signed:
+        hi = diagram_value(diagram, travel)
+        lo = diagram_value(tuple((x, -v) for x, v in diagram), travel)
+        return np.where(hi >= lo, hi, -lo)
     s = np.asarray(travel, float)
     out = np.full(s.shape, -np.inf)
     for (s0, f0), (s1, f1) in pairwise(diagram):
@@ -186,43 +197,212 @@ def output_travel(mech: Mechanism, kin: Kinematics, cycle: Cycle) -> Array:
     return np.clip(travel_fraction(mech, cycle, q), 0.0, 1.0)
 
 
+def cycle_travel(mech: Mechanism, cycle: Cycle, phi) -> Array:
+    """Crank travel τ (rad) from the cycle's origin in the sense of rotation, in [0, period).
+
+    For a 720° cycle the positions' φ run over two turns (0 … 4π), so φ and φ + 2π are
+    different moments of the process with the same kinematics.
+    """
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    return np.mod((np.asarray(phi, float) - cycle.origin) * sense, cycle.period)
+
+
+def _travel_of(res: Resistance, mech: Mechanism, cycle: Cycle) -> LinkTravel:
+    return cycle.travels[(res.travel_link or mech.output.link, res.working or mech.output.working)]
+
+
+def _first_start(res: Resistance, mech: Mechanism, cycle: Cycle, lt: LinkTravel) -> float:
+    """τ of the travel link's first start dead centre at or after the load's phase."""
+    t0 = float(cycle_travel(mech, cycle, lt.dead_centres[0]))
+    two_pi = 2 * math.pi
+    return t0 + two_pi * math.ceil((res.phase - t0) / two_pi - 1e-12)
+
+
+def stroke_index(res: Resistance, mech: Mechanism, cycle: Cycle, tau) -> NDArray[np.int_]:
+    """Which stroke of the cycle (0, 1, … from the load's first start dead centre) each τ is in.
+
+    Even strokes run x 0 → 1 (the start dead centre belongs to them), odd ones 1 → 0.
+    """
+    lt = _travel_of(res, mech, cycle)
+    u = np.mod(np.asarray(tau, float) - _first_start(res, mech, cycle, lt), cycle.period)
+    turn = np.floor(u / (2 * math.pi))
+    r = u - 2 * math.pi * turn
+    return (2 * turn + (r >= lt.turn)).astype(int)
+
+
+def load_values(res: Resistance, mech: Mechanism, cycle: Cycle, phi, q_travel=None
+                ) -> tuple[Array, Array]:
+    """The load's signed value ``value·max − offset`` (0 where no diagram) at crank angles φ,
+    and the direction of motion of its stroke (±1 along the travel link's x, 0 for a
+    crank-angle diagram).
+
+    ``q_travel``: the travel link's coordinate at φ (needed for a diagram over a stroke).
+    """
+    tau = cycle_travel(mech, cycle, phi)
+    if res.over == "crank":
+        x = np.mod(tau - res.phase, cycle.period)
+        val = diagram_value(res.strokes[0], x, signed=True)
+        return val * res.maximum - res.offset, np.zeros_like(tau)
+    lt = _travel_of(res, mech, cycle)
+    k = stroke_index(res, mech, cycle, tau)
+    x = lt.fraction(q_travel)
+    val = np.zeros_like(tau)
+    on = np.zeros(tau.shape, bool)
+    for m, d in enumerate(res.stroke_diagrams(int(round(cycle.period / math.pi)))):
+        if d is None:
+            continue
+        sel = k == m
+        val = np.where(sel, diagram_value(d, x, signed=res.sense == "diagram"), val)
+        on |= sel
+    size = np.where(on, val * res.maximum - res.offset, 0.0)
+    return size, np.where(k % 2 == 0, 1.0, -1.0)
+
+
 def resistance_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = None
                      ) -> tuple[ForceLoad | MomentLoad, ...]:
-    """The technological resistances of the variant at every position (module docstring).
+    """The variant's loads at every position (module docstring, docs/variant-format.md §6.2).
 
-    Names: ``"Q"`` for a force, ``"Mс"`` for a moment (numbered ``Q1``, ``Q2`` … when the
-    variant lists several of one kind).
+    Names: the load's ``name``, else ``"Q"`` for a force, ``"Mс"`` for a moment (numbered
+    ``Q1``, ``Q2`` … when the variant lists several of one kind).
+
+    Directions. ``sense = "resists"`` (``"drives"``): a force on a slider acts along its
+    frame guide against (along) the motion of its stroke, a force elsewhere against (along)
+    its point's velocity, a moment against (along) the link's ω. ``"diagram"``: the
+    value's sign gives it — a force along ``angle``, or along the direction in which its
+    slider's x grows; a moment CCW positive.
     """
     if not mech.resistances:
         return ()
     cycle = cycle or analyse_cycle(mech)
-    on = in_working_stroke(mech, cycle, kin.phi)
-    travel = output_travel(mech, kin, cycle)
-    w = float(mech.output.working)
     out: list[ForceLoad | MomentLoad] = []
     count = {"force": 0, "moment": 0}
     for res in mech.resistances:
-        count[res.kind] += 1
+        count[res.kind] += res.name is None
     seen = {"force": 0, "moment": 0}
     for res in mech.resistances:
-        seen[res.kind] += 1
-        base = "Q" if res.kind == "force" else "Mс"
-        name = base if count[res.kind] == 1 else f"{base}{seen[res.kind]}"
-        size = np.where(on, diagram_value(res.diagram, travel), 0.0) * res.maximum
-        if res.kind == "force":
-            u = _frame_guide(mech, kin, res)
-            out.append(ForceLoad(name, res.link, "resistance", res.point,
-                                 kin.pos.points[res.point], scale(u, -w * size)))
+        if res.name is None:
+            seen[res.kind] += 1
+            base = "Q" if res.kind == "force" else "Mс"
+            name = base if count[res.kind] == 1 else f"{base}{seen[res.kind]}"
         else:
-            out.append(MomentLoad(name, res.link, "resistance", -w * size))
+            name = res.name
+        q_tr = None
+        tl = res.travel_link or mech.output.link
+        if res.over == "stroke":
+            q_tr = link_coordinate(mech, tl, kin.pos, kin.vel)[1]
+        size, dirn = load_values(res, mech, cycle, kin.phi, q_tr)
+        kind = "resistance" if res.sense == "resists" else "external"
+        s = -1.0 if res.sense == "resists" else 1.0
+        w = float(res.working or mech.output.working)
+        own = res.over == "stroke" and tl == res.link
+        if res.kind == "force":
+            at = kin.pos.points[res.point]
+            u = _frame_guide(mech, kin, res.link)
+            if res.sense == "diagram":
+                if res.angle is not None:
+                    e = np.broadcast_to([math.cos(res.angle), math.sin(res.angle)], at.shape)
+                else:
+                    e = scale(u, w if own else 1.0)
+                vec = scale(e, size)
+            elif u is not None:  # along the guide, with or against the motion
+                motion = w * dirn if own else np.sign(kin.vel.sliding[_guide_key(mech, res.link)])
+                vec = scale(u, s * motion * size)
+            else:  # against (along) the velocity of its point
+                v = point_velocity(mech, kin, res.link, at)
+                sp = norm(v)
+                vec = scale(v, s * size / np.where(sp > 0, sp, 1.0))
+            out.append(ForceLoad(name, res.link, kind, res.point, at, vec))
+        else:
+            if res.sense == "diagram":
+                mom = size
+            else:
+                motion = w * dirn if own else np.sign(kin.vel.omega[res.link])
+                mom = s * motion * size
+            out.append(MomentLoad(name, res.link, kind, np.asarray(mom, float)))
     return tuple(out)
 
 
-def _frame_guide(mech: Mechanism, kin: Kinematics, res: Resistance) -> Array:
-    for key, (_, u) in kin.pos.guides.items():
-        if key == f"{res.link}/{mech.frame_link}":
-            return np.asarray(u, float)
-    raise KeyError(f"link {res.link} slides on no frame guide")  # the loader prevents this
+def _guide_key(mech: Mechanism, link: str) -> str:
+    return f"{link}/{mech.frame_link}"
+
+
+def _frame_guide(mech: Mechanism, kin: Kinematics, link: str) -> Array | None:
+    """The unit vectors (N, 2) of the frame guide ``link`` slides on (None if none)."""
+    g = kin.pos.guides.get(_guide_key(mech, link))
+    return None if g is None else np.asarray(g[1], float)
+
+
+SHAPE_NODES = 6
+"""A diagram of at most this many nodes is a *shape* (method.md E.3: rise, plateau, fall,
+steps) whose every kink is a feature; a longer one is a tabulated curve (an indicator
+diagram), whose kinks are only its sampling: only its jumps are drawing nodes."""
+
+
+def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
+                every_kink: bool = True) -> tuple[float, ...]:
+    """Crank travel τ (rad, from the cycle's origin, in [0, period)) of every place where a
+    load of the variant jumps or kinks: each interior node of its diagrams where the value
+    jumps or the slope changes; with ``ends`` also each end of a loaded stroke (the dead
+    centres, where a load switches on or off while its point stands still: a kink of Mс)
+    and the start of a crank-angle diagram. Exact integrals take all of them as nodes; the
+    graphical integration (``every_kink=False``) takes the jumps, and the kinks of the
+    diagrams of at most :data:`SHAPE_NODES` nodes."""
+    out: set[float] = set()
+    two_pi = 2 * math.pi
+    P = cycle.period
+    for res in mech.resistances:
+        if res.over == "crank":
+            d = res.strokes[0]
+            for i in _kinks(d, 0.0, P, every_kink):
+                out.add(float((d[i][0] + res.phase) % P))
+            if ends or d[0][1] != d[-1][1]:
+                out.add(float(res.phase % P))
+            continue
+        lt = _travel_of(res, mech, cycle)
+        t_s = _first_start(res, mech, cycle, lt)
+        diags = res.stroke_diagrams(int(round(P / math.pi)))
+        for m, d in enumerate(diags):
+            if d is None:
+                continue
+            turn, odd = divmod(m, 2)
+            a = t_s + turn * two_pi + (lt.turn if odd else 0.0)
+            b = t_s + turn * two_pi + (two_pi if odd else lt.turn)
+            if ends:
+                out.update((a % P, b % P))
+            for i in _kinks(d, 0.0, 1.0, every_kink):
+                out.add(_travel_angle(mech, cycle, lt, a, b, d[i][0], bool(odd)) % P)
+    return tuple(sorted(round(t, 12) for t in out))
+
+
+def _kinks(d, lo: float, hi: float, every_kink: bool = True) -> list[int]:
+    """Indices of the interior nodes of a diagram where it jumps or its slope changes (only
+    where it jumps, for a tabulated curve when not ``every_kink``)."""
+    every_kink = every_kink or len(d) <= SHAPE_NODES
+    out = []
+    for i in range(1, len(d) - 1):
+        (s0, l0), (s1, l1), (s2, l2) = d[i - 1], d[i], d[i + 1]
+        if not lo < s1 < hi:
+            continue
+        if s1 == s0 or s2 == s1 or (every_kink and not math.isclose(
+                (l1 - l0) * (s2 - s1), (l2 - l1) * (s1 - s0), rel_tol=1e-9, abs_tol=1e-12)):
+            out.append(i)
+    return out
+
+
+def _travel_angle(mech: Mechanism, cycle: Cycle, lt: LinkTravel, a: float, b: float,
+                  x: float, falling: bool) -> float:
+    """τ in [a, b] (one stroke of the travel link) where its x reaches ``x`` (bisection)."""
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    lo, hi = a, b
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        pos = solve_positions(mech, [cycle.origin + sense * mid])
+        f = float(lt.fraction(link_coordinate(mech, lt.link, pos)[1])[0])
+        if (f < x) != falling:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
 
 
 def shift_inertia_force(vector, moment, centre, max_arm: float = math.inf):
@@ -406,6 +586,7 @@ def power_balance_moment(mech: Mechanism, kin: Kinematics, loads: Loads) -> Arra
     return -load_power(mech, kin, loads) / mech.crank.omega
 
 
-__all__ = ["ForceLoad", "Loads", "MomentLoad", "compute_loads", "diagram_value",
+__all__ = ["ForceLoad", "Loads", "MomentLoad", "compute_loads", "cycle_travel", "diagram_value",
+           "load_breaks", "load_values", "stroke_index",
            "group_size", "load_power", "output_travel", "point_velocity",
            "power_balance_moment", "resistance_loads", "shift_inertia_force"]

@@ -78,6 +78,8 @@ def _analyze(args) -> int:
 
     path = _variant_path(args.variant)
     result = analyze(load(path))
+    for w in result.warnings:
+        print(f"graphplan: warning: {w}", file=sys.stderr)
     if args.json:
         text = json.dumps(result.to_json(), ensure_ascii=False, indent=1, allow_nan=False) + "\n"
     else:
@@ -104,6 +106,8 @@ def _sheets(args) -> int:
         target = out / v.stem if len(variants) > 1 else out
         done = write_project(v, target, lang=args.lang, precision=args.precision,
                              page=args.page, formats=args.format, dpi=args.dpi)
+        for w in done.warnings:
+            print(f"graphplan: warning: {w}", file=sys.stderr)
         print(f"{v}: " + ", ".join(str(f) for f in done.files))
     return 0
 

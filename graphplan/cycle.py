@@ -15,7 +15,7 @@ all sorted by crank travel from the first.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -57,6 +57,16 @@ class Cycle:
     min_conditioning : dict[str, tuple[float, float]]
         Per dyad: the smallest |sin| between its equation lines over the turn, and
         the crank angle (rad) where it occurs.
+    period : float
+        The cycle, rad of crank travel: 2π, or 4π for a four-stroke process
+        (``positions.cycle = 720``); the positions' φ lie in [0, period).
+    origin : float
+        Crank angle (rad) where the cycle starts: the start dead centre, or without dead
+        centres the first position. A load's crank-angle diagram and its strokes are
+        counted from here in the sense of rotation.
+    travels : dict[tuple[str, int], LinkTravel]
+        The stroke of every link whose travel is the abscissa of a load diagram, keyed by
+        (link, working sense).
     """
 
     output_kind: str
@@ -69,6 +79,9 @@ class Cycle:
     labels: tuple[str, ...]
     phi: Array
     min_conditioning: dict[str, tuple[float, float]]
+    period: float = 2 * math.pi
+    origin: float = 0.0
+    travels: dict = field(default_factory=dict)
 
     @property
     def time_ratio(self) -> float:
@@ -78,9 +91,40 @@ class Cycle:
         return self.working_turn / (2 * math.pi - self.working_turn)
 
 
+@dataclass(frozen=True, slots=True)
+class LinkTravel:
+    """The stroke of one link: its dead centres and its coordinate there.
+
+    ``x = (q − q_start)/(q_end − q_start)`` runs from 0 at the start dead centre to 1 at the
+    end one; ``working`` (±1) says whether x grows with q. ``turn`` is the crank's travel
+    (rad) from the start to the end dead centre in the sense of rotation.
+    """
+
+    link: str
+    kind: str
+    dead_centres: tuple[float, float]
+    q_start: float
+    q_end: float
+    turn: float
+    working: int
+
+    def fraction(self, q) -> Array:
+        """x of the coordinate q (a rocker's angle taken on the turn nearest its swing)."""
+        q = np.asarray(q, float)
+        if self.kind == "rocker":
+            mid = 0.5 * (self.q_start + self.q_end)
+            q = q + 2 * math.pi * np.round((mid - q) / (2 * math.pi))
+        return np.clip((q - self.q_start) / (self.q_end - self.q_start), 0.0, 1.0)
+
+
 def output_coordinate(mech: Mechanism, kin_pos, kin_vel=None):
     """Return ``(kind, q, dq/dt, point)`` of the output link over a sweep."""
-    out = mech.output.link
+    return link_coordinate(mech, mech.output.link, kin_pos, kin_vel)
+
+
+def link_coordinate(mech: Mechanism, out: str, kin_pos, kin_vel=None):
+    """Return ``(kind, q, dq/dt, point)`` of link ``out``: a slider's displacement along its
+    frame guide (m) or, for any other link, its angle θ (rad, unwrapped)."""
     for d in mech.dyads:
         if out not in d.links:
             continue
@@ -120,7 +164,12 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
     analyse_structure(mech)  # W = 1 and class-II groups, before any link angle is trusted
     sense = 1.0 if mech.crank.omega > 0 else -1.0
     grid = np.linspace(0.0, 2 * math.pi, CHECK_GRID, endpoint=False)
-    turn = solve(mech, grid)  # assembles, checks lock-ups and finiteness over the whole turn
+    try:
+        turn = solve(mech, grid)  # assembles, checks lock-ups and finiteness over the turn
+    except AssemblyError as exc:
+        if isinstance(exc, SingularPoseError):
+            raise
+        raise type(exc)(f"{exc}{_reachable(mech)}") from None
     pos, vel = turn.pos, turn.vel
     min_cond = {}
     for name, s in vel.conditioning.items():
@@ -136,32 +185,9 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
         min_cond[name] = (min(s_min, float(s[k])), phi_min if s_min < s[k] else float(grid[k]))
     _check_slot_clearance(mech, grid, pos)
 
-    kind, q, rate, point = output_coordinate(mech, pos, vel)
-    dead: tuple[float, ...] = ()
-    q_start = q_end = 0.0
-    stroke = swing = turn = 0.0
-    zero = np.sign(rate) != np.sign(np.roll(rate, -1))
-    if zero.any() and np.ptp(q) > 1e-12:
-        idx = np.nonzero(zero)[0]
-        lo = grid[idx]
-        hi = lo + 2 * math.pi / CHECK_GRID
-        roots = _bisect_rate(mech, lo, hi)
-        rp = solve_positions(mech, roots)
-        _, qr, _, _ = output_coordinate(mech, rp)
-        # unwrap a rocker angle consistently with the grid's branch
-        if kind == "rocker":
-            qr = qr + 2 * math.pi * np.round((np.interp(roots, grid, q) - qr) / (2 * math.pi))
-        k_min, k_max = int(np.argmin(qr)), int(np.argmax(qr))
-        if mech.output.working > 0:
-            ks, ke = k_min, k_max
-        else:
-            ks, ke = k_max, k_min
-        dead = (float(roots[ks] % (2 * math.pi)), float(roots[ke] % (2 * math.pi)))
-        q_start, q_end = float(qr[ks]), float(qr[ke])
-        p_s, p_e = rp.points[point][ks], rp.points[point][ke]
-        stroke = float(np.hypot(*(p_e - p_s)))
-        swing = abs(q_end - q_start) if kind == "rocker" else 0.0
-        turn = float(_travel(dead[1], dead[0], sense))
+    kind, dead, q_start, q_end, stroke, turn = _dead_centres(
+        mech, mech.output.link, mech.output.working, grid, pos, vel)
+    swing = abs(q_end - q_start) if (kind == "rocker" and dead) else 0.0
 
     def dead_centre(which: str, path: str) -> float:
         if not dead:
@@ -170,9 +196,10 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
         return dead[0] if which == "start" else dead[1]
 
     P = mech.positions
+    period = P.period
     first = (dead_centre(P.first, "positions.first") if isinstance(P.first, str)
              else float(P.first))
-    step = 2 * math.pi / P.count
+    step = period / P.count
     phis = [first + sense * k * step for k in range(P.count)]
     labels = [str(P.number_from + k) for k in range(P.count)]
     for n, ex in enumerate(P.extra):
@@ -185,8 +212,21 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
             dead_centre("start", f"{path}.stroke")
             phis.append(_stroke_angle(mech, dead[0], turn, sense, q_start, q_end, ex.stroke))
         labels.append(ex.label)
-    phis_a = np.mod(np.asarray(phis), 2 * math.pi)
-    order = np.argsort(_travel(phis_a, first, sense), kind="stable")
+    phis_a = np.mod(np.asarray(phis), period)
+    order = np.argsort(np.mod((phis_a - first) * sense, period), kind="stable")
+    origin = dead[0] if dead else first % (2 * math.pi)
+    travels: dict[tuple[str, int], LinkTravel] = {}
+    for n, res in enumerate(mech.resistances):
+        tl = res.travel_link or mech.output.link
+        w = res.working or mech.output.working
+        if res.over != "stroke" or (tl, w) in travels:
+            continue
+        k_, d_, qs, qe, _, t_ = _dead_centres(mech, tl, w, grid, pos, vel)
+        if not d_:
+            raise InputError(f"{mech.source}: loads[{n}].over: link {tl!r} has no dead "
+                             "centres (it turns fully), so its stroke cannot be the abscissa; "
+                             "give over = \"crank\" (a diagram over the crank angle)")
+        travels[(tl, w)] = LinkTravel(tl, k_, (float(d_[0]), float(d_[1])), qs, qe, t_, w)
     return Cycle(
         output_kind=kind,
         dead_centres=dead,
@@ -198,7 +238,85 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
         labels=tuple(labels[k] for k in order),
         phi=phis_a[order],
         min_conditioning=min_cond,
+        period=period,
+        origin=float(origin),
+        travels=travels,
     )
+
+
+def _dead_centres(mech: Mechanism, link: str, working: int, grid, pos, vel):
+    """Dead centres of ``link`` over the turn: ``(kind, (start, end), q_start, q_end, chord,
+    turn)``; ``()`` and zeros when its coordinate never stops."""
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    kind, q, rate, point = link_coordinate(mech, link, pos, vel)
+    zero = np.sign(rate) != np.sign(np.roll(rate, -1))
+    if not (zero.any() and np.ptp(q) > 1e-12):
+        return kind, (), 0.0, 0.0, 0.0, 0.0
+    idx = np.nonzero(zero)[0]
+    lo = grid[idx]
+    hi = lo + 2 * math.pi / CHECK_GRID
+    roots = _bisect_rate(mech, lo, hi, link)
+    rp = solve_positions(mech, roots)
+    _, qr, _, _ = link_coordinate(mech, link, rp)
+    if kind == "rocker":  # unwrap a rocker angle consistently with the grid's branch
+        qr = qr + 2 * math.pi * np.round((np.interp(roots, grid, q) - qr) / (2 * math.pi))
+    k_min, k_max = int(np.argmin(qr)), int(np.argmax(qr))
+    ks, ke = (k_min, k_max) if working > 0 else (k_max, k_min)
+    dead = (float(roots[ks] % (2 * math.pi)), float(roots[ke] % (2 * math.pi)))
+    p_s, p_e = rp.points[point][ks], rp.points[point][ke]
+    chord = float(np.hypot(*(p_e - p_s)))
+    turn = float(_travel(dead[1], dead[0], sense))
+    return kind, dead, float(qr[ks]), float(qr[ke]), chord, turn
+
+
+def _reachable(mech: Mechanism) -> str:
+    """Why a crank does not turn fully: the arc of crank angles where the chain closes."""
+    n = 720
+    grid = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+    ok = np.zeros(n, bool)
+    for k in range(n):
+        try:
+            solve_positions(mech, grid[k:k + 1])
+            ok[k] = True
+        except AssemblyError:
+            pass
+    if np.count_nonzero(~ok) < 3:  # isolated angles (parallel lines): not a question of reach
+        return ""
+    if not ok.any():  # it closes nowhere: the first message says why
+        return ""
+    # the longest run of closing angles, cyclically
+    start = int(np.argmin(ok)) if not ok.all() else 0
+    rolled = np.roll(ok, -start)
+    best, best_len, run = 0, 0, None
+    for k, v in enumerate(np.append(rolled, False)):
+        if v and run is None:
+            run = k
+        elif not v and run is not None:
+            if k - run > best_len:
+                best, best_len = run, k - run
+            run = None
+    step = 2 * math.pi / n
+
+    def closes(x):
+        try:
+            solve_positions(mech, np.atleast_1d(x))
+            return True
+        except AssemblyError:
+            return False
+
+    def edge(inside, outside):
+        for _ in range(50):
+            mid = 0.5 * (inside + outside)
+            inside, outside = (mid, outside) if closes(mid) else (inside, mid)
+        return inside
+
+    a0 = grid[(best + start) % n]
+    a1 = a0 + (best_len - 1) * step
+    lo, hi = edge(a0, a0 - step), edge(a1, a1 + step)
+    return (f"; the crank cannot make a full turn: the chain closes only for φ from "
+            f"{math.degrees(lo) % 360:.2f}° to {math.degrees(hi) % 360:.2f}° "
+            f"({math.degrees(hi - lo):.1f}° of turn), so link {mech.crank.link} is a rocker, "
+            "not a crank (Grashof) — shorten crank.length or lengthen the dyad's links")
 
 
 def travel_fraction(mech: Mechanism, cycle: Cycle, q) -> Array:
@@ -278,18 +396,18 @@ def _golden_min(f, a, b, iters=60):
     return x, float(f(x)[0])
 
 
-def _rate(mech, phi):
+def _rate(mech, phi, link=None):
     pos = solve_positions(mech, phi)
     vel = solve_velocities(mech, pos)
-    return output_coordinate(mech, pos, vel)[2]
+    return link_coordinate(mech, link or mech.output.link, pos, vel)[2]
 
 
-def _bisect_rate(mech, lo, hi, iters=60):
-    """Bisection, vectorised over brackets, for zeros of the output rate."""
-    f_lo = _rate(mech, lo)
+def _bisect_rate(mech, lo, hi, link=None, iters=60):
+    """Bisection, vectorised over brackets, for zeros of a link's rate (the output's)."""
+    f_lo = _rate(mech, lo, link)
     for _ in range(iters):
         mid = 0.5 * (lo + hi)
-        f_mid = _rate(mech, mid)
+        f_mid = _rate(mech, mid, link)
         left = np.sign(f_mid) == np.sign(f_lo)
         lo = np.where(left, mid, lo)
         f_lo = np.where(left, f_mid, f_lo)

@@ -55,8 +55,11 @@ LINE = 6.0  #: line pitch of the results, mm
 
 def results_lines(u: MachineUnit, lang: str) -> list[str]:
     """The results of sheet 3, one line each, in the order of the calculation."""
-    fw, mc, mo = u.flywheel, u.motor, u.motor.motor
+    fw, mc = u.flywheel, u.motor
     ru = lang == "ru"
+    if mc is None:  # driven by its loads (an engine): the constant moment is the consumer's
+        return _engine_lines(u, lang)
+    mo = mc.motor
     rot = ("J_рот нет в каталоге" if ru else "J_rot not in the catalogue") \
         if mo.inertia_kg_m2 is None else f"Iрот·u² = {fmt(fw.I_rotor, 4)} кг·м²"
     lines = [
@@ -79,6 +82,26 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
         f"({u.delta_error_pct:+.2f} %)",
     ]
     return lines
+
+
+def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
+    """Sheet 3's results of a machine its loads drive (an engine): Mс constant, no motor."""
+    fw, ru = u.flywheel, lang == "ru"
+    cyc = f"{math.degrees(u.model.period):.0f}°"
+    return [
+        f"ω1 = {fmt(fw.omega, 4)} {'рад/с' if ru else 'rad/s'},  δ = {fw.delta:g}",
+        f"Mс = −Aд({cyc})/{'4π' if u.model.period > 7 else '2π'} = {fmt(fw.M_d, 5)} "
+        f"{'Н·м' if ru else 'N·m'} ({'графически' if ru else 'graphical'} "
+        f"{fmt(fw.work.M_d_graph, 5)}, {(fw.work.M_d_graph / fw.M_d - 1) * 100:+.2f} %)",
+        f"P = |Mс|·ω1 = {fmt(u.power_W / 1000, 4)} {'кВт' if ru else 'kW'}",
+        f"ΔTmax = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
+        f"JI = (k−l)·KT/(ω²·δ) = {fmt(fw.J_I, 5)} кг·м²",
+        f"Iм = JI − Iкр = {fmt(fw.I_m, 5)} кг·м² "
+        f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
+        f"{fw.difference_pct:+.2f} %)",
+        f"δ {'при моделировании' if ru else 'simulated'} = {u.simulation.delta_actual:.4f} "
+        f"({u.delta_error_pct:+.2f} %)",
+    ]
 
 
 def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:

@@ -37,6 +37,15 @@ LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
 MAX_LENGTH_M = 1000.0
 """No machine of a TMM project is a kilometre across; larger numbers are typos."""
 MAX_RPM = 1e5
+MAX_LOAD = 1e12
+"""No load of a TMM variant reaches 10¹² N or N·m; larger numbers are typos."""
+PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "atm": 101325.0,
+                  "kgf/cm2": 98066.5}
+"""Units of the pressures of an indicator diagram, in Pa (kgf/cm2: кгс/см², the old at)."""
+LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense", "over",
+             "stroke", "strokes", "travel", "angle", "travel_link", "working", "phase",
+             "bore", "p_max", "p_ambient", "pressure_unit"}
+STROKE_SETS = ("working", "idle", "both")
 NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_']*")  # used with fullmatch: no trailing newline
 LINK_RE = re.compile(r"[0-9]{1,3}")
 
@@ -45,13 +54,14 @@ LINK_RE = re.compile(r"[0-9]{1,3}")
 SECTIONS: dict[str, set[str] | None] = {
     "variant": {"name", "length_unit", "description"},
     "frame": {"link", "points"},
-    "crank": {"link", "joints", "length", "rpm", "direction", "mass", "inertia", "centre"},
+    "crank": {"link", "joints", "length", "rpm", "omega", "direction", "mass", "weight",
+              "inertia", "centre"},
     "dyads": None,
     "points": None,
     "links": None,
     "gravity": {"enabled", "g", "angle"},
     "loads": None,
-    "positions": {"count", "first", "number_from", "extra"},
+    "positions": {"count", "first", "number_from", "extra", "cycle"},
     "output": {"link", "working"},
     "kinetostatics": {"neglect_below", "inertia", "shift_inertia_force", "positions"},
     "dynamics": {
@@ -287,7 +297,7 @@ def _build(data: dict, r: _Reader) -> Mechanism:
 
     # -- crank
     crank_t = data["crank"]
-    r.keys(crank_t, "crank", SECTIONS["crank"], {"link", "joints", "length", "rpm"})
+    r.keys(crank_t, "crank", SECTIONS["crank"], {"link", "joints", "length"})
     crank_link = r.link(crank_t["link"], "crank.link")
     if crank_link == frame_link:
         raise r.fail("crank.link", f"the crank cannot be the frame link {frame_link!r}")
@@ -297,9 +307,22 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         raise r.fail("crank.joints[0]", f"the crank pivot {pivot!r} must be a frame point")
     pin = need_point(cj[1], "crank.joints[1]", known=False)
     length = r.length(crank_t["length"], "crank.length", unit)
-    rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True, hi=MAX_RPM)
+    if "rpm" not in crank_t and "omega" not in crank_t:
+        raise r.fail("crank.rpm", "missing required key: the crank speed, 'rpm' (n1, rpm) "
+                     "or 'omega' (ω1, rad/s)")
+    if "rpm" in crank_t and "omega" in crank_t:
+        raise r.fail("crank.omega", "give the crank speed once: either 'rpm' (n1, rpm) or "
+                     "'omega' (ω1, rad/s), not both")
+    if "rpm" in crank_t:
+        rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True, hi=MAX_RPM)
+    else:  # ω1 in rad/s, as many assignment books give it; n1 = 30·ω1/π
+        w1 = r.number(crank_t["omega"], "crank.omega", positive=True,
+                      hi=MAX_RPM * math.pi / 30.0)
+        rpm = w1 * 30.0 / math.pi
     direction = r.string(crank_t.get("direction", "ccw"), "crank.direction", ("ccw", "cw"))
     omega = math.pi * rpm / 30.0 * (1.0 if direction == "ccw" else -1.0)
+    if "omega" in crank_t:
+        omega = math.copysign(float(crank_t["omega"]), omega)  # exactly as given
     crank = Crank(crank_link, pivot, pin, length, rpm, omega)
     known_points[pin] = crank_link
     link_points[crank_link] = [pivot, pin]
@@ -436,10 +459,19 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         raise r.fail(f"points[{n}].link", f"link {pt['link']!r} is not a link of this mechanism "
                      f"(links: {', '.join(link_order)})")
 
+    # -- gravity (its g also turns weights G into masses m = G/g)
+    grav = r.table(data.get("gravity", {}), "gravity")
+    g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
+    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
+    g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
+    gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
+    gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
+
     # -- link properties
     links: dict[str, LinkProps] = {}
     raw_links = r.table(data.get("links", {}), "links")
-    crank_props = {k: crank_t[k] for k in ("mass", "inertia", "centre") if k in crank_t}
+    crank_props = {k: crank_t[k] for k in ("mass", "weight", "inertia", "centre")
+                   if k in crank_t}
     if crank_props:
         raw_links = {**raw_links}
         if crank_link in raw_links:
@@ -452,8 +484,16 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             raise r.fail(path, f"not a moving link of this mechanism (moving links: "
                          f"{', '.join(x for x in link_order if x != frame_link)})")
         r.table(props, path)
-        r.keys(props, path, {"mass", "inertia", "centre"})
-        mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
+        r.keys(props, path, {"mass", "weight", "inertia", "centre"})
+        if "weight" in props:  # G in N, as assignment books often give it: m = G/g
+            if "mass" in props:
+                raise r.fail(f"{path}.weight", "give either 'mass' (kg) or 'weight' (N), "
+                             "not both")
+            if g <= 0:
+                raise r.fail(f"{path}.weight", "a weight needs gravity.g > 0 to give the mass")
+            mass = r.number(props["weight"], f"{path}.weight", nonneg=True, hi=1e10) / g
+        else:
+            mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
         inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True, hi=1e12)
         centre = None
         if "centre" in props:
@@ -465,14 +505,6 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             raise r.fail(f"{path}.centre", "a link with mass needs its centre of mass point")
         links[ln] = LinkProps(mass, inertia, centre)
 
-    # -- gravity
-    grav = r.table(data.get("gravity", {}), "gravity")
-    g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
-    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
-    g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
-    gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
-    gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
-
     # -- output
     last = dyads[-1]
     out_t = r.table(data.get("output", {}), "output")
@@ -483,50 +515,6 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             raise r.fail("output.link", "the output cannot be the frame")
     working = 1 if r.string(out_t.get("working", "+"), "output.working", ("+", "-")) == "+" else -1
     output = Output(out_link, working)
-
-    # -- loads
-    resistances: list[Resistance] = []
-    raw_loads = r.array(data.get("loads", []), "loads")
-    for n, lt in enumerate(raw_loads):
-        path = f"loads[{n}]"
-        r.table(lt, path)
-        r.keys(lt, path, {"kind", "link", "point", "max", "diagram"},
-               {"kind", "link", "max", "diagram"})
-        kind = r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
-        ln = need_link(lt["link"], f"{path}.link", known=True)
-        if ln == frame_link:
-            raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
-        point = None
-        if kind == "force":
-            if "point" not in lt:
-                raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
-            point = r.name(lt["point"], f"{path}.point")
-            if point not in link_points[ln]:
-                raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
-                             f"(its points: {', '.join(link_points[ln])})")
-            if not _translates_on_frame(ln, dyads, frame_link):
-                raise r.fail(f"{path}.link", f"a resistance force needs a slider moving on a frame "
-                             f"guide; link {ln!r} is not one")
-        elif "point" in lt:
-            raise r.fail(f"{path}.point", "a moment load has no point")
-        elif not _rotates_about_frame(ln, dyads, crank, known_points, frame_link):
-            raise r.fail(f"{path}.link", f"a resisting moment needs a rocker pivoted on the frame; "
-                         f"link {ln!r} is not one")
-        if ln != output.link:
-            raise r.fail(f"{path}.link", f"the resistance acts on the output link "
-                         f"({output.link!r}), whose stroke defines its diagram (got {ln!r})")
-        mx = r.number(lt["max"], f"{path}.max", nonneg=True, hi=1e12)
-        diag = r.array(lt["diagram"], f"{path}.diagram", minlen=2)
-        pairs = []
-        for m, pr in enumerate(diag):
-            pp = r.array(pr, f"{path}.diagram[{m}]", 2)
-            s = r.number(pp[0], f"{path}.diagram[{m}][0]", lo=0.0, hi=1.0)
-            f = r.number(pp[1], f"{path}.diagram[{m}][1]", lo=0.0, hi=1.0)
-            if pairs and s < pairs[-1][0]:
-                raise r.fail(f"{path}.diagram[{m}][0]",
-                             f"travel fractions must not decrease (got {s} after {pairs[-1][0]})")
-            pairs.append((s, f))
-        resistances.append(Resistance(kind, ln, point, mx, tuple(pairs)))
 
     # -- positions
     pos_t = r.table(data.get("positions", {}), "positions")
@@ -568,7 +556,18 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         else:
             extras.append(ExtraPosition(
                 label, stroke=r.number(et["stroke"], f"{path}.stroke", lo=0.0, hi=1.0)))
-    positions = Positions(count, first, number_from, tuple(extras))
+    cycle_deg = r.integer(pos_t.get("cycle", 360), "positions.cycle", 360, 720)
+    if cycle_deg not in (360, 720):
+        raise r.fail("positions.cycle", f"expected 360 (one turn) or 720 (two turns: a "
+                     f"four-stroke process) (got {cycle_deg})")
+    positions = Positions(count, first, number_from, tuple(extras), cycle_deg)
+
+    # -- loads
+    resistances = _loads(r, data, dict(
+        frame_link=frame_link, link_points=link_points, link_order=link_order,
+        known_points=known_points, dyads=dyads, crank=crank, output=output, unit=unit,
+        cycle=cycle_deg))
+
 
     settings = {
         sec: data[sec]
@@ -716,3 +715,242 @@ def _check_settings(r: _Reader, settings: dict) -> None:
     var = settings.get("variant", {})
     if "description" in var:
         r.string(var["description"], "variant.description")
+
+
+def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
+    """The ``[[loads]]``: forces and couples on any moving link (docs/variant-format.md §6.2).
+
+    Each load's diagram is stored per stroke of the cycle (``Resistance.strokes``) or over
+    the crank's travel in radians; a bare ``diagram`` keeps the classical meaning: the
+    output's working stroke, resisting.
+    """
+    frame_link, link_points = ctx["frame_link"], ctx["link_points"]
+    dyads, crank, output, unit = ctx["dyads"], ctx["crank"], ctx["output"], ctx["unit"]
+    cycle = ctx["cycle"]
+    n_strokes = 2 * cycle // 360
+    moving = [x for x in ctx["link_order"] if x != frame_link]
+    out: list[Resistance] = []
+    raw_loads = r.array(data.get("loads", []), "loads")
+    names: set[str] = set()
+    needs_two_turns = False
+    for n, lt in enumerate(raw_loads):
+        path = f"loads[{n}]"
+        r.table(lt, path)
+        r.keys(lt, path, LOAD_KEYS, {"link"})
+        gas = "bore" in lt
+        if "kind" in lt:
+            kind = r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
+        elif gas:
+            kind = "force"
+        else:
+            raise r.fail(f"{path}.kind", "missing required key ('force' or 'moment')")
+        ln = r.link(lt["link"], f"{path}.link")
+        if ln == frame_link:
+            raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
+        if ln not in link_points:
+            raise r.fail(f"{path}.link", f"link {ln!r} is not a link of this mechanism "
+                         f"(moving links: {', '.join(moving)})")
+        name = None
+        if "name" in lt:
+            name = r.string(lt["name"], f"{path}.name").strip()
+            if not name or _CONTROL.search(name) or len(name) > 12:
+                raise r.fail(f"{path}.name", f"expected a short one-line name like 'Fг' "
+                             f"(got {lt['name']!r})")
+            if name in names:
+                raise r.fail(f"{path}.name", f"name {name!r} is already used by another load")
+            names.add(name)
+        point = None
+        if kind == "force":
+            if "point" not in lt:
+                raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
+            point = r.name(lt["point"], f"{path}.point")
+            if point not in link_points[ln]:
+                raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
+                             f"(its points: {', '.join(link_points[ln])})")
+        elif "point" in lt:
+            raise r.fail(f"{path}.point", "a moment load has no point")
+        elif _translates_on_frame(ln, dyads, frame_link):
+            raise r.fail(f"{path}.link", f"a couple on link {ln!r}, which only translates on a "
+                         "frame guide, does no work (put a force on it)")
+        if gas and kind != "force":
+            raise r.fail(f"{path}.bore", "a pressure (bore) gives a force on a piston, "
+                         "not a moment")
+        slider = _translates_on_frame(ln, dyads, frame_link)
+        rocker = _rotates_about_frame(ln, dyads, crank, ctx["known_points"], frame_link)
+        if gas and not slider:
+            raise r.fail(f"{path}.link", f"a gas force (bore) acts on a piston sliding in a "
+                         f"frame guide (cylinder); link {ln!r} is not one")
+        sense = r.string(lt.get("sense", "diagram" if gas else "resists"), f"{path}.sense",
+                         ("resists", "drives", "diagram"))
+        angle = None
+        if "angle" in lt:
+            if kind != "force" or sense != "diagram":
+                raise r.fail(f"{path}.angle", "the direction 'angle' goes with a force of "
+                             "sense = \"diagram\"; a resisting or driving load follows the motion")
+            angle = math.radians(r.number(lt["angle"], f"{path}.angle"))
+        elif kind == "force" and sense == "diagram" and not slider:
+            raise r.fail(f"{path}.angle", f"missing: the direction of the force (degrees) — "
+                         f"link {ln!r} does not slide on a frame guide to give one")
+        over = r.string(lt.get("over", "stroke"), f"{path}.over", ("stroke", "crank"))
+        # the link whose travel is the abscissa
+        if "travel_link" in lt:
+            tl = r.link(lt["travel_link"], f"{path}.travel_link")
+            if tl not in link_points or tl == frame_link:
+                raise r.fail(f"{path}.travel_link", f"link {tl!r} is not a moving link of this "
+                             f"mechanism (moving links: {', '.join(moving)})")
+        else:
+            tl = ln if (slider or (rocker and ln != crank.link)) else output.link
+        working = output.working
+        if "working" in lt:
+            working = 1 if r.string(lt["working"], f"{path}.working", ("+", "-")) == "+" else -1
+        phase = math.radians(r.number(lt.get("phase", 0.0), f"{path}.phase", lo=0.0,
+                                      hi=float(cycle)))
+        # the scale of the values
+        offset = 0.0
+        if gas:
+            for k in ("max", "value"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
+                                 "(diagram/strokes, p_max) and the bore, not the force")
+            D = r.length(lt["bore"], f"{path}.bore", unit)
+            area = math.pi * D * D / 4.0
+            pu = r.string(lt.get("pressure_unit", "MPa"), f"{path}.pressure_unit",
+                          tuple(PRESSURE_UNITS))
+            pmax = r.number(lt.get("p_max", 1.0), f"{path}.p_max", positive=True, hi=1e9)
+            pamb = r.number(lt.get("p_ambient", 0.0), f"{path}.p_ambient", nonneg=True, hi=1e9)
+            maximum = pmax * PRESSURE_UNITS[pu] * area
+            offset = pamb * PRESSURE_UNITS[pu] * area
+            if maximum > MAX_LOAD:
+                raise r.fail(f"{path}.p_max", f"p_max·πD²/4 = {maximum:.3g} N is beyond "
+                             f"{MAX_LOAD:g} N (check pressure_unit and bore)")
+        else:
+            for k in ("p_max", "p_ambient", "pressure_unit"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
+            if "value" in lt:
+                for k in ("max", "diagram", "strokes", "travel"):
+                    if k in lt:
+                        raise r.fail(f"{path}.{k}", "a constant load is given by 'value' alone")
+                lo = -MAX_LOAD if sense == "diagram" else 0.0
+                maximum = 1.0
+                const = r.number(lt["value"], f"{path}.value", lo=lo, hi=MAX_LOAD)
+            elif "max" not in lt:
+                raise r.fail(f"{path}.max", "missing required key (the scale of the diagram, "
+                             "N or N·m; or give 'value' for a constant load)")
+            else:
+                maximum = r.number(lt["max"], f"{path}.max", nonneg=True, hi=MAX_LOAD)
+        signed = sense == "diagram"
+        strokes: tuple = ()
+        if "value" in lt:  # constant: the whole cycle, or the strokes named
+            if "stroke" in lt:
+                which = r.string(lt["stroke"], f"{path}.stroke", STROKE_SETS)
+                d = ((0.0, const), (1.0, const))
+                strokes = _stroke_set(which, d, n_strokes)
+            else:
+                over = "crank"
+                strokes = (((0.0, const), (math.radians(cycle), const)),)
+        elif over == "crank":
+            for k in ("stroke", "strokes", "travel"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "a diagram over the crank angle has no strokes")
+            if "diagram" not in lt:
+                raise r.fail(f"{path}.diagram", "missing required key (pairs [φ°, value])")
+            d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=float(cycle))
+            _covers(r, d, f"{path}.diagram", float(cycle), "the cycle (crank angle 0 … "
+                    f"{cycle}°)")
+            strokes = (tuple((math.radians(x), v) for x, v in d),)
+            if cycle == 720:
+                needs_two_turns = True
+        else:
+            if "diagram" not in lt and "strokes" not in lt:
+                raise r.fail(f"{path}.diagram", "missing required key: 'diagram' (one "
+                             "stroke's diagram) or 'strokes' (one diagram per stroke)")
+            if "diagram" in lt and "strokes" in lt:
+                raise r.fail(f"{path}.diagram", "give either 'diagram' (one stroke's diagram) "
+                             "or 'strokes' (one diagram per stroke of the cycle), not both")
+            travel = None
+            if "travel" in lt:
+                if "strokes" not in lt:
+                    raise r.fail(f"{path}.travel", "goes with 'strokes' (a table: the travel "
+                                 "column and one column of values per stroke)")
+                tv = r.array(lt["travel"], f"{path}.travel", minlen=2)
+                travel = [r.number(x, f"{path}.travel[{m}]", lo=0.0, hi=1.0)
+                          for m, x in enumerate(tv)]
+                for m in range(1, len(travel)):
+                    if travel[m] < travel[m - 1]:
+                        raise r.fail(f"{path}.travel[{m}]", "travel fractions must not "
+                                     f"decrease (got {travel[m]} after {travel[m - 1]})")
+            if "diagram" in lt:
+                d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=1.0)
+                _covers(r, d, f"{path}.diagram", 1.0, "the stroke (travel 0 … 1)")
+                which = r.string(lt.get("stroke", "working"), f"{path}.stroke", STROKE_SETS)
+                strokes = _stroke_set(which, d, n_strokes)
+            else:
+                if "stroke" in lt:
+                    raise r.fail(f"{path}.stroke", "goes with 'diagram'; 'strokes' lists "
+                                 "every stroke")
+                ss = r.array(lt["strokes"], f"{path}.strokes", minlen=1)
+                if len(ss) != n_strokes:
+                    hint = (" (4 strokes: a four-stroke cycle needs positions.cycle = 720)"
+                            if len(ss) == 4 and cycle == 360 else "")
+                    raise r.fail(f"{path}.strokes", f"expected {n_strokes} diagrams, one per "
+                                 f"stroke of the {cycle}° cycle (got {len(ss)}){hint}")
+                items = []
+                for m, sd in enumerate(ss):
+                    sp = f"{path}.strokes[{m}]"
+                    sd = r.array(sd, sp)
+                    if not sd:
+                        items.append(None)
+                        continue
+                    if travel is not None:
+                        if len(sd) != len(travel):
+                            raise r.fail(sp, f"expected {len(travel)} values, one per 'travel' "
+                                         f"(got {len(sd)})")
+                        lo = -MAX_LOAD if signed else 0.0
+                        vals = [r.number(v, f"{sp}[{k}]", lo=lo, hi=MAX_LOAD)
+                                for k, v in enumerate(sd)]
+                        d = tuple(zip(travel, vals, strict=True))
+                    else:
+                        d = _pairs(r, sd, sp, signed, hi_x=1.0)
+                    _covers(r, d, sp, 1.0, "the stroke (travel 0 … 1)")
+                    items.append(d)
+                if all(x is None for x in items):
+                    raise r.fail(f"{path}.strokes", "every stroke is empty: no load")
+                strokes = tuple(items)
+                if cycle == 720 and strokes[:2] != strokes[2:]:
+                    needs_two_turns = True
+        first = next((d for d in strokes if d is not None), ())
+        out.append(Resistance(kind, ln, point, maximum, tuple(first), name, sense, over,
+                              strokes, angle, tl, working, phase, offset))
+    if cycle == 720 and not needs_two_turns:
+        raise r.fail("positions.cycle", "a 720° cycle needs a process over two turns — a load "
+                     "with 4 different strokes (a four-stroke indicator diagram) or a diagram "
+                     "over the crank angle to 720°; no load has one (use 360)")
+    return out
+
+
+def _stroke_set(which: str, d, n_strokes: int) -> tuple:
+    """The diagram on the working (0→1), idle (1→0) or both strokes of every turn."""
+    return tuple(d if (which == "both" or (k % 2 == 0) == (which == "working")) else None
+                 for k in range(n_strokes))
+
+
+def _pairs(r: _Reader, value: Any, path: str, signed: bool, hi_x: float):
+    """Pairs ``[x, value]`` with x not decreasing in [0, hi_x]; values ≥ 0 unless signed."""
+    diag = r.array(value, path, minlen=2)
+    pairs: list[tuple[float, float]] = []
+    for m, pr in enumerate(diag):
+        pp = r.array(pr, f"{path}[{m}]", 2)
+        x = r.number(pp[0], f"{path}[{m}][0]", lo=0.0, hi=hi_x)
+        v = r.number(pp[1], f"{path}[{m}][1]", lo=-MAX_LOAD if signed else 0.0, hi=MAX_LOAD)
+        if pairs and x < pairs[-1][0]:
+            raise r.fail(f"{path}[{m}][0]",
+                         f"the abscissae must not decrease (got {x} after {pairs[-1][0]})")
+        pairs.append((x, v))
+    return tuple(pairs)
+
+
+def _covers(r: _Reader, d, path: str, end: float, what: str) -> None:
+    if d[0][0] != 0.0 or abs(d[-1][0] - end) > 1e-12 * max(end, 1.0):
+        raise r.fail(path, f"the diagram does not cover {what}: it runs from {d[0][0]:g} to "
+                     f"{d[-1][0]:g}")

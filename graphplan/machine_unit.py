@@ -78,11 +78,20 @@ class MachineUnit:
     simulation : Simulation
         Of ``Iп + I_rotor + I_m`` with constant Mд (energy form) and, in RK4, the motor's
         linear characteristic of its rated slip.
+
+    A machine whose loads drive it — an engine, the gas doing positive work over the cycle
+    — has no motor (``motor`` is None): its constant moment ``flywheel.M_d`` is then the
+    consumer's resistance Mс < 0, and ``power_W`` the engine's mean power |Mс|·ω1·η.
     """
+
+    @property
+    def driven_by_loads(self) -> bool:
+        """The loads drive the crank (an engine): the constant moment resists."""
+        return self.motor is None
 
     model: DynamicModel
     flywheel: Flywheel
-    motor: MotorChoice
+    motor: MotorChoice | None
     power_W: float
     mounted: FlywheelSize
     shaft: str
@@ -102,8 +111,18 @@ class MachineUnit:
 
     def to_json(self) -> dict:
         """The ``"dynamics"`` entry of the JSON report (SI units)."""
-        fw, mc, mo = self.flywheel, self.motor, self.motor.motor
+        fw, mc = self.flywheel, self.motor
+        motor = None if mc is None else {
+            "type": mc.motor.type, "series": mc.series,
+            "power_W": mc.motor.power_w, "sync_rpm": mc.motor.sync_rpm,
+            "rated_rpm": mc.motor.rated_rpm,
+            "start_torque_ratio": mc.motor.start_torque_ratio,
+            "max_torque_ratio": mc.motor.max_torque_ratio,
+            "rotor_inertia": mc.motor.inertia_kg_m2, "reserve": mc.reserve,
+        }
         return {
+            "driven_by": "loads" if mc is None else "motor",
+            "cycle_deg": math.degrees(self.model.period),
             "delta_target": fw.delta,
             "delta_simulated": self.simulation.delta_actual,
             "delta_simulated_motor": float(self.simulation.cycle_delta[-1]),
@@ -124,14 +143,8 @@ class MachineUnit:
             "tangents": {"psi_max_deg": fw.psi_max, "psi_min_deg": fw.psi_min,
                          "k_mm": fw.k_mm, "l_mm": fw.l_mm, "kl_mm": fw.segment_mm,
                          "flat": fw.tangents_flat},
-            "motor": {
-                "type": mo.type, "series": mc.series,
-                "power_W": mo.power_w, "sync_rpm": mo.sync_rpm, "rated_rpm": mo.rated_rpm,
-                "start_torque_ratio": mo.start_torque_ratio,
-                "max_torque_ratio": mo.max_torque_ratio,
-                "rotor_inertia": mo.inertia_kg_m2, "reserve": mc.reserve,
-            },
-            "gear_ratio": mc.u,
+            "motor": motor,
+            "gear_ratio": None if mc is None else mc.u,
             "flywheel": {"shaft": self.shaft, "shape": self.mounted.shape,
                          "inertia": self.mounted.inertia, "D": self.mounted.D,
                          "b": self.mounted.b, "h": self.mounted.h,
@@ -159,15 +172,20 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
         raise InputError(f"{mech.source}: dynamics.delta is missing (the coefficient of speed "
                          "non-uniformity δ, e.g. delta = 0.1): sheet 3 needs it")
     opts = dyn.get("flywheel", {})
-    intervals = int(dyn.get("intervals", 24))
+    intervals = int(dyn.get("intervals", 24 * round(m.period / (2 * math.pi))))
     size = diagram_size(Page("A1"))  # sheet 3 is A1 whatever the format of sheets 1, 2
     eta = float(dyn.get("efficiency", 1.0))
     # Mд = −Aс(2π)/2π does not depend on the flywheel: the motor is chosen before it
-    power = required_power(work_diagrams(m, intervals, **size).M_d, m.omega1, eta)
-    n1 = m.omega1 * 30.0 / math.pi
-    choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
-                          sync_rpm=dyn.get("motor_speed"))
-    I_rotor = choice.J_reduced or 0.0
+    M_const = work_diagrams(m, intervals, **size).M_d
+    choice = None
+    if M_const > 0:  # a motor drives the machine
+        power = required_power(M_const, m.omega1, eta)
+        n1 = m.omega1 * 30.0 / math.pi
+        choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
+                              sync_rpm=dyn.get("motor_speed"))
+    else:  # the loads drive it (an engine): its mean effective power, no motor
+        power = -M_const * m.omega1 * eta
+    I_rotor = 0.0 if choice is None else (choice.J_reduced or 0.0)
     shaft = str(opts.get("shaft", "crank"))
     shape = str(opts.get("shape", "rim"))
     b_ratio = float(opts.get("b_ratio", 0.2))
@@ -175,12 +193,12 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
     density = float(opts.get("density", STEEL))
     fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
                   density=density, I_rotor=I_rotor, **size)
-    u = choice.u if shaft == "motor" else 1.0
+    u = choice.u if (shaft == "motor" and choice is not None) else 1.0
     mounted = flywheel_size(fw.I_m, m.omega1, shape=shape, ratio=u, b_ratio=b_ratio,
                             h_ratio=h_ratio, density=density)
-    slip = 1.0 - choice.motor.rated_rpm / choice.motor.sync_rpm
+    slip = 0.0 if choice is None else 1.0 - choice.motor.rated_rpm / choice.motor.sync_rpm
     sim = simulate(m, fw.I_m + I_rotor, slip=slip if slip > 0 else None, delta=fw.delta)
-    return MachineUnit(m, fw, choice, power, mounted, shaft, sim, eta)
+    return MachineUnit(m, fw, choice, power, mounted, shaft if choice else "crank", sim, eta)
 
 
 __all__ = ["MachineUnit", "machine_unit"]

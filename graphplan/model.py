@@ -29,6 +29,7 @@ Sign conventions (said once here and in ``docs/variant-format.md``):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
@@ -191,13 +192,55 @@ class LinkProps:
 
 @dataclass(frozen=True, slots=True)
 class Resistance:
-    """Technological resistance: a force on a slider or a moment on a rocker.
+    """A known external load of the variant: a force on a point of a link or a couple on a
+    link (the technological resistance of a press, the gas force on a piston, the moment on
+    a crusher's jaw …), given by its diagram.
 
-    ``diagram`` lists ``(travel fraction, load fraction)`` pairs: travel as a
-    fraction of the working stroke from its start, load as a fraction of
-    ``maximum`` (N or N·m). The load acts only during the working stroke and
-    always opposes the motion (the slider's velocity along its guide, or the
-    rocker's ω).
+    The defaults are the classical technological resistance: on the output link, over the
+    output's working stroke, always opposing the motion.
+
+    Attributes
+    ----------
+    kind : str
+        ``"force"`` or ``"moment"``.
+    link : str
+        The loaded (moving) link.
+    point : str | None
+        Point of application of a force.
+    maximum : float
+        Scale of the diagram's values: the load is ``value·maximum − offset`` (N or N·m).
+    diagram : tuple of (x, value) pairs
+        The diagram of the first loaded stroke (kept for the readers of one diagram).
+    name : str | None
+        Its name on the sheets (``Q``, ``Fг``, ``Mс`` … by default).
+    sense : str
+        ``"resists"`` — the value is a size and the load opposes the motion (of the
+        slider along its frame guide, of the point, or the link's rotation);
+        ``"drives"`` — a size along the motion; ``"diagram"`` — the value's sign gives
+        the direction: along ``angle`` (or the travel's direction for a force on a
+        slider), CCW for a moment.
+    over : str
+        ``"stroke"``: x is the position of ``travel_link`` as a fraction of its stroke, 0 at
+        its start dead centre, 1 at the end one; ``"crank"``: x is the crank's travel
+        (rad) from the cycle's origin.
+    strokes : tuple
+        ``"stroke"``: one diagram (a tuple of pairs) or ``None`` (no load) per stroke of
+        the cycle, in order from ``travel_link``'s first start dead centre at or after
+        ``phase`` (2 strokes per turn: 0→1, 1→0, …). ``"crank"``: one diagram over
+        0 … the cycle (rad).
+    angle : float | None
+        Absolute direction (rad) of a force in the ``"diagram"`` sense; None: the
+        direction of the travel (x growing) of the slider it acts on.
+    travel_link : str | None
+        The link whose travel is the abscissa (None: the output link).
+    working : int
+        +1: x grows with the travel link's coordinate; −1: x falls.
+    phase : float
+        Crank travel (rad) from the cycle's origin before which the stroke list does not
+        start (the firing interval of a second cylinder).
+    offset : float
+        Subtracted from ``value·maximum``: the ambient pressure times the piston area of
+        an indicator diagram (N).
     """
 
     kind: str  # "force" | "moment"
@@ -205,6 +248,21 @@ class Resistance:
     point: str | None
     maximum: float
     diagram: tuple[tuple[float, float], ...]
+    name: str | None = None
+    sense: str = "resists"
+    over: str = "stroke"
+    strokes: tuple = ()
+    angle: float | None = None
+    travel_link: str | None = None
+    working: int = 0
+    phase: float = 0.0
+    offset: float = 0.0
+
+    def stroke_diagrams(self, n_strokes: int) -> tuple:
+        """The diagram (or None) of each of ``n_strokes`` strokes of the cycle."""
+        if self.strokes:
+            return tuple(self.strokes)
+        return (self.diagram,) + (None,) * (n_strokes - 1)
 
 
 @dataclass(frozen=True, slots=True)
@@ -226,6 +284,12 @@ class Positions:
     first: str | float = "start"  # "start" | "end" dead centre, or an absolute angle (rad)
     number_from: int = 1
     extra: tuple[ExtraPosition, ...] = ()
+    cycle: int = 360  # degrees of crank per cycle: 360, or 720 (a four-stroke process)
+
+    @property
+    def period(self) -> float:
+        """The cycle in radians of crank travel (2π or 4π)."""
+        return math.radians(self.cycle)
 
 
 @dataclass(frozen=True, slots=True)

@@ -37,6 +37,7 @@ class Written:
 
     variant: Path
     files: tuple[Path, ...]
+    warnings: tuple[str, ...] = ()
 
 
 def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
@@ -112,11 +113,12 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
         drawing = {**mech.settings.get("drawing", {}), "format": page}
         mech = replace(mech, settings={**mech.settings, "drawing": drawing})
     lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
-    texts = project_files(analyze(mech), lang=lang, precision=precision, formats=formats,
+    analysis = analyze(mech)
+    texts = project_files(analysis, lang=lang, precision=precision, formats=formats,
                           dpi=dpi)
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise InputError(f"{out}: the output must be a directory")
     written = tuple(write_atomic(out / name, text, protect=(variant,))
                     for name, text in texts.items())
-    return Written(variant, written)
+    return Written(variant, written, analysis.warnings)

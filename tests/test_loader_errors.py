@@ -513,7 +513,7 @@ CASES = [
     ("links-props-not-table", P, [set_("links.2", 129)],
      "links.2", "expected a table (got int)"),
     ("links-unknown-key", P, [set_("links.2.masse", 1)],
-     "links.2.masse", "unknown key (expected one of: centre, inertia, mass)"),
+     "links.2.masse", "unknown key (expected one of: centre, inertia, mass, weight)"),
     ("mass-negative", P, [set_("links.3.mass", -1250)],
      "links.3.mass", "must be >= 0 (got -1250)"),
     ("mass-string", P, [set_("links.3.mass", "1250 kg")],
@@ -556,35 +556,74 @@ CASES = [
      "loads", "expected an array (got table)"),
     ("load-not-table", P, [set_("loads[0]", 600000)], "loads[0]", "expected a table (got int)"),
     ("load-unknown-key", P, [set_("loads[0].maximum", 1)],
-     "loads[0].maximum", "unknown key (expected one of: diagram, kind, link, max, point)"),
+     "loads[0].maximum", "unknown key (expected one of: angle, bore, diagram, kind, link, max, "
+     "name, over, p_ambient, p_max, phase, point, pressure_unit, sense, stroke, strokes, travel, "
+     "travel_link, value, working)"),
     ("load-missing-max", P, [drop("loads[0].max")], "loads[0].max", "missing required key"),
     ("load-missing-diagram", P, [drop("loads[0].diagram")],
-     "loads[0].diagram", "missing required key"),
+     "loads[0].diagram", "missing required key: 'diagram'"),
     ("load-kind", P, [set_("loads[0].kind", "torque")],
      "loads[0].kind", "expected one of 'force', 'moment' (got 'torque')"),
     ("load-link-unknown", P, [set_("loads[0].link", "7")],
-     "loads[0].link", "link '7' is not defined before this"),
+     "loads[0].link", "link '7' is not a link of this mechanism (moving links: 1, 2, 3)"),
     ("load-on-frame", P, [set_("loads[0].link", "4")],
      "loads[0].link", "a load acts on a moving link, not the frame"),
     ("force-without-point", P, [drop("loads[0].point")],
      "loads[0].point", "missing required key (the point the force acts at)"),
     ("force-point-not-on-link", P, [set_("loads[0].point", "A")],
      "loads[0].point", "point 'A' is not on link '3' (its points: B, S3)"),
-    ("force-on-rod", P, [set_("loads[0].link", "2"), set_("loads[0].point", "S2")],
-     "loads[0].link", "a resistance force needs a slider moving on a frame guide; "
-                      "link '2' is not one"),
+    # loads act on any link now (issue 17); what is still refused:
+    ("force-on-rod-no-direction", P,
+     [set_("loads[0].link", "2"), set_("loads[0].point", "S2"), set_("loads[0].sense", "diagram")],
+     "loads[0].angle", "missing: the direction of the force (degrees) — link '2' does not "
+                       "slide on a frame guide to give one"),
     ("moment-with-point", P, [set_("loads[0].kind", "moment")],
      "loads[0].point", "a moment load has no point"),
     ("moment-on-slider", P, [set_("loads[0].kind", "moment"), drop("loads[0].point")],
-     "loads[0].link", "a resisting moment needs a rocker pivoted on the frame; "
-                      "link '3' is not one"),
-    ("moment-on-coupler", F,
-     [set_("loads", [{"kind": "moment", "link": "2", "max": 10, "diagram": [[0, 1], [1, 1]]}])],
-     "loads[0].link", "a resisting moment needs a rocker pivoted on the frame"),
-    ("load-not-on-output", F,
-     [set_("loads", [{"kind": "moment", "link": "1", "max": 10, "diagram": [[0, 1], [1, 1]]}])],
-     "loads[0].link", "the resistance acts on the output link ('3'), whose stroke defines "
-                      "its diagram (got '1')"),
+     "loads[0].link", "a couple on link '3', which only translates on a frame guide, does "
+                      "no work"),
+    ("load-sense", P, [set_("loads[0].sense", "helps")],
+     "loads[0].sense", "expected one of 'resists', 'drives', 'diagram' (got 'helps')"),
+    ("load-diagram-short-of-stroke", P, [set_("loads[0].diagram", [[0.0, 0.0], [0.9, 1.0]])],
+     "loads[0].diagram", "the diagram does not cover the stroke (travel 0 … 1): it runs from "
+                         "0 to 0.9"),
+    ("load-diagram-late-start", P, [set_("loads[0].diagram", [[0.1, 0.0], [1.0, 1.0]])],
+     "loads[0].diagram", "the diagram does not cover the stroke (travel 0 … 1): it runs from "
+                         "0.1 to 1"),
+    ("load-crank-diagram-short", P,
+     [set_("loads[0].over", "crank"), set_("loads[0].diagram", [[0, 1.0], [300, 1.0]])],
+     "loads[0].diagram", "the diagram does not cover the cycle (crank angle 0 … 360°): it "
+                         "runs from 0 to 300"),
+    ("load-strokes-count", P,
+     [drop("loads[0].diagram"), set_("loads[0].strokes", [[[0, 1], [1, 1]]] * 4)],
+     "loads[0].strokes", "expected 2 diagrams, one per stroke of the 360° cycle (got 4) "
+                         "(4 strokes: a four-stroke cycle needs positions.cycle = 720)"),
+    ("cycle-720-without-process", P, [set_("positions.cycle", 720)],
+     "positions.cycle", "a 720° cycle needs a process over two turns"),
+    ("cycle-540", P, [set_("positions.cycle", 540)],
+     "positions.cycle", "expected 360 (one turn) or 720"),
+    ("load-diagram-and-strokes", P, [set_("loads[0].strokes", [[[0, 1], [1, 1]], []])],
+     "loads[0].diagram", "give either 'diagram'"),
+    ("load-value-and-max", P, [set_("loads[0].value", 10)],
+     "loads[0].max", "a constant load is given by 'value' alone"),
+    ("gas-on-rod", P, [set_("loads", [{"link": "2", "point": "S2", "bore": 80,
+                                        "diagram": [[0, 1], [1, 1]]}])],
+     "loads[0].link", "a gas force (bore) acts on a piston sliding in a frame guide"),
+    ("gas-with-max", P, [set_("loads[0].bore", 80)],
+     "loads[0].max", "a gas force is p·πD²/4"),
+    ("pressure-unit", P, [drop("loads[0].max"), set_("loads[0].bore", 80),
+                          set_("loads[0].pressure_unit", "psi")],
+     "loads[0].pressure_unit", "expected one of 'Pa', 'kPa', 'MPa', 'bar', 'atm', 'kgf/cm2'"),
+    ("load-angle-resisting", P, [set_("loads[0].angle", 90)],
+     "loads[0].angle", "the direction 'angle' goes with a force of sense = \"diagram\""),
+    ("load-name-twice", P, [set_("loads[0].name", "Q"),
+                            set_("loads[1]", {"name": "Q", "kind": "moment", "link": "2",
+                                              "value": 1.0})],
+     "loads[1].name", "name 'Q' is already used by another load"),
+    ("weight-and-mass", P, [set_("links.2.weight", 100)],
+     "links.2.weight", "give either 'mass' (kg) or 'weight' (N), not both"),
+    ("crank-rpm-and-omega", P, [set_("crank.omega", 10)],
+     "crank.omega", "give the crank speed once"),
     ("load-max-negative", P, [set_("loads[0].max", -600000)],
      "loads[0].max", "must be >= 0 (got -600000)"),
     ("load-max-above-limit", P, [set_("loads[0].max", 1e13)],
@@ -598,7 +637,7 @@ CASES = [
     ("load-diagram-force-negative", P, [set_("loads[0].diagram[1]", [0.5, -0.1])],
      "loads[0].diagram[1][1]", "must be >= 0.0 (got -0.1)"),
     ("load-diagram-decreasing", P, [set_("loads[0].diagram[2]", [0.5, 1.0])],
-     "loads[0].diagram[2][0]", "travel fractions must not decrease (got 0.5 after 0.88513)"),
+     "loads[0].diagram[2][0]", "the abscissae must not decrease (got 0.5 after 0.88513)"),
     # positions
     ("positions-not-table", P, [set_("positions", 8)], "positions", "expected a table (got int)"),
     ("count-zero", P, [set_("positions.count", 0)],
@@ -811,8 +850,17 @@ def test_crank_slider_rod_shorter_than_crank_plus_offset():
     assert not isinstance(exc, g.SingularPoseError)
     m = re.fullmatch(re.escape(f"{SRC}: dyad RRP(2-3) cannot be assembled at φ = ")
                      + r"([0-9.]+)°: the distance from A to the guide, ([0-9.]+) m, "
-                     + re.escape("exceeds lAB = 0.1 m"), msg)
+                     + re.escape("exceeds lAB = 0.1 m")
+                     + r"; the crank cannot make a full turn: the chain closes only for φ "
+                     + r"from ([0-9.]+)° to ([0-9.]+)° \(([0-9.]+)° of turn\), so link 1 is "
+                     + r"a rocker, not a crank \(Grashof\) — shorten crank.length or "
+                     + r"lengthen the dyad's links", msg)
     assert m, msg
+    # the reach, said with the likely fix: it closes where 30 − 80·cos φ ≤ 100, i.e.
+    # cos φ ≥ −7/8: from 360° − 151.04° = 208.96° through 0° to 151.04°
+    lo, hi = float(m.group(3)), float(m.group(4))
+    assert lo == pytest.approx(360 - math.degrees(math.acos(-70 / 80)), abs=0.01)
+    assert hi == pytest.approx(math.degrees(math.acos(-70 / 80)), abs=0.01)
     phi, dist = float(m.group(1)), float(m.group(2))
     assert 90 < phi < 180  # the crank turns ccw from 0°: it first fails before 180°
     assert 0.1 < dist <= 0.11

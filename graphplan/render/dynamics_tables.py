@@ -76,12 +76,15 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
     """The hand calculation of sheet 3 (see the module docstring)."""
     t = T[lang]
     ru = lang == "ru"
-    fw, wd, mc, mo, s = u.flywheel, u.flywheel.work, u.motor, u.motor.motor, u.simulation
+    fw, wd, mc, s = u.flywheel, u.flywheel.work, u.motor, u.simulation
+    mo = None if mc is None else mc.motor
     w = fw.omega
+    n1 = w * 30.0 / math.pi
+    cyc = "4π" if u.model.period > 7.0 else "2π"  # a four-stroke process: 720°
     J, Nm, mm = ("Дж", "Н·м", "мм") if ru else ("J", "N·m", "mm")
     graph_pct = (fw.I_m_graph / fw.I_m - 1) * 100 if fw.I_m else 0.0
     L = [f"# {t['title']}", "", f"## {t['data']}", "",
-         f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(mc.crank_rpm, 5)} "
+         f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(n1, 5)} "
          f"{'об/мин' if ru else 'rpm'}; δ = {fw.delta:g}; η = "
          f"{u.efficiency:g}",
          f"- Iкр = {fmt(fw.I_const, 4)} кг·м²",
@@ -89,7 +92,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
          "", f"## {t['pos']}", ""]
     L += _table(t["cols"], position_rows(u))
     L += ["", f"## {t['int']}", "",
-          f"- Kφ = 2π/L = 2π/{fmt(wd.length_mm)} = {fmt(wd.Kphi, 5)} рад/{mm}",
+          f"- Kφ = {cyc}/L = {cyc}/{fmt(wd.length_mm)} = {fmt(wd.Kphi, 5)} рад/{mm}",
           f"- KM = {fmt(wd.KM, 4)} {Nm}/{mm}; H = {fmt(wd.H)} {mm}",
           f"- KA = Kφ·KM·H = {fmt(wd.Kphi, 5)}·{fmt(wd.KM, 4)}·{fmt(wd.H)} = "
           f"{fmt(wd.KA, 5)} {J}/{mm}",
@@ -101,11 +104,11 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
                      fmt(float(wd.M_mid[i]), 5), f"{wd.yM_mm[i]:.2f}", f"{wd.yA_mm[i + 1]:.2f}"])
     L += _table(t["icols"], rows)
     L += ["",
-          f"- Aс(2π) = yA·KA = {wd.yA_mm[-1]:.2f}·{fmt(wd.KA, 5)} = "
+          f"- Aс({cyc}) = yA·KA = {wd.yA_mm[-1]:.2f}·{fmt(wd.KA, 5)} = "
           f"{fmt(float(wd.A_c_graph[-1]), 6)} {J} "
           f"({'точно' if ru else 'exact'} {fmt(float(wd.A_c[-1]), 6)}, "
           f"{'погрешность' if ru else 'error'} {wd.error * 100:.2f} %)",
-          f"- Mд = −Aс(2π)/2π = {fmt(wd.M_d_graph, 6)} {Nm} "
+          f"- Mд = −Aс({cyc})/{cyc} = {fmt(wd.M_d_graph, 6)} {Nm} "
           f"({'точно' if ru else 'exact'} {fmt(fw.M_d, 6)})",
           f"- ΔT = Aд + Aс; ΔTmax − ΔTmin = {fmt(fw.dT_max, 6)} {J}", "",
           f"## {t['fly']}", "",
@@ -123,13 +126,19 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"({fw.difference_pct:+.3f} %); "
           f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
           f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)",
-          "", f"## {t['motor']}", "",
-          f"- Pс = |Mд|·ω1/η = {fmt(fw.M_d, 6)}·{fmt(w, 5)}/{u.efficiency:g} = "
-          f"{fmt(u.power_W, 6)} {'Вт' if ru else 'W'}",
-          f"- {mc.reason}",
-          f"- J_рот = {fmt(mo.inertia_kg_m2, 4) if mo.inertia_kg_m2 is not None else t['none']}"
-          + (f", J_рот·u² = {fmt(fw.I_rotor, 5)} кг·м²" if mo.inertia_kg_m2 is not None else ""),
-          "", f"## {t['rim']}", ""]
+          "", f"## {t['motor']}", ""]
+    if mo is None:  # driven by its loads (an engine): the constant moment is Mс
+        L += [f"- {'нагрузки совершают положительную работу за цикл (двигатель): постоянный момент — момент сопротивления потребителя Mс' if ru else 'the loads do positive work over the cycle (an engine): the constant moment is the consumer’s resistance Mс'} = {fmt(fw.M_d, 6)} {Nm}",
+              f"- P = |Mс|·ω1·η = {fmt(u.power_W, 6)} {'Вт' if ru else 'W'}"]
+    else:
+        L += [f"- Pс = |Mд|·ω1/η = {fmt(fw.M_d, 6)}·{fmt(w, 5)}/{u.efficiency:g} = "
+              f"{fmt(u.power_W, 6)} {'Вт' if ru else 'W'}",
+              f"- {mc.reason}",
+              f"- J_рот = "
+              f"{fmt(mo.inertia_kg_m2, 4) if mo.inertia_kg_m2 is not None else t['none']}"
+              + (f", J_рот·u² = {fmt(fw.I_rotor, 5)} кг·м²"
+                 if mo.inertia_kg_m2 is not None else "")]
+    L += ["", f"## {t['rim']}", ""]
     m = u.mounted
     L += [f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} кг·м², "
           f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
@@ -140,8 +149,9 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"- ω(φ) = √(2(T0 + ΔT)/(Iп + Iрот + Iм)): ωmax = {fmt(s.omega_max, 5)}, "
           f"ωmin = {fmt(s.omega_min, 5)}, δ = (ωmax − ωmin)/ωср = {s.delta_actual:.5f} "
           f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})",
-          f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
-          f"(s = {mo.slip:.3f}): δ = {float(s.cycle_delta[-1]):.5f}", ""]
+          (f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
+           f"(s = {mo.slip:.3f}): δ = {float(s.cycle_delta[-1]):.5f}" if mo is not None else
+           f"- RK4: δ = {float(s.cycle_delta[-1]):.5f}"), ""]
     return "\n".join(L)
 
 
