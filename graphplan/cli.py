@@ -9,7 +9,8 @@ a student's calculation checked figure by figure (:mod:`graphplan.checking`);
 pages (:mod:`graphplan.teaching`).
 
 A thin layer over the library: every :class:`GraphplanError` becomes one line
-on standard error and exit status 2 (a traceback only with ``--debug``).
+on standard error and exit status 2 (a traceback only with ``--debug``); the exit
+codes and the console encodings are :mod:`graphplan.console`'s.
 With no variant file, the bundled press example is used.
 """
 
@@ -117,7 +118,14 @@ COMMANDS = {"analyze": _analyze, "sheets": _sheets, "check": check_command.run,
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit status (0 ok, 2 on a graphplan error)."""
+    """Run the command line; return the exit status (:data:`graphplan.console.EXIT_CODES`).
+
+    0 done, 1 faults found by ``check``, 2 bad input, 3 a file could not be read or
+    written, 4 an internal error (a bug), 130 interrupted.
+    """
+    from . import console
+
+    console.prepare_streams()  # never a UnicodeEncodeError on a cp1251/cp866/ASCII console
     args = _parser().parse_args(argv)
     try:
         return COMMANDS[args.command](args)
@@ -125,6 +133,22 @@ def main(argv: list[str] | None = None) -> int:
         if args.debug:
             raise
         print(f"graphplan: error: {exc}", file=sys.stderr)
-        return 2
+        return console.EXIT_BAD_INPUT
     except BrokenPipeError:  # pragma: no cover - `graphplan analyze | head`
-        return 0
+        return console.EXIT_OK
+    except OSError as exc:
+        if args.debug:
+            raise
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"graphplan: error: {where}{exc.strerror or exc}", file=sys.stderr)
+        return console.EXIT_FILE_ERROR
+    except KeyboardInterrupt:
+        print("graphplan: interrupted", file=sys.stderr)
+        return console.EXIT_INTERRUPTED
+    except Exception as exc:
+        if args.debug:
+            raise
+        reason = " ".join(f"{type(exc).__name__}: {exc}".split())[:300]
+        print(f"graphplan: internal error (a bug, please report it; --debug shows where): "
+              f"{reason}", file=sys.stderr)
+        return console.EXIT_INTERNAL

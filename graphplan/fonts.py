@@ -213,7 +213,8 @@ def find_system_font(family: str) -> Path | None:
             entry = font_manager.ttfFontProperty(font_manager.get_font(str(path)))
         except Exception:  # not a font matplotlib can read
             continue
-        if entry.name == family and (best is None or (entry.style, entry.weight) == ("normal", 400)):
+        regular = (entry.style, entry.weight) == ("normal", 400)
+        if entry.name == family and (best is None or regular):
             best = path
     return best
 

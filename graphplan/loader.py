@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import InputError
+from .files import decode_text
 from .model import (
     DYAD_KINDS,
     JOINT_COUNT,
@@ -233,14 +234,12 @@ def load(path: str | Path) -> Mechanism:
     path = Path(path)
     source = str(path)
     try:
-        text = path.read_bytes().decode("utf-8")
+        raw = path.read_bytes()
     except FileNotFoundError:
         raise InputError(f"{source}: file not found") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"{source}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
     except OSError as exc:
         raise InputError(f"{source}: cannot read ({exc.strerror})") from None
-    return loads(text, source=source)
+    return loads(decode_text(raw, source), source=source)  # BOM, CRLF, "save as UTF-8"
 
 
 def loads(text: str, source: str = "<string>") -> Mechanism:

@@ -28,6 +28,7 @@ from importlib import resources
 from pathlib import Path
 
 from .errors import GraphplanError, InputError
+from .files import decode_text
 
 __all__ = [
     "DEFAULT_SERIES",
@@ -189,7 +190,7 @@ def load_catalogue(series: str = DEFAULT_SERIES, *,
     """
     file = Path(path) if path is not None else catalogue_path(series)
     try:
-        text = file.read_text(encoding="utf-8")
+        text = decode_text(file.read_bytes(), str(file))
     except OSError as exc:
         raise InputError(f"{file}: cannot read the motor catalogue ({exc.strerror})") from None
     lines = [

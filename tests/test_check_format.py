@@ -110,6 +110,6 @@ def test_missing_and_unreadable_files(tmp_path):
     with pytest.raises(StudentFileError, match="file not found"):
         load_student(tmp_path / "none.toml")
     bad = tmp_path / "bad.toml"
-    bad.write_bytes(b"\xff\xfe[work]")
+    bad.write_bytes(b"\x80\x81[work]")  # (a BOM of UTF-16 would be read as UTF-16)
     with pytest.raises(StudentFileError, match="not UTF-8"):
         load_student(bad)

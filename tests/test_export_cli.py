@@ -15,7 +15,8 @@ import pytest
 
 ezdxf = pytest.importorskip("ezdxf")
 pypdf = pytest.importorskip("pypdf")
-pytest.importorskip("cairosvg")
+pytest.importorskip("typst")
+pytest.importorskip("resvg_py")
 
 from graphplan.cli import main  # noqa: E402
 from graphplan.files import bundled_example  # noqa: E402

@@ -21,7 +21,8 @@ import numpy as np
 import pytest
 
 ezdxf = pytest.importorskip("ezdxf")
-cairosvg = pytest.importorskip("cairosvg")
+pytest.importorskip("typst")
+pytest.importorskip("resvg_py")
 pypdf = pytest.importorskip("pypdf")
 
 from graphplan import exports  # noqa: E402
@@ -29,7 +30,7 @@ from graphplan.errors import GraphplanError, InputError, LayoutError  # noqa: E4
 from graphplan.exports import dxf as dxf_mod  # noqa: E402
 from graphplan.exports import extra  # noqa: E402
 from graphplan.exports.pdf import pdf_bytes  # noqa: E402
-from graphplan.exports.png import png_bytes, png_size  # noqa: E402
+from graphplan.exports.png import png_bytes, png_size, svg_to_png_bytes  # noqa: E402
 from graphplan.exports.svg_paths import (  # noqa: E402
     TOLERANCE,
     figure_paths,
@@ -459,7 +460,7 @@ def _figure_masks(name, fid, x, y, w, h, px_per_mm=5):
         render_box=BoundingBox2d([(0, 0), A1]))
 
     def dark(text):
-        png = cairosvg.svg2png(bytestring=text.encode("utf-8"), dpi=dpi, background_color="white")
+        png = svg_to_png_bytes(text, dpi)
         return np.asarray(Image.open(io.BytesIO(png)).convert("L")) < 160
 
     a, b = dark(alone), dark(drawn)
@@ -472,7 +473,7 @@ def _figure_masks(name, fid, x, y, w, h, px_per_mm=5):
 
 @pytest.mark.parametrize("name", ["press-1", "press-2", "shaper-1"])
 def test_dxf_figures_are_the_pictures_as_vectors(name):
-    """The figure's layer drawn by ezdxf covers what CairoSVG draws of the picture."""
+    """The figure's layer drawn by ezdxf covers what resvg draws of the picture."""
     from PIL import Image, ImageFilter
 
     figures = [f for d in svg_layers(name).values() for f in d.figures]
@@ -710,11 +711,12 @@ def test_write_exports_writes_every_format_atomically(tmp_path):
 
 @pytest.mark.parametrize("module, fmt, call", [
     ("ezdxf", "dxf", lambda s: dxf_mod.dxf_bytes(s)),
-    ("cairosvg", "pdf", lambda s: pdf_bytes(s)),
-    ("cairosvg", "png", lambda s: png_bytes(s, 10)),
+    ("typst", "pdf", lambda s: pdf_bytes(s)),
+    ("resvg_py", "png", lambda s: png_bytes(s, 10)),
     ("ezdxf", "dxf", lambda s: exports.sheet_files({"s": s}, ["svg", "dxf"])),
 ])
 def test_a_missing_extra_is_one_line_naming_it(monkeypatch, module, fmt, call):
+    monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     monkeypatch.setitem(sys.modules, module, None)  # `import module` now fails
     with pytest.raises(extra.MissingExtraError) as err:
         call(sheet("synthetic"))
@@ -731,7 +733,61 @@ def test_a_missing_cairo_library_is_reported_too(monkeypatch):
 
     monkeypatch.setattr(extra.importlib, "import_module", no_cairo)
     with pytest.raises(extra.MissingExtraError) as err:
-        exports.check_formats(["svg", "png"])
+        exports.check_formats(["svg", "png"], engine="cairo")
     assert "\n" not in str(err.value) and "cairo" in str(err.value)
     assert "graphplan[export]" in str(err.value)
     exports.check_formats(["svg"])  # SVG needs no extra
+
+
+# ------------------------------------------------------------------ engines
+
+def test_engines_are_chosen_by_name_or_environment(monkeypatch):
+    monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
+    assert extra.engine_for("pdf") == "typst" and extra.engine_for("png") == "resvg"
+    assert extra.engine_for("dxf") == ""
+    monkeypatch.setenv(extra.ENGINE_ENV, "cairo")
+    assert extra.engine_for("pdf") == "cairo" and extra.package_for("png") == "cairosvg"
+    assert extra.engine_for("pdf", "typst") == "typst"  # the argument wins
+    with pytest.raises(InputError, match="engine") as err:
+        extra.engine_for("pdf", "ghostscript")
+    assert "\n" not in str(err.value)
+
+
+def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(monkeypatch, tmp_path):
+    # the same bytes whatever the machine has: typst is given the bundled fonts only
+    from graphplan import fonts as fonts_mod
+
+    monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
+    s, text = sheet("press-1"), svg_text("press-1")
+    seen = pdf_bytes(s, text)
+    monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(tmp_path / "nowhere"))
+    assert pdf_bytes(s, text) == seen
+    names = {base.split("+")[-1] for base, _ in _fonts(pypdf.PdfReader(io.BytesIO(seen)).pages[0])}
+    assert names <= {"osifont", "DejaVuSans", "DejaVuSansMono"}, names
+
+
+def test_the_png_is_the_same_pixels_without_system_fonts(monkeypatch, tmp_path):
+    from graphplan import fonts as fonts_mod
+
+    monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
+    text = svg_text("press-2")
+    seen = svg_to_png_bytes(text, 15)
+    monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(tmp_path / "nowhere"))
+    assert svg_to_png_bytes(text, 15) == seen
+
+
+def _cairo_or_skip():
+    try:
+        extra.require_format("pdf", "cairo")
+    except extra.MissingExtraError as exc:
+        pytest.skip(str(exc))
+
+
+def test_the_cairo_engine_stays_an_option():
+    _cairo_or_skip()
+    s, text = sheet("press-2"), svg_text("press-2")
+    reader = pypdf.PdfReader(io.BytesIO(pdf_bytes(s, text, engine="cairo")))
+    box = reader.pages[0].mediabox
+    assert float(box.width) * 25.4 / 72 == pytest.approx(A1[0], abs=0.1)
+    assert reader.metadata["/Creator"] == "graphplan" and "/CreationDate" not in reader.metadata
+    assert png_bytes(s, 20, text, engine="cairo").startswith(b"\x89PNG")

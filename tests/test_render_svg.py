@@ -222,7 +222,7 @@ def test_duplicate_ids_are_refused():
 
 
 def test_png_preview_is_not_blank_and_has_the_sheet_aspect(tmp_path):
-    pytest.importorskip("cairosvg")
+    pytest.importorskip("resvg_py")
     Image = pytest.importorskip("PIL.Image")
     from graphplan.render.raster import svg_to_png
 
@@ -244,13 +244,14 @@ def test_png_preview_is_not_blank_and_has_the_sheet_aspect(tmp_path):
     assert tb_dark > 0.05 * tb.size[0] * tb.size[1]
 
 
-def test_missing_cairosvg_is_a_one_line_error(monkeypatch, tmp_path):
+def test_missing_png_engine_is_a_one_line_error(monkeypatch, tmp_path):
     import sys
 
     from graphplan.render import raster
 
-    monkeypatch.setitem(sys.modules, "cairosvg", None)
-    with pytest.raises(GraphplanError, match="cairosvg") as info:
+    monkeypatch.delenv("GRAPHPLAN_EXPORT_ENGINE", raising=False)
+    monkeypatch.setitem(sys.modules, "resvg_py", None)
+    with pytest.raises(GraphplanError, match="resvg_py") as info:
         raster.svg_to_png("<svg/>", tmp_path / "x.png")
     assert "\n" not in str(info.value)
     assert not (tmp_path / "x.png").exists()

@@ -16,7 +16,6 @@ import sys
 from pathlib import Path
 
 import matplotlib
-import pytest
 
 from graphplan import fonts
 

@@ -21,8 +21,8 @@ from dataclasses import dataclass
 from html import escape
 from pathlib import Path
 
-from ..errors import GraphplanError
-from ..files import write_atomic
+from ..errors import GraphplanError, InputError
+from ..files import decode_text, write_atomic
 
 COLUMNS = ("file", "student", "group", "status", "figures", "ok", "inaccurate", "wrong",
            "findings", "faults", "kinds", "error", "report")
@@ -59,8 +59,8 @@ def is_student_file(path: Path) -> bool:
     reported as broken; a TOML without ``[work]`` — a variant, a class file, any other
     settings — is not a student's and is skipped with a note)."""
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError, ValueError):
+        data = tomllib.loads(decode_text(path.read_bytes(), str(path)))
+    except (tomllib.TOMLDecodeError, InputError, ValueError):
         return True
     except OSError:
         return True

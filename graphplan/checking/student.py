@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..files import decode_text
 from .errors import StudentFileError
 from .quantities import ArmSpec
 
@@ -252,12 +253,8 @@ def load_student(path: str | Path) -> StudentWork:
         raise StudentFileError(f"{source}: is a folder (expected a student file)") from None
     except OSError as exc:
         raise StudentFileError(f"{source}: cannot read ({exc.strerror})") from None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise StudentFileError(f"{source}: not UTF-8 text ({exc.reason} at byte {exc.start})"
-                               ) from None
-    return loads_student(text, path)
+    # a BOM, CRLF line ends; cp1251 and other non-UTF-8 text: "save the file as UTF-8"
+    return loads_student(decode_text(raw, source, StudentFileError), path)
 
 
 def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:

@@ -5,10 +5,12 @@
   and weights, TEXT in a style naming the GOST-like font, vectors only
   (:mod:`graphplan.exports.dxf`, needs ezdxf);
 * ``pdf`` — one page at the true sheet size (A1 841×594 mm), vector, fonts embedded
-  (:mod:`graphplan.exports.pdf`, needs cairosvg);
-* ``png`` — a preview at a chosen dpi (:mod:`graphplan.exports.png`, needs cairosvg).
+  (:mod:`graphplan.exports.pdf`, needs typst);
+* ``png`` — a preview at a chosen dpi (:mod:`graphplan.exports.png`, needs resvg-py).
 
-ezdxf and cairosvg are the ``export`` extra (``pip install graphplan[export]``); they
+ezdxf, typst and resvg-py are the ``export`` extra (``pip install graphplan[export]``),
+wheels for Windows, macOS and Linux that need no system library; CairoSVG, the other
+PDF/PNG engine, is the ``cairo`` extra (:mod:`graphplan.exports.extra`). They
 are imported only when their format is asked for, and a missing one raises
 :class:`MissingExtraError` with a one-line message naming the extra. Call
 :func:`check_formats` before the work starts to fail early.
@@ -25,7 +27,7 @@ from pathlib import Path
 from ..errors import InputError
 from ..files import write_atomic
 from ..sheet import Sheet
-from .extra import EXTRA, PACKAGES, MissingExtraError, require
+from .extra import EXTRA, PACKAGES, MissingExtraError, require_format
 from .png import DEFAULT_DPI, check_dpi
 
 #: Export formats, in the order their files are listed.
@@ -54,15 +56,15 @@ def parse_formats(spec: str | Iterable[str]) -> tuple[str, ...]:
     return tuple(f for f in FORMATS if f in names)
 
 
-def check_formats(formats: Iterable[str]) -> None:
+def check_formats(formats: Iterable[str], engine: str | None = None) -> None:
     """Import the packages the ``formats`` need; MissingExtraError if one is missing."""
     for fmt in formats:
         if fmt in PACKAGES:
-            require(PACKAGES[fmt], fmt)
+            require_format(fmt, engine)
 
 
 def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), *,
-                dpi: float = DEFAULT_DPI) -> dict[str, str | bytes]:
+                dpi: float = DEFAULT_DPI, engine: str | None = None) -> dict[str, str | bytes]:
     """File name → content of every sheet in every format (nothing is written here).
 
     Parameters
@@ -73,6 +75,9 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
         Some of :data:`FORMATS` (e.g. from :func:`parse_formats`).
     dpi : float
         Resolution of the PNG previews.
+    engine : str, optional
+        Engine of the PDF and PNG: None (``$GRAPHPLAN_EXPORT_ENGINE``, else typst and
+        resvg) or ``"cairo"``.
 
     Returns
     -------
@@ -91,7 +96,7 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
     fmts = parse_formats(formats if isinstance(formats, str) else list(formats))
     if "png" in fmts:
         dpi = check_dpi(dpi)
-    check_formats(fmts)
+    check_formats(fmts, engine)
     from ..render.svg import render_svg
     from .dxf import dxf_bytes
     from .pdf import svg_to_pdf_bytes
@@ -106,15 +111,16 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
             elif fmt == "dxf":
                 out[f"{name}.dxf"] = dxf_bytes(sheet)
             elif fmt == "pdf":
-                out[f"{name}.pdf"] = svg_to_pdf_bytes(svg)  # type: ignore[arg-type]
+                out[f"{name}.pdf"] = svg_to_pdf_bytes(svg, engine)  # type: ignore[arg-type]
             else:
-                out[f"{name}.png"] = png_bytes(sheet, dpi, svg_text=svg)
+                out[f"{name}.png"] = png_bytes(sheet, dpi, svg_text=svg, engine=engine)
     return out
 
 
 def write_exports(sheets: Mapping[str, Sheet], out_dir: str | Path,
                   formats: Iterable[str] = ("svg",), *, dpi: float = DEFAULT_DPI,
-                  protect: tuple[Path, ...] = ()) -> tuple[Path, ...]:
+                  protect: tuple[Path, ...] = (), engine: str | None = None
+                  ) -> tuple[Path, ...]:
     """Write every sheet in every format into ``out_dir`` (atomically); the paths written.
 
     ``protect`` lists input files that must never be overwritten (the variant).
@@ -122,7 +128,7 @@ def write_exports(sheets: Mapping[str, Sheet], out_dir: str | Path,
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise InputError(f"{out}: the output must be a directory")
-    files = sheet_files(sheets, formats, dpi=dpi)
+    files = sheet_files(sheets, formats, dpi=dpi, engine=engine)
     return tuple(write_atomic(out / name, data, protect=protect) for name, data in files.items())
 
 

@@ -1,13 +1,22 @@
-"""PDF of a sheet at its true size, vector, fonts embedded: CairoSVG from the sheet's SVG.
+"""PDF of a sheet at its true size, vector, fonts embedded — from wheels alone.
 
 The SVG of a sheet is ``width="841mm" height="594mm"`` (A1), so the one page of its
 PDF is 841×594 mm = 2383.9×1683.8 pt (1 pt = 25.4/72 mm): printed at 100 % it is the
-sheet at 1:1. cairo writes lines and fills as vector paths and the lettering as text in
-subsets of the sheet's fonts (osifont, DejaVu), embedded in the file; the kinematic
-diagrams (nested matplotlib SVG) stay vector too.
+sheet at 1:1. Two engines write it:
 
-The document info holds the title (designation and title of the sheet) and
-"graphplan" as creator, and **no creation date**: the same sheet gives the same bytes.
+* ``typst`` (the default; the ``typst`` wheel, Apache-2.0, no system library on Windows,
+  macOS or Linux): a one-page Typst document whose page is the sheet's size and whose
+  only content is the sheet's SVG, converted by Typst's SVG engine (usvg + svg2pdf):
+  lines and fills stay vector paths, the lettering stays text in subsets of the
+  bundled fonts (osifont, DejaVu; :func:`graphplan.fonts.find_font_file`), embedded.
+  The system's fonts are never consulted, so the PDF is the same bytes everywhere.
+* ``cairo`` (``pip install 'graphplan[cairo]'`` and the cairo C library): CairoSVG,
+  the first engine; cairo finds fonts through fontconfig only, so it letters in
+  osifont only where osifont is installed on the system.
+
+Choose with ``engine=`` or ``$GRAPHPLAN_EXPORT_ENGINE`` (``cairo``). The document
+info holds the title (designation and title of the sheet) and **no date**: the same
+sheet gives the same bytes. See ``docs/exports.md`` for the measured comparison.
 """
 
 from __future__ import annotations
@@ -16,11 +25,20 @@ import re
 from html import unescape
 from pathlib import Path
 
+from .. import fonts
+from ..errors import InputError
 from ..files import write_atomic
 from ..sheet import Sheet
-from .extra import require
+from .extra import engine_for, require
 
 CREATOR = "graphplan"
+
+#: The Typst document: the page is the SVG's size, the SVG fills it, no margin, no date.
+_TYPST_MAIN = b"""#set document(title: sys.inputs.title, author: (), date: none)
+#set page(width: float(sys.inputs.width) * 1mm, height: float(sys.inputs.height) * 1mm,
+          margin: 0pt)
+#image(bytes(sys.inputs.svg), format: "svg", width: 100%, height: 100%)
+"""
 
 
 def _title(svg_text: str) -> str:
@@ -28,17 +46,36 @@ def _title(svg_text: str) -> str:
     return unescape(m.group(1)).strip() if m else ""
 
 
-def svg_to_pdf_bytes(svg_text: str) -> bytes:
-    """One-page PDF of an SVG sheet, at the size its root ``width``/``height`` give.
+def svg_size_mm(svg_text: str) -> tuple[float, float]:
+    """``(width, height)`` in mm from the root ``width="…mm" height="…mm"`` of a sheet."""
+    root = re.search(r"<svg\b[^>]*>", svg_text)
+    sizes = []
+    for key in ("width", "height"):
+        m = re.search(rf'\s{key}="([0-9.]+)mm"', root.group(0)) if root else None
+        if m is None:
+            raise InputError(f"the SVG has no {key} in mm: not a graphplan sheet")
+        sizes.append(float(m.group(1)))
+    return sizes[0], sizes[1]
 
-    Raises
-    ------
-    MissingExtraError
-        If cairosvg (or the cairo library) is not installed.
-    """
-    require("cairosvg", "pdf")
-    require("cairocffi", "pdf")
-    import cairocffi
+
+def font_folders() -> list[str]:
+    """The folders of the bundled fonts of :data:`graphplan.fonts.FONT_CHAIN`."""
+    paths = (fonts.find_font_file(f) for f in fonts.FONT_CHAIN)
+    return sorted({str(p.parent) for p in paths if p is not None})
+
+
+def _typst_pdf(svg_text: str) -> bytes:
+    typst = require("typst", "pdf")
+    width, height = svg_size_mm(svg_text)
+    inputs = {"svg": svg_text, "title": _title(svg_text), "width": repr(width),
+              "height": repr(height)}
+    return typst.compile(_TYPST_MAIN, sys_inputs=inputs, font_paths=font_folders(),
+                         ignore_system_fonts=True, format="pdf")
+
+
+def _cairo_pdf(svg_text: str) -> bytes:
+    require("cairosvg", "pdf", extra="cairo")
+    cairocffi = require("cairocffi", "pdf", extra="cairo")
     from cairosvg.surface import PDFSurface
 
     title = _title(svg_text)
@@ -57,19 +94,35 @@ def svg_to_pdf_bytes(svg_text: str) -> bytes:
     return _Surface.convert(bytestring=svg_text.encode("utf-8"))
 
 
-def pdf_bytes(sheet: Sheet, svg_text: str | None = None) -> bytes:
+def svg_to_pdf_bytes(svg_text: str, engine: str | None = None) -> bytes:
+    """One-page PDF of an SVG sheet, at the size its root ``width``/``height`` give.
+
+    ``engine``: ``"typst"`` (default) or ``"cairo"``; None reads
+    ``$GRAPHPLAN_EXPORT_ENGINE``.
+
+    Raises
+    ------
+    MissingExtraError
+        If the engine's package (or the cairo library) is not installed.
+    """
+    if engine_for("pdf", engine) == "cairo":
+        return _cairo_pdf(svg_text)
+    return _typst_pdf(svg_text)
+
+
+def pdf_bytes(sheet: Sheet, svg_text: str | None = None, *, engine: str | None = None) -> bytes:
     """PDF of ``sheet`` (``svg_text``: its SVG if already rendered)."""
     if svg_text is None:
         from ..render.svg import render_svg
 
         svg_text = render_svg(sheet)
-    return svg_to_pdf_bytes(svg_text)
+    return svg_to_pdf_bytes(svg_text, engine)
 
 
 def write_pdf(sheet: Sheet, path: str | Path, protect: tuple[Path, ...] = (), *,
-              svg_text: str | None = None) -> Path:
+              svg_text: str | None = None, engine: str | None = None) -> Path:
     """Write the PDF of ``sheet`` to ``path`` atomically; returns the path."""
-    return write_atomic(path, pdf_bytes(sheet, svg_text), protect=protect)
+    return write_atomic(path, pdf_bytes(sheet, svg_text, engine=engine), protect=protect)
 
 
-__all__ = ["pdf_bytes", "svg_to_pdf_bytes", "write_pdf"]
+__all__ = ["pdf_bytes", "svg_size_mm", "svg_to_pdf_bytes", "write_pdf"]
