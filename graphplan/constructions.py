@@ -202,6 +202,22 @@ POLES = ("p", "π")
 """Names of the poles of the velocity and acceleration plans."""
 
 
+def plan_name(mech: Mechanism, point: str, pole: str) -> str:
+    """Plan letter of the model point ``point`` on a plan whose pole is ``pole``.
+
+    A frame point is the pole; any other point is its lowercase letter, except a point
+    whose letter is a pole's (the piston ``P`` → ``p``, a ``Π``): it takes the number of
+    the link it was defined on (``p3``), so it never reads as the pole. Every reader of a
+    plan names its points through this function.
+    """
+    if point in mech.frame_points or point == mech.crank.pivot:
+        return pole
+    name = point.lower()
+    if name in POLES:
+        name += mech.home_link(point)
+    return name
+
+
 class _Builder:
     """Accumulates the steps, points and readings of one plan."""
 

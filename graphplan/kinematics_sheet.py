@@ -20,7 +20,7 @@ from .constructions import Plan, Reader, acceleration_plan, velocity_plan
 from .cycle import output_coordinate
 from .labels import LabelRequest, place_labels
 from .layout import CAPTION, titled_table
-from .scales import PLAN_MARGIN, Sheet1Scales, sheet_scales
+from .scales import PLAN_MARGIN, SLOT_OVER, Sheet1Scales, sheet_scales
 from .sheet import (
     DASHDOT,
     DASHDOTDOT,
@@ -94,8 +94,26 @@ def _position_styles(analysis) -> list[Style]:
     return styles
 
 
+def _structural(mech) -> set[str]:
+    """Points that shape the links: the pivots, pins and joints, the points guides pass
+    through or point to, and the origins of other points (not a bare centre of mass)."""
+    pts = set(mech.frame_points) | {mech.crank.pivot, mech.crank.pin}
+    for d in mech.dyads:
+        pts |= set(d.joints)
+        pts |= {x for g in d.guides for x in (g.through, g.toward) if x}
+    for q in mech.points:
+        pts |= {x for x in (q.origin, q.toward) if x}
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    pts |= {q.name for q in mech.points if q.name not in centres}
+    return pts
+
+
 def _link_outline(mech, link: str, centres: set[str]) -> tuple[str, ...]:
-    return tuple(p for p in mech.points_of(link) if p not in centres or link == mech.frame_link)
+    """The points a link is drawn through: all of its points but a bare centre of mass (a
+    crank balanced at its pivot keeps the pivot, it is a joint too)."""
+    keep = _structural(mech)
+    return tuple(p for p in mech.points_of(link)
+                 if p not in centres or p in keep or link == mech.frame_link)
 
 
 def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
@@ -143,10 +161,10 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
         items.append(Line(strip[0], strip[1], MAIN, layer=L, id=f"pp-guide-{slider}-edge"))
         items.append(Hatch(strip, 2.0, 45.0, layer=L, id=f"pp-guide-{slider}-hatch"))
 
-    # the links in every position
-    for k in range(kin.n):
+    # the links in every position; the main position (0) last, on top of the others
+    for k in [*range(1, kin.n), 0]:
         st = styles[k]
-        items += link_items(mech, kin, k, P, st, f"pp-{k}", L)
+        items += link_items(mech, kin, k, P, st, f"pp-{k}", L, sc.slots)
         for key, (G, u) in kin.pos.guides.items():
             slider = key.split("/")[0]
             corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
@@ -272,22 +290,49 @@ def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
                  for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1)))
 
 
-def link_items(mech, kin, k: int, P, style: Style, ident: str, layer: str) -> list[Item]:
+
+
+def link_items(mech, kin, k: int, P, style: Style, ident: str, layer: str,
+               slots: dict[str, tuple[float, float]] | None = None) -> list[Item]:
     """The moving links at position k: a line per two-point (or straight) link, a closed
-    outline for a link with more points; centres of mass are not corners."""
+    outline for a link with more points; centres of mass are not corners.
+
+    A link carrying a slide (a rocker, a yoke: ``slots`` from
+    :func:`graphplan.scales.slot_ranges`) is drawn with its slot: the slot's axis over the
+    block's travel and the link's own points, and a tie from a point off the axis (a
+    pivot offset from the slot) to it. A slider is drawn as its block (:func:`_slider_block`).
+    """
     centres = {lp.centre for lp in mech.links.values() if lp.centre}
     items: list[Item] = []
+    slots = slots or {}
     for link in mech.moving_links:
         names = _link_outline(mech, link, centres)
-        if len(names) < 2:
-            continue
-        pts = [P(kin.pos.points[p][k]) for p in names]
-        if len(pts) == 2 or _collinear(pts):
-            a, b = _span(pts)
-            items.append(Line(a, b, style, layer=layer, id=f"{ident}-link-{link}"))
-        else:
-            items.append(Polyline(tuple(pts), style, True, layer=layer,
-                                  id=f"{ident}-link-{link}"))
+        ident_link = f"{ident}-link-{link}"
+        if len(names) >= 2:
+            pts = [P(kin.pos.points[p][k]) for p in names]
+            if len(pts) == 2 or _collinear(pts):
+                a, b = _span(pts)
+                items.append(Line(a, b, style, layer=layer, id=ident_link))
+            else:
+                items.append(Polyline(tuple(pts), style, True, layer=layer, id=ident_link))
+            ident_link += "-slot"
+        for key, (t0, t1) in slots.items():
+            if key.split("/")[1] != link:
+                continue
+            G = np.asarray(kin.pos.guides[key][0][k], float)
+            u = np.asarray(kin.pos.guides[key][1][k], float)
+            own = [float(np.dot(kin.pos.points[p][k] - G, u)) for p in mech.points_of(link)]
+            kl = P.kl
+            lo = min([t0 - SLOT_OVER * kl, *own])
+            hi = max([t1 + SLOT_OVER * kl, *own])
+            items.append(Line(P(G + lo * u), P(G + hi * u), style, layer=layer,
+                              id=f"{ident_link}-{key.split('/')[0]}"))
+            for p in mech.points_of(link):
+                q = kin.pos.points[p][k]
+                foot = G + float(np.dot(q - G, u)) * u
+                if p not in centres and math.dist(P(q), P(foot)) > 0.5:
+                    items.append(Line(P(q), P(foot), style, layer=layer,
+                                      id=f"{ident_link}-{key.split('/')[0]}-{p}"))
     return items
 
 

@@ -79,7 +79,7 @@ WORDS = {
 
 
 def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang: str,
-                  ident: str) -> list[Item]:
+                  ident: str, slots=None) -> list[Item]:
     """The mechanism at position k with every load and reaction on it (directions)."""
     mech, kin = analysis.mech, analysis.kin
     pts = {n: p[k] for n, p in kin.pos.points.items()}
@@ -98,7 +98,7 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
     P = _Paper(origin, kl, pivot)
     L = "force_plan"
     items: list[Item] = []
-    items += link_items(mech, kin, k, P, MAIN, ident, L)
+    items += link_items(mech, kin, k, P, MAIN, ident, L, slots)
     for key, (G, u) in kin.pos.guides.items():
         slider, carrier = key.split("/")
         corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
@@ -187,7 +187,8 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     mmax = float(np.max(np.abs(forces.M_bal)))
     for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
-        items += _scheme_items(analysis, loads, forces, k, cells[0], sc.kl, lang, ident)
+        items += _scheme_items(analysis, loads, forces, k, cells[0], sc.kl, lang, ident,
+                               sc.slots)
         plans = force_plans(mech, kin, forces, loads, k, sc.kl, room_mm=s2.room_mm)
         for i, fp in enumerate(plans):
             title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])

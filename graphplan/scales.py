@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .constructions import plan_name
 from .cycle import in_working_stroke
 from .errors import InputError, LayoutError
 from .layout import (
@@ -32,6 +33,7 @@ from .sheet import GRAPH26_SIZE, Page
 from .units import Scale, fit_scale, nice_ceil
 
 PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
+SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
 LINE_OVERSHOOT = 8.0  #: construction lines run this far past their intersection, mm
 TRAJECTORY_POINTS = 360
 SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
@@ -48,14 +50,49 @@ class Sheet1Scales:
     extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the positions, m
     plans: tuple[int, ...] = ()  # positions whose plans are drawn, in cell order
     paths: dict[str, np.ndarray] | None = None  # the trajectories the extent was taken from
+    slots: dict[str, tuple[float, float]] | None = None  # see :func:`slot_ranges`
 
 
-def trajectories(mech: Mechanism, kin) -> dict[str, np.ndarray]:
-    """Paths of the centres of mass and of every joint over one turn (m), closed."""
+def slot_ranges(mech: Mechanism, fine) -> dict[str, tuple[float, float]]:
+    """How far each slide on a moving link (a slot of a rocker or a yoke) reaches, m.
+
+    For every guide ``slider/carrier`` carried by a moving link: the least and the greatest
+    coordinate, along the guide from its base point, of the slider's point on the guide
+    over one turn (``fine``: the kinematics of :func:`one_turn`). The slot is fixed on its
+    link, so drawn over this range in every position it is the same slot, long enough for
+    the block everywhere.
+    """
+    out: dict[str, tuple[float, float]] = {}
+    for key, (G, u) in fine.pos.guides.items():
+        slider, carrier = key.split("/")
+        if carrier == mech.frame_link:
+            continue
+        G, u = np.asarray(G, float), np.asarray(u, float)
+        n = np.stack([-u[:, 1], u[:, 0]], axis=1)
+        best = None
+        for p in mech.points_of(slider):
+            if p not in fine.pos.points:
+                continue
+            r = fine.pos.points[p] - G
+            off = float(np.median(np.abs(np.einsum("ij,ij->i", r, n))))
+            if best is None or off < best[0]:
+                best = (off, np.einsum("ij,ij->i", r, u))
+        if best is not None:
+            out[key] = (float(best[1].min()), float(best[1].max()))
+    return out
+
+
+def one_turn(mech: Mechanism, kin):
+    """The kinematics over one turn from the first position, TRAJECTORY_POINTS steps."""
     from .kinematics import solve
 
     phi = kin.phi[0] + np.linspace(0.0, 2 * math.pi, TRAJECTORY_POINTS + 1)
-    fine = solve(mech, phi)
+    return solve(mech, phi)
+
+
+def trajectories(mech: Mechanism, kin, fine=None) -> dict[str, np.ndarray]:
+    """Paths of the centres of mass and of every joint over one turn (m), closed."""
+    fine = one_turn(mech, kin) if fine is None else fine
     return {name: p for name, p in fine.pos.points.items()}
 
 
@@ -115,15 +152,25 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
     """
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
     fixed = mech.settings.get("drawing", {})
-    paths = trajectories(mech, kin)
-    ext = position_extent(mech, kin, paths)
+    fine = one_turn(mech, kin)
+    paths = trajectories(mech, kin, fine)
+    slots = slot_ranges(mech, fine)
     f = page.frame
     room_w = 0.42 * f.width - 2 * PLAN_MARGIN
     room_h = f.height - GRAPH26_SIZE[1] - 8.0 - GAP - diagram_min(page)[1] - 2 * PLAN_MARGIN
-    need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
     cr = mech.crank
-    kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}", defining=cr.length,
-                   segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+    kl_m = 0.0  # the slots run SLOT_OVER mm past their blocks' travel: at the scale found
+    for _ in range(3):
+        ends = {f"slot {key} {i}": fine.pos.guides[key][0] + t * fine.pos.guides[key][1]
+                for key, (t0, t1) in slots.items()
+                for i, t in enumerate((t0 - SLOT_OVER * kl_m, t1 + SLOT_OVER * kl_m))}
+        ext = position_extent(mech, kin, {**paths, **ends})
+        need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
+        kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}",
+                       defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+        if kl.per_mm == kl_m:
+            break
+        kl_m = kl.per_mm
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
     which = plan_positions(mech, kin)
@@ -138,10 +185,10 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
     need_v = trial_v.per_mm * max(vw / iw, vh / ih, 1e-9)
     need_a = trial_a.per_mm * max(aw / iw, ah / ih, 1e-9)
     kv = fit_scale("Kv", "(m/s)/mm", need_v, 1.0, quantity=f"v{cr.pin}", defining=va,
-                   segment=f"p{cr.pin.lower()}", fixed=fixed.get("Kv"))
+                   segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"))
     ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
-                   segment=f"π{cr.pin.lower()}", fixed=fixed.get("Ka"))
-    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths)
+                   segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"))
+    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots)
 
 
 def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:

@@ -809,7 +809,7 @@ def title_block_items(page: Page, tb: TitleBlock) -> tuple[Item, ...]:
     for slug, text, x0, y0, x1, y1, anchor in FORM1_LABELS:
         items += _cell_texts(text, R(x0, y0, x1, y1), LABEL_HEIGHTS, f"label {text!r}",
                              f"tb-label-{slug}", anchor=anchor,
-                             pad=1.0 if anchor == "start" else 0.1)
+                             pad=1.0 if anchor == "start" else S / 2 + 0.1)  # clear of the line
     for i, (role, surname, date) in enumerate(tb.signatures):
         y0 = 25 + 5 * i
         items += _cell_texts(role, R(0, y0, 17, y0 + 5), LABEL_HEIGHTS, f"role row {i + 1}",

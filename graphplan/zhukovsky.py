@@ -70,6 +70,7 @@ from .constructions import (
     Reading,
     Step,
     as_xy,
+    plan_name,
     position_mm,
     velocity_plan,
 )
@@ -212,8 +213,8 @@ class _LinkImages:
             for x in mech.points_of(ln):
                 if x in frame:
                     add(x, "p")
-                elif x.lower() != "p":  # a point P would collide with the pole's letter
-                    add(x, x.lower())
+                else:  # a point P is p3 on the plan, never the pole's letter
+                    add(x, plan_name(mech, x, "p"))
             for x in pos_mm:  # coincident points of the link: a3, b4 …
                 add(x, x.lower() + ln)
             self.known[ln] = lst
@@ -223,7 +224,7 @@ class _LinkImages:
         if point is None or link == self.mech.frame_link:
             return None
         for _, name, x in self.known.get(link, []):
-            if x == point and (name == "p" or name == point.lower()):
+            if x == point and name in ("p", plan_name(self.mech, point, "p")):
                 return name
         return None
 
@@ -297,7 +298,8 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
     pos = position_mm(kin, k, kl.per_mm, cr.pivot)
     origin = kin.pos.points[cr.pivot][k]
     images = _LinkImages(mech, plan, pos, kl.per_mm / kv.per_mm)
-    pa_name = "p" + cr.pin.lower()
+    pin = plan_name(mech, cr.pin, "p")
+    pa_name = "p" + pin
     pa = plan.readings[pa_name]
     mu = cr.length / pa.mm  # m of the crank per mm of the lever
     turned: dict[str, Vec2] = {("p" if n == "p" else n + "'"): perp(v)
@@ -381,7 +383,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
 
     f_bal = abs(total) / pa.mm
     m_bal = math.copysign(1.0, cr.omega) * mu * total
-    a_t = turned[cr.pin.lower() + "'"]
+    a_t = turned[pin + "'"]
     fvec = -math.copysign(f_bal, total) * perp(a_t / pa.mm)  # its moment about p is −Σ M_p
     # the text writes round-off (a dead centre: every arm ~0) as 0, relative to the moments
     # the forces could make on a lever of this size
@@ -390,10 +392,10 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
     f_s, m_s = abs(t_s) / pa.mm, math.copysign(1.0, cr.omega) * mu * t_s
     step("Σ M_p = 0: F_ур·pa + Σ M_p(F_i) = 0",
          f"Σ M_p(F_i) = {t_s:+.5g} N·mm; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
-         f"{f_s:.5g} N at {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
+         f"{f_s:.5g} N at {pin}' ⟂ p{pin}'; "
          f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} N·m (CCW positive).",
          f"Σ M_p(F_i) = {t_s:+.5g} Н·мм; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
-         f"{f_s:.5g} Н в точке {cr.pin.lower()}' ⟂ p{cr.pin.lower()}'; "
+         f"{f_s:.5g} Н в точке {pin}' ⟂ p{pin}'; "
          f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} Н·м (против часовой — плюс).",
          [Element("segment", "F_ур", as_xy(a_t), as_xy(a_t + fvec / kf.per_mm), "force")])
     power = float(power_balance_moment(mech, kin, loads)[k])

@@ -183,16 +183,18 @@ def test_press_working_position_2_by_hand():
 
 
 def test_point_p_is_not_the_pole():
-    """The six-bar's punch point P (link 5) shares its letter with the pole p: its image is
-    found by similarity on the ram (the ram translates, so it is d')."""
+    """The six-bar's punch point P (link 5) shares its letter with the pole p: on the plan it
+    is p5 (constructions.plan_name), its image p5', never the pole; the ram translates, so
+    p5' is d'."""
     m, cycle, kin, kl, kv = example("sixbar_press")
     loads = compute_loads(m, kin, cycle, neglect_below=0.0)
     q = next(f for f in loads.all_forces() if f.name == "Q")
     k = int(np.argmax(np.hypot(*q.vector.T)))
     lever = zhukovsky_lever(m, kin, loads, k, kl, kv)
     (f,) = [f for f in lever.forces if f.name == "Q"]
-    assert f.image == "x'(Q)"
+    assert f.image == "p5'"
     assert np.allclose(f.at_mm, lever.points["d'"], atol=1e-9)
+    assert np.allclose(f.at_mm, lever.points["p5'"], atol=1e-9)
     assert np.hypot(*f.at_mm) > 1.0
 
 

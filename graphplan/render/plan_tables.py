@@ -27,7 +27,15 @@ import numpy as np
 
 from ..analysis import Analysis
 from ..conditioning import Conditioning, intersections, kinematic_conditioning
-from ..constructions import Plan, Reader, Reading, acceleration_plan, plan_scales, velocity_plan
+from ..constructions import (
+    Plan,
+    Reader,
+    Reading,
+    acceleration_plan,
+    plan_name,
+    plan_scales,
+    velocity_plan,
+)
 from ..cycle import output_coordinate
 from ..geometry import norm
 from ..units import Scale, fmt
@@ -276,7 +284,7 @@ def _rates(analysis: Analysis, pp: PositionPlans, plan: str) -> list[_Rate]:
     kl, reader = pp.length_scale.per_mm, Reader(pp.precision)
 
     def key(point: str) -> str:
-        return pole if point in mech.frame_points else point.lower()
+        return plan_name(mech, point, pole)
 
     found: dict[str, _Rate] = {}
 
