@@ -549,8 +549,8 @@ class Flywheel:
     P_c, P_motor : float
         Mean power of resistance Mд·ω (W) and the motor's P_c/η (W; P_c if η is not given).
     KI, KT : float
-        Scales of the energy–mass diagram: I_var (kg·m²/mm) and ΔT (J/mm, the KA of the
-        work diagrams).
+        Scales of the energy–mass diagram: I_var (kg·m²/mm) and ΔT (J/mm; the KA of the
+        work diagrams unless given).
     tan_max, tan_min, psi_max, psi_min : float
         ``tan ψ = (KI/(2·KT))·ω²·(1 ± δ)`` and ψ in degrees.
     b_max, b_min : float
@@ -621,7 +621,7 @@ def _wittenbauer(dT: Array, I_var: Array, w: float, delta: float) -> tuple[float
 
 def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
              intervals: int = 24, width_mm: float = 100.0, KI: float | None = None,
-             shape: str = "rim",
+             KT: float | None = None, shape: str = "rim",
              ratio: float = 1.0, b_ratio: float = 0.2, h_ratio: float = 0.1,
              density: float = STEEL, I_rotor: float = 0.0, length_mm: float = 240.0,
              height_mm: float = 60.0) -> Flywheel:
@@ -638,13 +638,19 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
         Largest drawn span of I_var on the energy–mass diagram: ``KI = nice_ceil(span/width)``.
     KI : float, optional
         The scale of I_var instead (kg·m²/mm), e.g. chosen so that ψ lies in 20…70° (D.3).
+    KT : float, optional
+        The scale of ΔT on the energy–mass diagram (J/mm); default the KA of the work
+        diagrams (ΔT = Aд + Aс read at their scale). Sheet 3 draws ΔT(φ) and the
+        energy–mass diagram at a KT of their own, so that the diagram is tall enough for
+        the tangents to stand at readable angles.
     shape, ratio, b_ratio, h_ratio, density
         Of :func:`flywheel_size` (u = ``ratio``: the flywheel on a shaft u times faster).
     I_rotor : float
         Rotating masses of the drive reduced to the crank (the motor's rotor ``J_рот·u²``),
         kg·m²: part of the constant inertia, so the flywheel needs that much less.
     length_mm, height_mm : float
-        Size of the work diagrams (:func:`work_diagrams`); they fix KA = KT.
+        Size of the work diagrams (:func:`work_diagrams`); they fix KA (and KT = KA
+        unless ``KT`` is given).
 
     Raises
     ------
@@ -675,7 +681,10 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
     Ivn = np.interp(wd.node_tau, m.tau, I_var)
     bg, lg, _, _ = _wittenbauer(wd.dT_graph, Ivn, w, delta)
     J_graph = (bg - lg) / (w * w * delta)
-    KT = wd.KA
+    if KT is None:
+        KT = wd.KA
+    elif not (math.isfinite(KT) and KT > 0):
+        raise InputError(f"flywheel: KT must be positive (got {KT!r})")
     span_I = float(np.ptp(np.append(I_var, 0.0)))
     if KI is None:
         KI = nice_ceil(span_I / width_mm) if span_I > 0 else 1.0

@@ -4,8 +4,9 @@ Puts the steps of sheet 3 together in the order of the hand calculation (method 
 
 1. Mс(φ), Iп(φ) reduced to the crank (:func:`graphplan.dynamics.dynamic_model`);
 2. Aс, Aд, ΔT by graphical integration and exactly; Mд from equal work over the cycle;
-3. the required power ``Pс = Mд·ω1/η`` and the motor, the smallest of its series at the
-   chosen synchronous speed with ``P_ном ≥ Pс`` (:mod:`graphplan.motor`); the gear ratio
+3. the power the motor must give ``Pдв.тр = Pс/η = Mд·ω1/η`` and the motor, the smallest
+   of its series at the chosen synchronous speed with ``P_ном ≥ Pдв.тр``
+   (:mod:`graphplan.motor`); the gear ratio
    ``u = n_ном/n1``;
 4. the flywheel by Wittenbauer's energy–mass diagram for δ, less the rotor's inertia
    reduced to the crank ``J_рот·u²`` (when the catalogue gives J_рот), by Merkalov for
@@ -27,6 +28,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from .analysis import Analysis
 from .dynamics import (
     STEEL,
@@ -46,6 +49,54 @@ from .sheet import Page
 
 DIAGRAM_LENGTH = 288.0  #: abscissa L of the work diagrams on an A1 sheet 3, mm (48 × 6)
 DIAGRAM_HEIGHT = 120.0  #: drawn span of Mс and of Aс with Aд on A1, mm (fixes KM, H, KA)
+ENERGY_HEIGHT = 220.0  #: default largest drawn span of ΔT (energy–mass diagram), mm
+#: The drawn spans of Mс(φ), Aс/Aд(φ) and ΔT(φ) stacked on an A1 sheet 3 together, mm
+#: (the frame's 584 mm less the room of their axes, letters and numbers): ΔT(φ) and the
+#: energy–mass diagram beside it get what Mс and Aс leave.
+SPANS_HEIGHT = 500.0
+ENERGY_WIDTH = 90.0  #: largest drawn span of JII on the energy–mass diagram, mm
+PSI_MIN_DEG = 20.0  #: the lower tangent's angle ψmin at least this (method D.3: 20…70°)
+#: Scales of sheet 3's ΔT and JII (value per mm): 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10^k.
+SCALE_SERIES = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+
+
+def round_scale(value: float) -> float:
+    """The smallest member of :data:`SCALE_SERIES` × 10^k that is ≥ ``value`` (> 0)."""
+    k = math.floor(math.log10(value))
+    for exp in (k, k + 1):
+        for m in SCALE_SERIES:
+            s = m * 10.0**exp
+            if s >= value * (1 - 1e-12):
+                return float(f"{s:.12g}")
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _room_for_dT(wd, M) -> float:
+    """What :data:`SPANS_HEIGHT` leaves to ΔT after the drawn Mс (with Mд) and Aс, Aд."""
+    yM, yMd = np.concatenate((wd.yM_mm, M / wd.KM)), wd.M_d / wd.KM
+    m_mm = max(float(yM.max()), yMd, 0.0) - min(float(yM.min()), 0.0)
+    a_mm = (max(float((wd.A_d / wd.KA).max()), 0.0)
+            - min(float((wd.A_c / wd.KA).min()), float(wd.yA_mm.min()), 0.0))
+    return max(SPANS_HEIGHT - m_mm - a_mm, 100.0)
+
+
+def energy_mass_scales(dT_span: float, I_span: float, omega: float, delta: float,
+                       height_mm: float = ENERGY_HEIGHT, width_mm: float = ENERGY_WIDTH
+                       ) -> tuple[float, float]:
+    """Scales ``(KT, KJ)`` of ΔT(φ) and of the energy–mass diagram (J/mm, kg·m²/mm).
+
+    KT draws the span of ΔT at most ``height_mm`` tall. The tangents stand at
+    ``tg ψ = KJ·ω²·(1 ± δ)/(2·KT)``, so KJ is the finest round scale that makes
+    ``ψmin ≥ PSI_MIN_DEG`` (ψ of tens of degrees: the tangents and their points of
+    contact can be drawn and read), made coarser only if JII would be wider than
+    ``width_mm``. The diagram is then tall and narrow when JII varies little against
+    ΔT (a press: JII·ω²/2 is a few % of ΔT), which is the honest picture of it.
+    """
+    KT = round_scale(dT_span / height_mm)
+    KJ = round_scale(2.0 * KT * math.tan(math.radians(PSI_MIN_DEG)) / (omega**2 * (1 - delta)))
+    if I_span > 0 and I_span / KJ > width_mm:
+        KJ = round_scale(I_span / width_mm)
+    return KT, KJ
 
 
 def diagram_size(page: Page) -> dict[str, float]:
@@ -68,7 +119,7 @@ class MachineUnit:
         On the crank shaft (``I_m``), the rotor already counted (``flywheel.I_rotor``).
     motor : MotorChoice
     power_W : float
-        Required power Pс = Mд·ω1/η, W.
+        The power the motor must give, Pдв.тр = Pс/η = Mд·ω1/η, W.
     efficiency : float
         η of the drive (``dynamics.efficiency``, default 1).
     mounted : FlywheelSize
@@ -191,8 +242,12 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
     b_ratio = float(opts.get("b_ratio", 0.2))
     h_ratio = float(opts.get("h_ratio", 0.1))
     density = float(opts.get("density", STEEL))
+    wd = work_diagrams(m, intervals, **size)
+    KT, KJ = energy_mass_scales(float(np.ptp(wd.dT)),
+                                float(np.ptp(np.append(m.inertia.I_var, 0.0))),
+                                m.omega1, m.delta, height_mm=_room_for_dT(wd, m.moment.M))
     fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
-                  density=density, I_rotor=I_rotor, **size)
+                  density=density, I_rotor=I_rotor, KI=KJ, KT=KT, **size)
     u = choice.u if (shaft == "motor" and choice is not None) else 1.0
     mounted = flywheel_size(fw.I_m, m.omega1, shape=shape, ratio=u, b_ratio=b_ratio,
                             h_ratio=h_ratio, density=density)

@@ -42,7 +42,7 @@ def test_a_plan_and_a_sheet_show_their_drawings():
 def test_the_machine_unit_shows_its_hand_calculation():
     unit = machine_unit(analyze(load(bundled_example("press"))))
     md = unit._repr_markdown_()
-    assert md.startswith("#") and "Iм = JI − Iкр − Iрот·u² = " in md
+    assert md.startswith("#") and "Jм = JI − Jкр − Jрот·u² = " in md
     assert f"= {unit.to_json()['I_flywheel']:.2f}" in md
 
 

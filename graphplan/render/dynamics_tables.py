@@ -1,8 +1,8 @@
 """The dynamics as a hand calculation (``dynamics.ru.md``, ``dynamics.en.md``) and as CSV.
 
-The report follows sheet 3 line by line: the data, Mс and Iп at the positions, the
+The report follows sheet 3 line by line: the data, Mс and Jпр at the positions, the
 graphical integration (Kφ, KM, the pole H, KA; the mean ordinate of every interval and
-the chords' nodes in mm), Mд, ΔT, the energy–mass diagram (KI, KT, tan ψ, the
+the chords' nodes in mm), Mд, ΔT, the energy–mass diagram (KJ, KT, tan ψ, the
 intercepts k and l, kl), J_I and the flywheel, the motor and the gear ratio, the rim, and
 the check by simulation. Every formula is written with its numbers, as a student writes
 it and a teacher checks it.
@@ -24,7 +24,7 @@ T = {
            "pos": "Значения в положениях", "int": "Графическое интегрирование Mс (метод хорд)",
            "fly": "Маховик по диаграмме энергомасс (Виттенбауэр)", "motor": "Двигатель",
            "rim": "Размеры маховика", "check": "Проверка моделированием",
-           "cols": ("Пол.", "φ, °", "Mс, Н·м", "Iп, кг·м²", "Aс, Дж", "Aд, Дж", "ΔT, Дж"),
+           "cols": ("Пол.", "φ, °", "Mс, Н·м", "Jпр, кг·м²", "Aс, Дж", "Aд, Дж", "ΔT, Дж"),
            "icols": ("Интервал", "φ от, °", "φ до, °", "Mс ср, Н·м", "yM, мм", "yA в конце, мм"),
            "none": "нет в каталоге", "shaft_crank": "на валу кривошипа",
            "shaft_motor": "на валу двигателя", "flat": "ψ < 20°: по отрезкам на оси ΔT, метод D.3",
@@ -34,7 +34,7 @@ T = {
            "pos": "Values at the positions", "int": "Graphical integration of Mс (chords)",
            "fly": "Flywheel by the energy–mass diagram (Wittenbauer)", "motor": "Motor",
            "rim": "Flywheel dimensions", "check": "Check by simulation",
-           "cols": ("Pos.", "φ, °", "Mс, N·m", "Iп, kg·m²", "Aс, J", "Aд, J", "ΔT, J"),
+           "cols": ("Pos.", "φ, °", "Mс, N·m", "Jпр, kg·m²", "Aс, J", "Aд, J", "ΔT, J"),
            "icols": ("Interval", "φ from, °", "φ to, °", "mean Mс, N·m", "yM, mm",
                      "yA at the end, mm"),
            "none": "not in the catalogue", "shaft_crank": "on the crank shaft",
@@ -50,9 +50,9 @@ def _table(header, rows) -> list[str]:
     return out
 
 
-def position_rows(u: MachineUnit) -> list[list[str]]:
-    """Per position: label, φ (absolute, °), Mс, Iп, Aс, Aд, ΔT; round-off next to the
-    largest value written as 0."""
+def position_rows(u: MachineUnit, lang: str | None = None) -> list[list[str]]:
+    """Per position: label, φ (absolute, °), Mс, Jпр, Aс, Aд, ΔT; round-off next to the
+    largest value written as 0; with the decimal comma for ``lang="ru"`` (a sheet)."""
     m, wd = u.model, u.flywheel.work
     big_m, big_a = float(np.max(np.abs(m.moment.M))), float(np.max(np.abs(wd.A_c)))
     big_i = float(np.max(np.abs(m.inertia.I_red)))
@@ -69,6 +69,8 @@ def position_rows(u: MachineUnit) -> list[list[str]]:
                      v(float(np.interp(t, wd.tau, wd.A_c)), big_a),
                      v(float(np.interp(t, wd.tau, wd.A_d)), big_a),
                      v(float(np.interp(t, wd.tau, wd.dT)), big_a)])
+    if lang == "ru":
+        rows = [[c.replace(".", ",") for c in r] for r in rows]
     return rows
 
 
@@ -87,7 +89,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
          f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(n1, 5)} "
          f"{'об/мин' if ru else 'rpm'}; δ = {fw.delta:g}; η = "
          f"{u.efficiency:g}",
-         f"- Iкр = {fmt(fw.I_const, 4)} кг·м²",
+         f"- Jкр = {fmt(fw.I_const, 4)} кг·м²",
          f"- {t['sign']}",
          "", f"## {t['pos']}", ""]
     L += _table(t["cols"], position_rows(u))
@@ -112,15 +114,16 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"({'точно' if ru else 'exact'} {fmt(fw.M_d, 6)})",
           f"- ΔT = Aд + Aс; ΔTmax − ΔTmin = {fmt(fw.dT_max, 6)} {J}", "",
           f"## {t['fly']}", "",
-          f"- KI = {fmt(fw.KI, 4)} кг·м²/{mm}, KT = KA = {fmt(fw.KT, 5)} {J}/{mm}",
-          f"- tg ψmax = KI/(2·KT)·ω²·(1 + δ) = {fmt(fw.KI, 4)}/(2·{fmt(fw.KT, 5)})·"
+          f"- KJ = {fmt(fw.KI, 4)} кг·м²/{mm}, KT = {fmt(fw.KT, 5)} {J}/{mm} "
+          f"(KA/KT = {fmt(wd.KA / fw.KT, 5)})",
+          f"- tg ψmax = KJ/(2·KT)·ω²·(1 + δ) = {fmt(fw.KI, 4)}/(2·{fmt(fw.KT, 5)})·"
           f"{fmt(w, 5)}²·{1 + fw.delta:g} = {fw.tan_max:.5f}, ψmax = {fw.psi_max:.3f}°",
-          f"- tg ψmin = KI/(2·KT)·ω²·(1 − δ) = {fw.tan_min:.5f}, ψmin = {fw.psi_min:.3f}°",
+          f"- tg ψmin = KJ/(2·KT)·ω²·(1 − δ) = {fw.tan_min:.5f}, ψmin = {fw.psi_min:.3f}°",
           f"- k = {fw.k_mm:.2f} {mm}, l = {fw.l_mm:.2f} {mm}, kl = {fw.segment_mm:.2f} {mm}"
           + (f" ({t['flat']})" if fw.tangents_flat else ""),
           f"- JI = kl·KT/(ω²·δ) = {fw.segment_mm:.2f}·{fmt(fw.KT, 5)}/({fmt(w, 5)}²·"
           f"{fw.delta:g}) = {fmt(fw.J_I, 6)} кг·м²",
-          f"- Iм = JI − Iкр − Iрот·u² = {fmt(fw.J_I, 6)} − {fmt(fw.I_const, 4)} − "
+          f"- Jм = JI − Jкр − Jрот·u² = {fmt(fw.J_I, 6)} − {fmt(fw.I_const, 4)} − "
           f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m, 6)} кг·м²",
           f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} кг·м² "
           f"({fw.difference_pct:+.3f} %); "
@@ -131,12 +134,14 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
         L += [f"- {'нагрузки совершают положительную работу за цикл (двигатель): постоянный момент — момент сопротивления потребителя Mс' if ru else 'the loads do positive work over the cycle (an engine): the constant moment is the consumer’s resistance Mс'} = {fmt(fw.M_d, 6)} {Nm}",
               f"- P = |Mс|·ω1·η = {fmt(u.power_W, 6)} {'Вт' if ru else 'W'}"]
     else:
-        L += [f"- Pс = |Mд|·ω1/η = {fmt(fw.M_d, 6)}·{fmt(w, 5)}/{u.efficiency:g} = "
+        L += [f"- Pс = Mд·ω1 = {fmt(fw.M_d, 6)}·{fmt(w, 5)} = {fmt(fw.P_c, 6)} "
+              f"{'Вт' if ru else 'W'}",
+              f"- {'Pдв.тр' if ru else 'Preq'} = Pс/η = {fmt(fw.P_c, 6)}/{u.efficiency:g} = "
               f"{fmt(u.power_W, 6)} {'Вт' if ru else 'W'}",
               f"- {mc.reason}",
-              f"- J_рот = "
+              f"- Jрот = "
               f"{fmt(mo.inertia_kg_m2, 4) if mo.inertia_kg_m2 is not None else t['none']}"
-              + (f", J_рот·u² = {fmt(fw.I_rotor, 5)} кг·м²"
+              + (f", Jрот·u² = {fmt(fw.I_rotor, 5)} кг·м²"
                  if mo.inertia_kg_m2 is not None else "")]
     L += ["", f"## {t['rim']}", ""]
     m = u.mounted
@@ -146,7 +151,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"{'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
           + ("" if m.speed_ok else " (> 40 м/с!)"),
           "", f"## {t['check']}", "",
-          f"- ω(φ) = √(2(T0 + ΔT)/(Iп + Iрот + Iм)): ωmax = {fmt(s.omega_max, 5)}, "
+          f"- ω(φ) = √(2(T0 + ΔT)/(Jпр + Jрот·u² + Jм)): ωmax = {fmt(s.omega_max, 5)}, "
           f"ωmin = {fmt(s.omega_min, 5)}, δ = (ωmax − ωmin)/ωср = {s.delta_actual:.5f} "
           f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})",
           (f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
@@ -156,7 +161,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
 
 
 def dynamics_csv(u: MachineUnit) -> str:
-    """One row per position: φ, Mс, Iп, Aс, Aд, ΔT (SI)."""
+    """One row per position: φ, Mс, Jпр, Aс, Aд, ΔT (SI)."""
     buf = io.StringIO()
     wr = csv.writer(buf, lineterminator="\n")
     wr.writerow(["position", "travel_deg", "M_c_Nm", "I_red_kgm2", "A_c_J", "A_d_J", "dT_J"])
