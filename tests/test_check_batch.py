@@ -25,7 +25,7 @@ def klass(tmp_path_factory):
     rng = random.Random(20240601)
     expected = {}
     for n in range(STUDENTS):
-        kinds = tuple(rng.sample(FAULT_KINDS, rng.randint(0, 3)))
+        kinds = tuple(rng.sample(FAULT_KINDS[:6], rng.randint(0, 3)))  # the kinds of 2024
         work, faults = inject(key, kinds, rng, ref)
         name = f"student{n:03d}.toml"
         (folder / name).write_text(work.toml(), encoding="utf-8")

@@ -48,7 +48,10 @@ def test_generated_work_of_every_dyad_kind_passes_clean(name):
     assert r.counts()["ok"] > 200
 
 
-@pytest.mark.parametrize("kind", FAULT_KINDS)
+PRESS_KINDS = tuple(k for k in FAULT_KINDS if k != "coriolis")  # the press has none
+
+
+@pytest.mark.parametrize("kind", PRESS_KINDS)
 @pytest.mark.parametrize("seed", range(4))
 def test_each_fault_is_caught_once_with_its_kind(press, kind, seed):
     rng = random.Random(1000 * seed + FAULT_KINDS.index(kind))
@@ -57,10 +60,21 @@ def test_each_fault_is_caught_once_with_its_kind(press, kind, seed):
     assert found == {(fault.position, fault.quantity, KIND_OF_FAULT[kind])}, fault.line
 
 
+@pytest.mark.parametrize("seed", range(3))
+def test_the_coriolis_factor_left_out_is_named(seed):
+    # aᵏA3 = ω3∙vAA3 = … : half of 2·ω3·v_r; k_A3 = aᵏA3/Ka drawn from it only follows
+    gen = generate(EXAMPLES / "shaper.toml", positions=("2", "3", "4"))
+    faulty, (fault,) = inject(gen, ("coriolis",), random.Random(seed))
+    r = _check(faulty)
+    assert _faults_found(r) == {(fault.position, fault.quantity, "coriolis")}, fault.line
+    follows = [f for f in r.findings if not f.primary and f.position == fault.position]
+    assert any(f.quantity == "k_A3" for f in follows)
+
+
 @pytest.mark.parametrize("seed", range(6))
 def test_several_faults_at_once(press, seed):
     rng = random.Random(seed)
-    kinds = tuple(rng.sample(FAULT_KINDS, 3))
+    kinds = tuple(rng.sample(PRESS_KINDS, 3))
     faulty, faults = inject(press, kinds, rng)
     assert _faults_found(_check(faulty)) == {(f.position, f.quantity, f.finding_kind)
                                              for f in faults}

@@ -90,7 +90,9 @@ class Checker:
         if plan and plan in scales and q.kind in ("reaction", "kinematic"):
             floor = t.reading_mm * scales[plan]
         if q.dimension in ("N·m", "rad/s", "rad/s²"):
-            floor = max(floor, t.derived_ok * self.magnitude(q))
+            # a value near zero (Mур at a dead centre) read from arms of a few tenths of a
+            # mm: a floor of a quarter of the derived ok band of its largest value
+            floor = max(floor, t.derived_ok / 4 * self.magnitude(q))
         return (max(t.derived_ok * abs(e), floor / 2, 1e-12),
                 max(t.derived * abs(e), floor, 1e-12), t.derived)
 
@@ -290,13 +292,13 @@ class Checker:
                 wh_ru = ", ".join(dict.fromkeys(x.where_in("ru") for x in occs))
                 said = _Say(f"also used as {o.name} = {num(o.raw)} in {wh_en}",
                             f"также {o.name} = {num(o.raw, 'ru')} ({wh_ru})")
-                if f.verdict != "ok" or f.e is None:
+                if f.verdict == "wrong" or f.e is None:
                     f.extra_notes.append(said(self.lang))
                     continue
                 g = self.evaluate(scope, [o, *occs[1:]])
                 if g.verdict == "ok":
                     continue
-                d = dg.diagnose(g)
+                d = self._segment_for_force(f, o, g) or dg.diagnose(g)
                 if d.kind in ("model",):
                     d = Diag("consistency",
                              f"{o.name} = {qty(g.s, g.q.unit)} here, but "
@@ -310,6 +312,23 @@ class Checker:
                     f"записано {qty(f.s, f.q.unit, 'ru')} ({s0.where_in('ru')})")(self.lang))
                 out.append(self._finding(g, d, "wrong"))
         return out
+
+    def _segment_for_force(self, f: Fig, o: Occurrence, g: Fig) -> Diag | None:
+        """A force written as its segment on the force plan where the force is meant
+        (``Мур = R21∙h21∙Кl`` with R21 = 60,02 mm of the plan at Kp = 2 N/mm)."""
+        plan = SCALE_OF_DIMENSION.get(f.q.dimension)
+        k = self.w.stated_scales(o.position).get(plan or "")
+        if not k or f.q.on_paper or abs(k - 1) < 0.05 or not _close(
+                abs(o.raw) * k, abs(f.s), 0.01):
+            return None
+        sc = scale_text(plan, k, "en")  # type: ignore[arg-type]
+        en = (f"{o.name} = {num(o.raw)} is its segment on the force plan (mm), not the "
+              f"force: {num(o.raw)} mm × {sc} = {qty(f.s, f.q.unit)}, as stated in "
+              f"{f.occs[0].where_in('en')} — {plan} is left out.")
+        ru = (f"{o.name} = {num(o.raw, 'ru')} — это отрезок на плане сил (мм), а не сила: "
+              f"{num(o.raw, 'ru')} мм × {scale_text(plan, k, 'ru')} = "  # type: ignore[arg-type]
+              f"{qty(f.s, f.q.unit, 'ru')} ({f.occs[0].where_in('ru')}) — пропущен {plan}.")
+        return Diag("scale", en, ru)
 
     def _scales(self, figs: dict[tuple, Fig]) -> list[Finding]:
         """A scale stated with one value and used with another."""
@@ -388,7 +407,8 @@ class Checker:
         out = []
         lang = self.lang
         figured = {id(f.occs[0].work) for f in figs.values()
-                   if f.occs[0].role == "result" and f.verdict != "ok" and f.e is not None}
+                   if f.occs[0].role == "result" and f.verdict == "wrong" and
+                   f.e is not None}
         for lw in self.w.lines:
             pos = lw.position
             wh = where_text(pos, lw.line, self.lang)

@@ -35,7 +35,7 @@ import numpy as np
 
 from .engine import LineWork, Occurrence, _close
 from .errors import ExpressionError
-from .expressions import show, value
+from .expressions import decimals, show, value
 from .matching import flip_term, sum_terms
 from .quantities import SCALE_OF_DIMENSION, Quantity
 from .words import num, pct, qty, scale_text
@@ -109,6 +109,11 @@ class Diagnoser:
         floor = max(f.tol - f.rel * abs(f.e or 0.0), 0.0)
         return abs(x - y) <= max(f.rel * max(abs(x), abs(y)), floor, 1e-12)
 
+    def near_rel(self, f: Fig, x: float, y: float) -> bool:
+        """``x`` within the figure's relative tolerance of ``y`` (no absolute floor: for
+        ratios such as 1000 or 2, which a floor for values near zero would blur)."""
+        return abs(x - y) <= max(f.rel * max(abs(x), abs(y)), 1e-12)
+
     def _u(self, f: Fig, x: float | None, lang: str = "en") -> str:
         return qty(x, f.q.unit, lang)
 
@@ -136,10 +141,11 @@ class Diagnoser:
         """The first hypothesis of the module docstring that explains the figure."""
         from dataclasses import replace
 
-        for rank, h in enumerate((self._arithmetic, self._unit, self._sign, self._formula,
-                                  self._segment, self._polygon, self._lever_arm,
-                                  self._geometry, self._scale, self._models,
-                                  self._other_position,
+        for rank, h in enumerate((self._arithmetic, self._follows, self._unit, self._sign,
+                                  self._formula,
+                                  self._coriolis, self._segment, self._polygon,
+                                  self._lever_arm, self._geometry, self._scale,
+                                  self._models, self._own_reading, self._other_position,
                                   self._neighbours, self._label, self._series)):
             d = h(f)
             if d is not None:
@@ -172,6 +178,9 @@ class Diagnoser:
             ru = (f"записанные числа дают {num(a.value, 'ru')}; у результата {b.text} "
                   f"обратный знак (по расчёту {self._u(f, f.e, 'ru')}).")
             return Diag("sign", en, ru)
+        unit = self._unit_slip(f, float(a.value), float(b.value), b.text)
+        if unit is not None:
+            return unit
         en = f"the written numbers give {a.text} = {num(a.value)}, not {b.text}"
         ru = f"записанные числа дают {a.text} = {num(a.value, 'ru')}, а не {b.text}"
         re_c = self._canonical(lw, o, float(a.value))
@@ -182,6 +191,26 @@ class Diagnoser:
             en += f" (graphplan: {self._u(f, f.e)})."
             ru += f" (по расчёту {self._u(f, f.e, 'ru')})."
         return Diag("arithmetic", en, ru)
+
+    def _unit_slip(self, f: Fig, computed: float, written: float, text: str) -> Diag | None:
+        """The numbers give ``computed``, the result says ``written`` = computed/1000 (the
+        kN written with the unit N) or ×1000: a unit slip, not arithmetic."""
+        if not computed or not written:
+            return None
+        for r in (1e3, 1e-3, 1e6, 1e-6):
+            if abs(computed / written / r - 1) <= 0.01:
+                big = r > 1
+                en = (f"the numbers give {num(computed)}, the result {text} is "
+                      f"{'1/' if big else ''}{num(r if big else 1 / r)} of it"
+                      f"{'' if big else ' times more'}: a unit slip (the number of "
+                      f"{'kilo-units written with the base unit' if big else 'base units written with the kilo-unit'}"
+                      f"; graphplan: {self._u(f, f.e)}).")
+                ru = (f"числа дают {num(computed, 'ru')}, а результат {text} — в "
+                      f"{num(r if r > 1 else 1 / r, 'ru')} раз {'меньше' if big else 'больше'}: "
+                      f"перепутаны единицы ({'число в кН записано с единицей Н' if big else 'число в Н записано с единицей кН'}"
+                      f"; по расчёту {self._u(f, f.e, 'ru')}).")
+                return Diag("unit", en, ru)
+        return None
 
     def _canonical(self, lw: LineWork, o: Occurrence, raw: float) -> float | None:
         """A raw number of the line in the unit of its result's quantity."""
@@ -200,7 +229,7 @@ class Diagnoser:
             if r == 9.81 and f.q.dimension not in ("N", "kg", "N·m"):
                 continue
             for ratio in (r, 1.0 / r):
-                if self.near(f, f.s, f.e * ratio):
+                if self.near_rel(f, f.s, f.e * ratio):
                     times = f"{num(ratio)} times" if ratio > 1 else f"1/{num(1 / ratio)} of"
                     en = (f"{o.name} = {o.text} is {times} graphplan's "
                           f"{self._u(f, f.e)}: a unit mix-up (a factor of {en_r}).")
@@ -248,8 +277,8 @@ class Diagnoser:
             out[sym] = o.value if votes > 0 else k0
         return out
 
-    def model_env(self, lw: LineWork, model: str = "rule", band: int = 0
-                  ) -> tuple[dict[str, float] | None, list[str]]:
+    def model_env(self, lw: LineWork, model: str = "rule", band: int = 0,
+                  plain: bool = False) -> tuple[dict[str, float] | None, list[str]]:
         """graphplan's values of the names of a line (in the student's units) and the
         names whose written values are off (beyond their *ok* band, or with ``band=1``
         beyond their tolerance: wrong)."""
@@ -271,9 +300,11 @@ class Diagnoser:
                 right = self.w.expected(q, o.scope, o, model, sc)
                 if right is None:
                     return None, []
-            env[name] = right / 1000.0 ** o.prefix * (math.copysign(1.0, o.raw) if
-                                                      not q.signed else 1.0)
-            val = o.value if q.signed else abs(o.value)
+            prefix = 0 if plain else o.prefix
+            env[name] = right / 1000.0 ** prefix * (math.copysign(1.0, o.raw) if
+                                                    not q.signed else 1.0)
+            val = o.raw * 1000.0 ** prefix if plain else o.value
+            val = val if q.signed else abs(val)
             right_c = right if q.signed else abs(right)
             allowed = self.c.band(q, right_c, {**stated, **scales}, o.text)[band]
             if abs(val - right_c) > allowed:
@@ -302,6 +333,13 @@ class Diagnoser:
             return False
         return F is not None and self.near(f, F, f.e)
 
+    def _follows(self, f: Fig) -> Diag | None:
+        """Only the consequence of the student's own wrong figures before it (checked
+        before the other hypotheses: a ratio of 9,81 or 1000 met by chance in a carried
+        value is no slip of its own)."""
+        d = self._formula(f)
+        return d if d is not None and d.kind == "propagated" else None
+
     def _formula(self, f: Fig) -> Diag | None:
         o = f.occs[0]
         lw = o.work
@@ -314,6 +352,16 @@ class Diagnoser:
             F = self._canonical(lw, o, value(lw.template, env))
         except ExpressionError:
             return None
+        if F is not None and not self.near(f, F, f.e):
+            # the numbers may all be in the result's unit: an operand read as kN because
+            # its number looked like kN (a segment written for a force) is not
+            alt = self.model_env(lw, plain=True)
+            try:
+                F2 = self._canonical(lw, o, value(lw.template, alt[0])) if alt[0] else None
+            except ExpressionError:
+                F2 = None
+            if F2 is not None and self.near(f, F2, f.e) and alt[1]:
+                F, offs = F2, alt[1]
         if F is not None and self.near(f, F, f.e):
             if not offs:
                 return None
@@ -322,6 +370,9 @@ class Diagnoser:
             ru = (f"следует из {', '.join(offs)}: с точными значениями эта формула даёт "
                   f"{self._u(f, f.e, 'ru')}.")
             return Diag("propagated", en, ru, tuple(offs))
+        cor = self._coriolis_factor(f, F)
+        if cor is not None:
+            return cor
         for i, (_sg, term) in enumerate(sum_terms(lw.template)):
             t2 = flip_term(lw.template, i)
             if t2 is None:
@@ -344,6 +395,64 @@ class Diagnoser:
         ru = (f"формула неверна: с точными значениями она даёт {self._u(f, F, 'ru')}, а точное "
               f"значение {self._u(f, f.e, 'ru')}.")
         return Diag("formula", en, ru)
+
+    @staticmethod
+    def is_coriolis(f: Fig) -> bool:
+        return f.key[0] in ("reading", "segment") and any(
+            isinstance(x, str) and x.startswith("aᵏ") for x in f.key)
+
+    def _coriolis_factor(self, f: Fig, formula_value: float | None = None) -> Diag | None:
+        """The Coriolis acceleration without its factor 2 (aᵏ = ω·v_r): half the value."""
+        if not self.is_coriolis(f) or not f.e:
+            return None
+        half = f.e / 2
+        if not (self.near_rel(f, f.s, half) or (formula_value is not None and
+                                                 self.near_rel(f, formula_value, half))):
+            return None
+        en = (f"the Coriolis acceleration is aᵏ = 2·ω·v_r: {self._u(f, f.s)} is half of "
+              f"graphplan's {self._u(f, f.e)} — the factor 2 is left out.")
+        ru = (f"кориолисово ускорение aᵏ = 2·ω·v_r: {self._u(f, f.s, 'ru')} — половина "
+              f"точного {self._u(f, f.e, 'ru')}, пропущен множитель 2.")
+        return Diag("coriolis", en, ru)
+
+    def _coriolis(self, f: Fig) -> Diag | None:
+        return self._coriolis_factor(f)
+
+    def _own_reading(self, f: Fig) -> Diag | None:
+        """The student's own value of the same figure at another position, or of another
+        figure at this position, written again here (a reading reused)."""
+        o = f.occs[0]
+        if o.position is None or f.q.scope == "global":
+            return None
+        half = 0.5 * 10.0 ** (-decimals(o.text)) * 1.01 if o.text else 0.0
+        for g in self.figs.values():
+            if g is f or g.e is None or g.verdict == "not compared":
+                continue
+            go = g.occs[0]
+            if go.position is None or go.work is o.work:
+                continue
+            same_q = g.key == f.key and go.position != o.position
+            other_q = (go.position == o.position and g.key != f.key and
+                       g.q.unit == f.q.unit and g.q.scale == f.q.scale)
+            if not (same_q or other_q) or abs(g.s - f.s) > max(half, 1e-12):
+                continue
+            if self.near(f, g.s, f.e) or g.verdict == "wrong":
+                continue
+            if same_q:
+                en = (f"{self._u(f, f.s)} is the student's own {go.name} of position "
+                      f"{go.position} ({go.where_in('en')}), not of {o.position} "
+                      f"(graphplan: {self._u(f, f.e)}).")
+                ru = (f"{self._u(f, f.s, 'ru')} — собственное значение {go.name} для "
+                      f"положения {go.position} ({go.where_in('ru')}), а не для "
+                      f"{o.position} (по расчёту {self._u(f, f.e, 'ru')}).")
+                return Diag("other-variant", en, ru)
+            en = (f"{self._u(f, f.s)} is the student's own {go.name} ({go.where_in('en')}), "
+                  f"not {o.name} ({self._u(f, f.e)}): a right number under a wrong name.")
+            ru = (f"{self._u(f, f.s, 'ru')} — это {go.name} ({go.where_in('ru')}), а не "
+                  f"{o.name} ({self._u(f, f.e, 'ru')}): верное число под чужим "
+                  "обозначением.")
+            return Diag("label", en, ru)
+        return None
 
     def _sign_reason(self, f: Fig, term) -> tuple[str, str]:
         names = {n for n in _names(term)}

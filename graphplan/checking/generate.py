@@ -37,9 +37,12 @@ import numpy as np
 from .expressions import evaluate
 from .reference import Reference
 
-FAULT_KINDS = ("arithmetic", "scale", "other", "sign", "unit", "lever-arm")
+FAULT_KINDS = ("arithmetic", "scale", "other", "sign", "unit", "lever-arm", "unit-down",
+               "coriolis", "reuse", "label", "segment-for-force")
 KIND_OF_FAULT = {"arithmetic": "arithmetic", "scale": "scale", "other": "other-variant",
-                 "sign": "sign", "unit": "unit", "lever-arm": "lever-arm"}
+                 "sign": "sign", "unit": "unit", "lever-arm": "lever-arm",
+                 "unit-down": "unit", "coriolis": "coriolis", "reuse": "other-variant",
+                 "label": "label", "segment-for-force": "scale"}
 
 
 def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
@@ -191,7 +194,7 @@ def _name(quantity: str) -> str:
 
 def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
              variant_ref: str | None = None, student: str = "graphplan",
-             drafting: Drafting = EXACT) -> Generated:
+             drafting: Drafting = EXACT, ref: Reference | None = None) -> Generated:
     """The calculation of a variant as a careful student writes it (module docstring).
 
     Parameters
@@ -211,7 +214,7 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
     from ..force_plans import force_plans
     from ..scales import sheet_scales
 
-    ref = Reference.of(variant)
+    ref = ref or Reference.of(variant)
     mech, kin = ref.mech, ref.kin
     sc = sheet_scales(mech, kin)
     kl, kv, ka = sc.kl.per_mm, sc.kv.per_mm, sc.ka.per_mm
@@ -268,12 +271,22 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
             continue
         lines: list[GenLine] = []
         vals: dict[str, float] = {}
+        written_omegas: set[str] = set()
         for seg, quantity, scale_name, unit in _readings(ref, k, kl, kv, ka):
             name = _name(quantity)
             if seg in (f"p{A.lower()}", f"π{A.lower()}"):
                 continue
-            mm = measure(ref.reading_mm(seg, k, kl, kv, ka) or 0.0)
             scale_txt = _fmt(kv if scale_name == "Kv" else ka, 6)
+            known = _known_component(ref, k, quantity, seg, vals, written_omegas, lines, dg)
+            if known is not None:  # aⁿ = v²/l, aᵏ = 2·ω·v_r computed, then drawn
+                lines.append(known)
+                vals[name] = float(_fmt(known.result, dg).replace(",", "."))
+                lines.append(GenLine(seg, f"{{{name}}}/{{{scale_name}}}",
+                                     (Operand(name, _fmt(vals[name], dg)),
+                                      Operand(scale_name, scale_txt)), "мм", 3,
+                                     tags=("drawn", name)))
+                continue
+            mm = measure(ref.reading_mm(seg, k, kl, kv, ka) or 0.0)
             gl = GenLine(name, f"{{{seg}}}∙{{{scale_name}}}",
                          (Operand(seg, mm), Operand(scale_name, scale_txt)), unit, dg,
                          tags=("reading", scale_name))
@@ -342,6 +355,52 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
         out_positions.append(GenPosition(label, tuple(lines), tuple(arms)))
     return Generated(variant_ref or str(Path(variant).resolve()), tuple(general),
                      tuple(out_positions), student)
+
+
+def _known_component(ref: Reference, k: int, quantity: str, seg: str,
+                     vals: dict[str, float], omegas: set[str], lines: list[GenLine],
+                     digits: int) -> GenLine | None:
+    """A normal or Coriolis acceleration computed as a student computes it before laying
+    it off: ``anBA = vBA^2/lBA`` (from the velocity read before) and ``aᵏA3 = 2∙ω3∙vAA3``
+    (ω of the guide written on a line of its own); ``None`` when the line cannot be
+    written that way (a zero component, a velocity not read)."""
+    m = re.fullmatch(r"a([ⁿᵏ])_(\w+)", quantity)
+    if m is None:
+        return None
+    value = ref.plan_value(seg, k)
+    if not value:
+        return None
+    sup, pts = m.groups()
+    name = _name(quantity)
+    if sup == "ⁿ":
+        v_name = f"v{pts}"
+        if v_name not in vals or len(pts) != 2:
+            return None
+        length = ref.value(("length", pts[0], pts[1]), k)
+        if not length:
+            return None
+        return GenLine(name, f"{{{v_name}}}^2/{{l{pts}}}",
+                       (Operand(v_name, _fmt(vals[v_name], digits)),
+                        Operand(f"l{pts}", _fmt(length, 4))), "м/с²", digits,
+                       tags=("normal",))
+    # the Coriolis acceleration: 2·ω of a link times a relative velocity read before
+    w = ref.kin.vel.omega
+    for v_name, v in vals.items():
+        if not v_name.startswith("v") or v == 0:
+            continue
+        for link in ref.mech.moving_links:
+            om = abs(float(w[link][k]))
+            if om and abs(2 * om * v - value) <= 0.02 * value:
+                o_name = f"ω{link}"
+                if o_name not in omegas:
+                    omegas.add(o_name)
+                    lines.append(GenLine(o_name, "", (), "рад/с",
+                                         result_text=_fmt(om, digits)))
+                return GenLine(name, f"2∙{{{o_name}}}∙{{{v_name}}}",
+                               (Operand(o_name, _fmt(om, digits)),
+                                Operand(v_name, _fmt(v, digits))), "м/с²", digits,
+                               tags=("coriolis",))
+    return None
 
 
 def _readings(ref: Reference, k: int, kl: float, kv: float, ka: float):
@@ -492,6 +551,7 @@ class Fault:
     quantity: str  # the name the finding must carry
     finding_kind: str
     line: str  # the faulty line as written
+    carried: tuple[str, ...] = ()  # later lines that use the wrong value, as written
 
 
 def _positions_with(gen: Generated, pred) -> list[tuple[int, int]]:
@@ -513,19 +573,65 @@ def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
     used_pos: set[int] = set()
     faults = []
     for kind in kinds:
+        now = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
+                                           zip(gen.positions, positions, strict=True)))
         cands = [(i, j) for i, lines in enumerate(positions) for j, ln in enumerate(lines)
-                 if i not in used_pos and _fits(kind, ln, gen.positions[i].label, ref, gen)]
+                 if i not in used_pos and _fits(kind, ln, gen.positions[i].label, ref, now)]
         if not cands:
             raise ValueError(f"no line left for a fault of kind {kind!r}")
         i, j = rng.choice(cands)
         label = gen.positions[i].label
-        new, quantity = _apply(kind, positions[i][j], label, ref, gen, rng)
+        old = positions[i][j]
+        new, quantity = _apply(kind, old, label, ref, now, rng)
         positions[i][j] = new
         used_pos.add(i)
-        faults.append(Fault(kind, label, quantity, KIND_OF_FAULT[kind], new.text()))
+        carried: tuple[str, ...] = ()
+        if kind not in ("unit", "unit-down", "sign", "segment-for-force"):
+            carried = _carry(positions[i], j, old, new)
+        faults.append(Fault(kind, label, quantity, KIND_OF_FAULT[kind], new.text(),
+                            carried))
     out = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
                                        zip(gen.positions, positions, strict=True)))
     return out, tuple(faults)
+
+
+def _written_result(ln: GenLine) -> str:
+    return ln.result_text if ln.result_text is not None else _fmt(ln.result, ln.digits)
+
+
+def _reversed(name: str) -> str:
+    m = re.fullmatch(r"(R[τn]?)(\d)(\d)", name)
+    return f"{m.group(1)}{m.group(3)}{m.group(2)}" if m else name
+
+
+def _carry(lines: list[GenLine], j: int, old: GenLine, new: GenLine) -> tuple[str, ...]:
+    """A student carries a wrong result on: every later line of the position that uses
+    it takes the wrong number (and its own result changes with it). Returns the carried
+    lines as written."""
+    changed = {old.lhs: _written_result(new)} if _written_result(old) != _written_result(
+        new) else {}
+    out = []
+    for m in range(j + 1, len(lines)):
+        ln = lines[m]
+        ops = list(ln.operands)
+        hit = False
+        for t, op in enumerate(ops):
+            for name, text in changed.items():
+                if op.name in (name, _reversed(name)):
+                    ops[t] = replace(op, text=text)
+                    hit = True
+        if hit:
+            before = _written_result(ln)
+            if "scale" in ln.tags and ln.result_text is not None and len(ops) == 2:
+                # Кр = Q/Q_mm: the scale is chosen, the segment drawn from the force
+                kp = float(ln.result_text.replace(",", "."))
+                size = float(ops[0].text.replace(",", "."))
+                ops[1] = replace(ops[1], text=_fmt(size / kp, decimals=2))
+            lines[m] = replace(ln, operands=tuple(ops))
+            out.append(lines[m].text())
+            if _written_result(lines[m]) != before:
+                changed[ln.lhs] = _written_result(lines[m])
+    return tuple(out)
 
 
 def _scales(gen: Generated) -> dict[str, float]:
@@ -567,12 +673,90 @@ def _fits(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated) ->
         return "M_bal" in ln.tags and abs(ln.result) > 0.05 * max(
             abs(x) for x in ref.forces["rule"].M_bal)
     if kind == "unit":
-        return "reaction" in ln.tags and ln.result > 1.0
+        return ("reaction" in ln.tags or ("load" in ln.tags and not ln.operands)) and \
+            ln.result > 1.0
+    if kind == "unit-down":
+        return ("reaction" in ln.tags or "load" in ln.tags) and ln.result > 100.0
+    if kind == "coriolis":
+        return "coriolis" in ln.tags and ln.result > 0.05
+    if kind == "reuse":
+        return "reading" in ln.tags and bool(_own_elsewhere(ln, label, gen))
+    if kind == "label":
+        return "reading" in ln.tags and bool(_other_name(ln, label, ref, gen))
+    if kind == "segment-for-force":
+        return "M_bal" in ln.tags and _segment_of_force(ln, label, gen) is not None
     if kind == "lever-arm":
         if "tangential" not in ln.tags:
             return False
         return bool(_other_arms(ln, label, ref, gen))
     raise ValueError(f"unknown fault kind {kind!r} (expected one of {', '.join(FAULT_KINDS)})")
+
+
+_RATIOS = (2, 0.5, 2.5, 0.4, 4, 0.25, 5, 0.2, 10, 0.1)
+
+
+def _far(a: float, b: float) -> bool:
+    """Two lengths a slip can tell apart: 15 % or more, and no plain ratio."""
+    if a < 5 or b < 5:
+        return False
+    r = a / b
+    return abs(r - 1) >= 0.15 and all(abs(r / x - 1) >= 0.03 for x in _RATIOS)
+
+
+def _own_elsewhere(ln: GenLine, label: str, gen: Generated) -> list[str]:
+    """The student's own reading of the same segment at other positions (as written)."""
+    seg = ln.operands[0]
+    mine = float(seg.text.replace(",", "."))
+    out = []
+    for p in gen.positions:
+        if p.label == label:
+            continue
+        for other in p.lines:
+            if "reading" in other.tags and other.operands[0].name == seg.name:
+                v = float(other.operands[0].text.replace(",", "."))
+                if _far(v, mine):
+                    out.append(other.operands[0].text)
+    return out
+
+
+def _other_name(ln: GenLine, label: str, ref: Reference, gen: Generated) -> list[str]:
+    """Readings of another segment of the same plan at the same position, as the student
+    wrote them, that differ from this one and from every value this segment has."""
+    seg = ln.operands[0]
+    mine = float(seg.text.replace(",", "."))
+    sc = _scales(gen)
+    kl, kv, ka = sc.get("Кl", 1e-3), sc.get("Kv"), sc.get("Ka")
+    elsewhere = [ref.reading_mm(seg.name, k, kl, kv, ka) for k in range(len(ref.labels))]
+    out = []
+    for p in gen.positions:
+        if p.label != label:
+            continue
+        for other in p.lines:
+            if "reading" not in other.tags or other.operands[0].name == seg.name or \
+                    other.operands[1].name != ln.operands[1].name:
+                continue
+            v = float(other.operands[0].text.replace(",", "."))
+            if _far(v, mine) and all(x is None or _far(v, x) or abs(v - x) > 3
+                                     for x in elsewhere):
+                out.append(other.operands[0].text)
+    return out
+
+
+def _segment_of_force(ln: GenLine, label: str, gen: Generated) -> tuple[str, str] | None:
+    """In ``Мур = R21∙h21∙Кl``: the reaction's name and its segment as written."""
+    for op in ln.operands:
+        if not re.fullmatch(r"R\d\d", op.name):
+            continue
+        for p in gen.positions:
+            if p.label != label:
+                continue
+            for other in p.lines:
+                if other.lhs in (op.name, _reversed(op.name)) and "reaction" in other.tags:
+                    mm = other.operands[0].text
+                    kp = float(other.operands[1].text.replace(",", "."))
+                    if float(mm.replace(",", ".")) > 3 and abs(kp - 1) > 0.15:
+                        return op.name, mm
+    return None
 
 
 def _other_arms(ln: GenLine, label: str, ref: Reference, gen: Generated):
@@ -617,12 +801,169 @@ def _apply(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated,
     if kind == "sign":
         return replace(ln, result_text=_fmt(-ln.result, ln.digits)), ln.lhs
     if kind == "unit":
-        return replace(ln, unit="кН"), ln.lhs
+        return replace(ln, unit={"Н": "кН", "Нм": "кНм"}.get(ln.unit, "кН")), ln.lhs
+    if kind == "unit-down":  # the number of kN (kN·m) with the unit N (N·m)
+        return replace(ln, result_text=_fmt(ln.result / 1000, ln.digits)), ln.lhs
+    if kind == "coriolis":  # aᵏ = ω·v_r: the factor 2 left out
+        return replace(ln, formula=ln.formula.replace("2∙", "", 1)), ln.lhs
+    if kind == "reuse":
+        text = rng.choice(_own_elsewhere(ln, label, gen))
+        return replace(ln, operands=(replace(ln.operands[0], text=text),
+                                     *ln.operands[1:])), ln.operands[0].name
+    if kind == "label":
+        text = rng.choice(_other_name(ln, label, ref, gen))
+        return replace(ln, operands=(replace(ln.operands[0], text=text),
+                                     *ln.operands[1:])), ln.operands[0].name
+    if kind == "segment-for-force":
+        name, mm = _segment_of_force(ln, label, gen)  # type: ignore[misc]
+        ops = tuple(replace(op, text=mm) if op.name == name else op for op in ln.operands)
+        return replace(ln, operands=ops), name
     name, v = rng.choice(_other_arms(ln, label, ref, gen))
     ops = tuple(replace(op, text=_fmt(v, decimals=2)) if op.name == name else op
                 for op in ln.operands)
     return replace(ln, operands=ops), name
 
 
-__all__ = ["FAULT_KINDS", "KIND_OF_FAULT", "Fault", "GenLine", "Generated", "generate",
-           "inject"]
+# --- measuring the checker on a class of synthetic students ---------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Scores:
+    """How the checker does on a class of generated works (:func:`score`).
+
+    ``recall`` — planted faults found as a fault of their own at their position and
+    name; ``cause_accuracy`` — of those, the share with the planted kind; ``root_attribution``
+    — of the faults the checker reports (primary wrong findings) in faulty works, the share
+    that are planted faults (a consequence charged as a fault lowers it); ``false_alarms`` —
+    wrong findings on lines nothing was planted in or carried to, and anything wrong in a
+    correct work.
+    """
+
+    works: int
+    variants: int
+    clean_works: int
+    planted: int
+    found: int
+    cause_right: int
+    reported: int
+    reported_roots: int
+    false_alarms: int
+    misses: tuple[str, ...] = ()
+    alarms: tuple[str, ...] = ()
+    miscaused: tuple[str, ...] = ()
+    not_roots: tuple[str, ...] = ()  # faults reported that are no planted fault
+
+    @property
+    def recall(self) -> float:
+        return self.found / self.planted if self.planted else 1.0
+
+    @property
+    def cause_accuracy(self) -> float:
+        return self.cause_right / self.found if self.found else 1.0
+
+    @property
+    def root_attribution(self) -> float:
+        return self.reported_roots / self.reported if self.reported else 1.0
+
+    def summary(self) -> str:
+        return (f"{self.works} works over {self.variants} variants ({self.clean_works} "
+                f"correct, {self.planted} planted faults): recall {self.recall:.3f}, false "
+                f"alarms {self.false_alarms}, root attribution {self.root_attribution:.3f}, "
+                f"cause named right {self.cause_accuracy:.3f}")
+
+
+def _plan_class(variants, works: int, rng: random.Random):
+    """(variant, kinds) for each work: every fault kind alone in every variant where it
+    fits, then combinations of 2–3 kinds, and one correct work in six."""
+    plan = []
+    for v in variants:
+        plan.append((v, ()))
+        plan += [(v, (k,)) for k in FAULT_KINDS]
+    i = 0
+    while len(plan) < works:
+        v = variants[i % len(variants)]
+        i += 1
+        plan.append((v, () if i % 6 == 0 else tuple(rng.sample(FAULT_KINDS,
+                                                              rng.choice((2, 3))))))
+    return plan
+
+
+def score(variants, works: int = 200, *, seed: int = 0, noise_mm: float = 0.5,
+          positions: int = 3, dump: Path | None = None) -> Scores:
+    """Generate ``works`` students over ``variants`` (paths), read with drafting noise of
+    ``noise_mm``, each at ``positions`` positions, faults planted alone and in
+    combination (:func:`inject`), check them and score the checker (:class:`Scores`). A
+    fault kind that does not fit a work (no suitable line) is left out of it."""
+    from .checks import check_work, reference_for
+    from .student import loads_student
+
+    rng = random.Random(seed)
+    variants = [Path(v) for v in variants]
+    labels = {}
+    for v in variants:
+        ref = reference_for(v)
+        labels[v] = [p.label for p in generate(v, ref=ref).positions]
+    planted = found = cause = reported = roots = alarms_n = clean = 0
+    misses, alarms, miscaused, not_roots = [], [], [], []
+    plan = _plan_class(variants, works, rng)
+    for n, (v, kinds) in enumerate(plan):
+        ref = reference_for(v)
+        labs = labels[v]
+        pos = tuple(sorted(rng.sample(labs, min(positions, len(labs))), key=labs.index))
+        gen = generate(v, positions=pos, variant_ref=str(v.resolve()), ref=ref,
+                       drafting=Drafting(noise_mm, random.Random(seed * 7919 + n)),
+                       student=f"student {n}")
+        faults: tuple[Fault, ...] = ()
+        fits = []
+        for k in kinds:
+            try:
+                inject(gen, (*fits, k), random.Random(n), ref)
+                fits.append(k)
+            except ValueError:
+                continue
+        if fits:
+            gen, faults = inject(gen, tuple(fits), random.Random(n), ref)
+        else:
+            clean += 1
+        report = check_work(loads_student(gen.toml(), f"<student {n}>.toml"))
+        if dump is not None:  # the works, to look at a miss or an alarm
+            Path(dump).mkdir(parents=True, exist_ok=True)
+            (Path(dump) / f"{n:03d}-{v.stem}.toml").write_text(gen.toml(), encoding="utf-8")
+        touched = {f.line for f in faults} | {t for f in faults for t in f.carried}
+        wrong = [f for f in report.findings if f.verdict == "wrong"]
+        primary = [f for f in wrong if f.primary]
+        tag = f"{v.stem} #{n}"
+        for fault in faults:
+            planted += 1
+            hit = [f for f in primary if f.position == fault.position and
+                   fault.quantity in f.quantity.split(" = ")]
+            if not hit:
+                misses.append(f"{tag} {fault.kind} {fault.position} {fault.quantity}: "
+                              f"{fault.line}")
+                continue
+            found += 1
+            if any(f.kind == fault.finding_kind for f in hit):
+                cause += 1
+            else:
+                miscaused.append(f"{tag} {fault.kind}→{hit[0].kind} {fault.position} "
+                                 f"{fault.quantity}: {hit[0].explanation_en}")
+        if faults:
+            reported += len(primary)
+            for f in primary:
+                if any(f.position == x.position and x.quantity in f.quantity.split(" = ")
+                       for x in faults):
+                    roots += 1
+                else:
+                    not_roots.append(f"{tag} {f.kind} {f.where} {f.quantity}: {f.line} — "
+                                     f"{f.explanation_en}")
+        for f in wrong:
+            if f.line not in touched:
+                alarms_n += 1
+                alarms.append(f"{tag} {f.kind} {f.where} {f.quantity}: {f.line} — "
+                              f"{f.explanation_en}")
+    return Scores(len(plan), len(variants), clean, planted, found, cause, reported, roots,
+                  alarms_n, tuple(misses), tuple(alarms), tuple(miscaused), tuple(not_roots))
+
+
+__all__ = ["FAULT_KINDS", "KIND_OF_FAULT", "Drafting", "Fault", "GenLine", "Generated",
+           "Scores", "generate", "inject", "score"]
