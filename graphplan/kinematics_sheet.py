@@ -30,7 +30,6 @@ from .sheet import (
     Arc,
     Arrow,
     Circle,
-    Figure,
     Hatch,
     Item,
     Line,
@@ -548,12 +547,11 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
 
 def diagram_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     """The kinematic diagrams s(φ), v(φ), a(φ) (matplotlib, embedded as vector graphics)."""
-    from .render.figures import diagrams_svg, fit_diagrams
+    from .render.figures import diagrams_items, fit_diagrams
 
     r = sc.layout.diagrams
     d = fit_diagrams(analysis.mech, analysis.cycle, r.width, r.height)
-    svg = diagrams_svg(d, r.width, r.height, lang)
-    return [Figure((r.x0, r.y0), r.width, r.height, svg, layer="diagrams", id="kin-diagrams")]
+    return [diagrams_items(d, (r.x0, r.y0), r.width, r.height, lang, id="kin-diagrams")]
 
 
 __all__ = ["kinematics_sheet", "plan_items", "position_plan_items", "title_block"]

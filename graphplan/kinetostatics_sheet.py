@@ -47,7 +47,6 @@ from .sheet import (
     THIN,
     Arrow,
     Circle,
-    Figure,
     Item,
     Line,
     Page,
@@ -245,25 +244,24 @@ def _kp(scale: Scale, lang: str) -> str:
 
 
 def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
-    """Mур(φ) over the turn (exact), the positions marked: matplotlib, embedded as vector."""
+    """Mур(φ) over the turn (exact), the positions marked: matplotlib, played into the
+    sheet's own items (:mod:`graphplan.render.mpl_items`: its letters stay text)."""
     from .render.force_tables import moment_curve
+    from .render.mpl_items import figure_items
 
     curve = moment_curve(analysis)
-    svg = moment_svg(curve, box.width, box.height, lang)
-    return [Figure((box.x0, box.y0), box.width, box.height, svg, layer="diagrams",
-                   id="s2-moment-curve")]
+    fig = moment_figure(curve, box.width, box.height, lang)
+    return [figure_items(fig, (box.x0, box.y0), id="s2-moment-curve", lang=lang)]
 
 
-def moment_svg(curve, width_mm: float, height_mm: float, lang: str) -> str:
-    """The curve Mур(φ) of crank travel, positions numbered, as a matplotlib SVG."""
-    import io
-
+def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
+    """The curve Mур(φ) of crank travel, positions numbered, as a matplotlib figure."""
     import matplotlib
     from matplotlib.figure import Figure as MplFigure
 
-    from .render.figures import HASH_SALT, MM, _font
+    from .render.figures import MM, _font, spaced_labels
 
-    rc = {"svg.fonttype": "path", "svg.hashsalt": HASH_SALT, "axes.unicode_minus": False}
+    rc = {"axes.unicode_minus": False}
     title = WORDS[lang]["curve"]
     unit = "Н·м" if lang == "ru" else "N·m"
     with matplotlib.rc_context(rc):
@@ -276,7 +274,9 @@ def moment_svg(curve, width_mm: float, height_mm: float, lang: str) -> str:
         ax.axhline(0.0, color="black", lw=0.25 * MM)
         ax.set_xlim(0, 360)
         ax.set_xticks(curve.position_travel_deg)
-        ax.set_xticklabels(curve.labels, **_font("0123456789()", 2.5))
+        ax.set_xticklabels(spaced_labels(curve.position_travel_deg, list(curve.labels),
+                                         (width_mm - 28.0) / 360.0),
+                           **_font("0123456789()", 2.5))
         for lab in ax.get_yticklabels():
             lab.set(**_font("0123456789-", 2.5))
         ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", 2.5)["fontsize"])
@@ -284,9 +284,7 @@ def moment_svg(curve, width_mm: float, height_mm: float, lang: str) -> str:
             sp.set_linewidth(0.25 * MM)
         ax.set_ylabel(f"Mур, {unit}", **_font(f"Mур, {unit}", 3.5))
         fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
-        buf = io.StringIO()
-        fig.savefig(buf, format="svg", metadata={"Date": None})
-    return buf.getvalue()
+    return fig
 
 
-__all__ = ["kinetostatics_sheet", "moment_svg", "sheet2_positions"]
+__all__ = ["kinetostatics_sheet", "moment_figure", "sheet2_positions"]

@@ -1,7 +1,6 @@
 """Kinematic diagrams s, v, a of the output link and the method of chords; their figure."""
 
 import math
-import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
@@ -12,7 +11,14 @@ from graphplan.diagrams import KinematicDiagrams, kinematic_diagrams, output_mot
 from graphplan.errors import InputError, LayoutError
 from graphplan.files import bundled_example
 from graphplan.loader import load
-from graphplan.render.figures import TEXT, diagrams_size, diagrams_svg, fit_diagrams, svg_viewbox
+from graphplan.render.figures import (
+    TEXT,
+    diagrams_figure,
+    diagrams_items,
+    diagrams_size,
+    fit_diagrams,
+)
+from graphplan.sheet import Polyline, Text
 from graphplan.units import SERIES
 
 NAMES = ("press", "fourbar", "shaper", "scotch_yoke", "offset_slider", "shaper_prp",
@@ -190,43 +196,45 @@ def test_bad_arguments(variants):
 
 # ------------------------------------------------------------------------------- figure
 
-SVG_NS = "{http://www.w3.org/2000/svg}"
-
-
-def _mm(attr: str) -> float:
-    assert attr.endswith("pt")
-    return float(attr[:-2]) * 25.4 / 72
+def _bounds(group):
+    xs, ys = [], []
+    for it in group.items:
+        pts = it.points if isinstance(it, Polyline) else [it.pos]
+        xs += [p[0] for p in pts]
+        ys += [p[1] for p in pts]
+    return min(xs), min(ys), max(xs), max(ys)
 
 
 @pytest.fixture(scope="module")
-def press_svg(diagrams):
-    return diagrams_svg(diagrams["press"], 340, 230, "ru")
+def press_items(diagrams):
+    return diagrams_items(diagrams["press"], (10.0, 20.0), 340, 230, "ru")
 
 
-def test_figure_size_paths_and_determinism(diagrams, press_svg):
-    root = ET.fromstring(press_svg.encode("utf-8"))
-    assert root.tag == SVG_NS + "svg"
-    assert _mm(root.get("width")) == pytest.approx(340, abs=0.1)
-    assert _mm(root.get("height")) == pytest.approx(230, abs=0.1)
-    w, h = svg_viewbox(press_svg)
-    assert (w * 25.4 / 72, h * 25.4 / 72) == pytest.approx((340, 230), abs=0.1)
-    assert len(root.findall(f".//{SVG_NS}path")) > 50
-    assert root.find(f".//{SVG_NS}text") is None  # glyphs as paths
-    assert "<dc:date>" not in press_svg
-    assert diagrams_svg(diagrams["press"], 340, 230, "ru") == press_svg
+def test_figure_size_items_and_determinism(diagrams, press_items):
+    """The diagrams are the sheet's own items inside their box: lines as polylines in sheet
+    mm, letters as texts (not glyph outlines); the same diagrams give the same items."""
+    x0, y0, x1, y1 = _bounds(press_items)
+    assert x0 >= 10.0 - 1e-6 and y0 >= 20.0 - 1e-6 and x1 <= 350.0 + 1e-6 and y1 <= 250.0 + 1e-6
+    lines = [it for it in press_items.items if isinstance(it, Polyline)]
+    texts = [it for it in press_items.items if isinstance(it, Text)]
+    assert len(lines) > 50 and len(texts) > 20
+    assert all(t.italic for t in texts)  # slanted like every text of the sheet
+    assert any(t.text.startswith("Kφ = ") and "," in t.text for t in texts)  # decimal comma
+    assert diagrams_items(diagrams["press"], (10.0, 20.0), 340, 230, "ru") == press_items
 
 
 @pytest.mark.parametrize(("name", "lang"), [("press", "en"), ("fourbar", "ru"),
                                             ("shaper", "en")])
 def test_figure_other_languages_and_rockers(diagrams, name, lang):
-    svg = diagrams_svg(diagrams[name], 330, 220, lang)
-    root = ET.fromstring(svg.encode("utf-8"))
-    assert _mm(root.get("width")) == pytest.approx(330, abs=0.1)
+    fig = diagrams_figure(diagrams[name], 330, 220, lang)
+    assert fig.get_size_inches() * 25.4 == pytest.approx((330, 220))
+    g = diagrams_items(diagrams[name], (0.0, 0.0), 330, 220, lang)
+    assert any(isinstance(t, Text) for t in g.items)
 
 
 def test_figure_does_not_fit(diagrams):
     with pytest.raises(LayoutError, match="kinematic diagrams need"):
-        diagrams_svg(diagrams["press"], 200, 230)
+        diagrams_figure(diagrams["press"], 200, 230)
 
 
 def test_labels_avoid_blank_osifont_letters():
@@ -245,9 +253,8 @@ def test_fit_to_a_box_of_the_sheet(variants):
     assert w <= 200 and h <= 130
     assert d.length_mm % d.intervals == 0  # nodes on whole millimetres
     assert d.length_mm >= 120 and d.height_mm >= 25
-    svg = diagrams_svg(d, 200, 130, "ru")
-    root = ET.fromstring(svg.encode("utf-8"))
-    assert _mm(root.get("height")) == pytest.approx(130, abs=0.1)
+    g = diagrams_items(d, (0.0, 0.0), 200, 130, "ru")
+    assert _bounds(g)[3] <= 130.0 + 1e-6
     with pytest.raises(LayoutError, match="do not fit"):
         fit_diagrams(mech, cycle, 90, 60)
     with pytest.raises(InputError, match="intervals"):

@@ -430,68 +430,6 @@ def test_synthetic_sheet_uses_every_gost_line_type_and_style():
     assert entities(doc, "construction") and entities(doc, "dimensions")
 
 
-def _figure_masks(name, fid, x, y, w, h, px_per_mm=5):
-    """Dark pixels of a figure: CairoSVG of the SVG's picture vs ezdxf's drawing of its layer."""
-    from ezdxf.addons.drawing import Frontend, RenderContext, layout
-    from ezdxf.addons.drawing import svg as dsvg
-    from ezdxf.addons.drawing.config import (
-        BackgroundPolicy,
-        Configuration,
-        LineweightPolicy,
-    )
-    from ezdxf.math import BoundingBox2d
-    from PIL import Image
-
-    nested = re.search(rf'<g class="figure" id="{re.escape(fid)}">(<svg .*?</svg>)</g>',
-                       svg_text(name), re.S).group(1)
-    alone = ('<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/'
-             f'xlink" width="{A1[0]}mm" height="{A1[1]}mm" viewBox="0 0 {A1[0]} {A1[1]}">'
-             f"{nested}</svg>")
-    dpi = px_per_mm * 25.4
-    doc = dxf_doc(name)
-    backend = dsvg.SVGBackend()
-    cfg = Configuration(background_policy=BackgroundPolicy.WHITE,
-                        lineweight_policy=LineweightPolicy.ABSOLUTE)
-    Frontend(RenderContext(doc), backend, config=cfg).draw_layout(
-        doc.modelspace(), filter_func=lambda e: e.dxf.layer == f"figure-{fid}")
-    drawn = backend.get_string(
-        layout.Page(*A1, layout.Units.mm, margins=layout.Margins.all(0)),
-        settings=layout.Settings(fit_page=False, scale=1),
-        render_box=BoundingBox2d([(0, 0), A1]))
-
-    def dark(text):
-        png = svg_to_png_bytes(text, dpi)
-        return np.asarray(Image.open(io.BytesIO(png)).convert("L")) < 160
-
-    a, b = dark(alone), dark(drawn)
-    box = (slice(round(y * px_per_mm), round((y + h) * px_per_mm)),
-           slice(round(x * px_per_mm), round((x + w) * px_per_mm)))
-    outside = b.copy()
-    outside[box] = False
-    return a[box], b[box], int(outside.sum())
-
-
-@pytest.mark.parametrize("name", ["press-1", "press-2", "shaper-1"])
-def test_dxf_figures_are_the_pictures_as_vectors(name):
-    """The figure's layer drawn by ezdxf covers what resvg draws of the picture."""
-    from PIL import Image, ImageFilter
-
-    figures = [f for d in svg_layers(name).values() for f in d.figures]
-    assert figures
-    for fid, x, y, w, h in figures:
-        a, b, outside = _figure_masks(name, fid, x, y, w, h)
-        assert outside == 0  # nothing of the figure leaves its box
-
-        def grow(m):
-            img = Image.fromarray(m.astype(np.uint8) * 255).filter(ImageFilter.MaxFilter(5))
-            return np.asarray(img) > 0
-
-        assert a.sum() > 5000 and b.sum() > 5000
-        # ±2 px (0.4 mm) for the different line caps and antialiasing
-        assert (a & ~grow(b)).sum() / a.sum() < 0.002, fid
-        assert (b & ~grow(a)).sum() / b.sum() < 0.002, fid
-
-
 @pytest.mark.parametrize("name", ["press-1", "synthetic"])
 def test_dxf_paper_space_plots_the_sheet_at_one_to_one(name):
     doc = dxf_doc(name)

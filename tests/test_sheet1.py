@@ -155,15 +155,15 @@ def test_plan_of_positions_is_at_scale():
         assert math.dist(ln.p0, ln.p1) == pytest.approx(80.0, abs=1e-9)
 
 
-def test_diagrams_are_embedded_as_vector_graphics():
+def test_diagrams_are_the_sheets_own_vector_items():
+    """The kinematic diagrams are polylines and slanted texts of the sheet (issue 18), not a
+    picture pasted in: no nested SVG, no glyph outlines, nothing raster."""
     _, sheet, svg = built("press")
-    figs = [it for it in iter_leaves(sheet.items) if isinstance(it, Figure)]
-    assert len(figs) == 1
+    assert not [it for it in iter_leaves(sheet.items) if isinstance(it, Figure)]
     root = ET.fromstring(svg)
     g = root.find(f".//{SVG}g[@id='kin-diagrams']")
-    nested = g.find(f"{SVG}svg")
-    assert nested is not None and nested.get("viewBox")
-    assert len(nested.findall(f".//{SVG}path")) > 20
+    assert g.find(f".//{SVG}svg") is None
+    assert len(g.findall(f".//{SVG}polyline")) > 20 and len(g.findall(f".//{SVG}text")) > 10
     assert root.find(f".//{SVG}image") is None  # nothing raster
     ids = [e.get("id") for e in root.iter() if e.get("id")]
     assert len(ids) == len(set(ids))

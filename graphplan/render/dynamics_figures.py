@@ -342,19 +342,6 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> l
     return b.finish("s3-em-label")
 
 
-def _spaced(xs, labels: list, mm_per_unit: float) -> list:
-    """The labels of ticks at xs with those that would touch the previous one left blank."""
-    out, last = [], -math.inf
-    for x, lab in zip(xs, labels, strict=True):
-        half = 0.5 * (0.85 * SMALL_H * len(lab))
-        if (x * mm_per_unit - half) - last < 1.0:
-            out.append("")
-        else:
-            out.append(lab)
-            last = x * mm_per_unit + half
-    return out
-
-
 def omega_items(u, box: Rect, lang: str) -> list:
     """ω(φ) of the steady motion with Jп + Jрот + Jм and constant Mд (energy form), with
     ωmax, ωmin, ωср and δ — a matplotlib plot turned into the sheet's items."""
@@ -362,7 +349,7 @@ def omega_items(u, box: Rect, lang: str) -> list:
     from matplotlib.figure import Figure
     from matplotlib.ticker import MaxNLocator
 
-    from .figures import _font
+    from .figures import _font, spaced_labels
 
     w = WORDS[lang]
     s = u.simulation
@@ -379,7 +366,7 @@ def omega_items(u, box: Rect, lang: str) -> list:
         ax.set_xlim(0, float(deg[-1]))
         ticks = np.degrees(u.model.moment.pos_tau)
         ax.set_xticks(ticks)
-        ax.set_xticklabels(_spaced(ticks, list(u.model.moment.labels),
+        ax.set_xticklabels(spaced_labels(ticks, list(u.model.moment.labels),
                                    (width_mm - 30.0) / float(deg[-1])),
                            **_font("0123456789()", SMALL_H))
         ax.grid(True, color="black", lw=0.25 * MM)

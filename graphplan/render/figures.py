@@ -3,27 +3,19 @@
 Sheet 1 carries the three diagrams at their own scales: one millimetre of the figure
 is one millimetre of the sheet, so the abscissa is ``length_mm`` long and an ordinate
 of y mm stands for ``y·Ks`` (``Kv``, ``Ka``). :func:`fit_diagrams` chooses the length
-and the heights for the box the sheet gives, :func:`diagrams_svg` draws them.
-
-The figure is a standalone SVG whose root has ``width``/``height`` in pt
-(1 pt = 25.4/72 mm) and ``viewBox="0 0 w h"`` in the same pt. A sheet embeds it as a
-nested SVG element in millimetres (:class:`graphplan.sheet.Figure`, written by
-:func:`graphplan.render.svg.embedded_svg`)::
-
-    <svg x="X" y="Y" width="W" height="H" viewBox="0 0 w h"> …the figure's content… </svg>
-
-with X, Y the top-left corner on the sheet and W×H the size the figure was drawn for
-(mm, the sheet's user unit), so the content is scaled 25.4/72 and not distorted; its
-ids get the figure's prefix so that pictures never clash. Glyphs are paths
-(``svg.fonttype = "path"``): the figure does not depend on installed fonts when
-rendered. No date and a fixed ``svg.hashsalt``: the same diagrams give the same text.
+and the heights for the box the sheet gives, :func:`diagrams_figure` draws them with
+matplotlib and :func:`diagrams_items` plays that drawing into the sheet's own items
+(:mod:`graphplan.render.mpl_items`): its lines become polylines in sheet millimetres,
+its letters :class:`~graphplan.sheet.Text` in the sheet's lettering (GOST 2.304 type
+B, slanted; decimal comma on Russian sheets), so that they stay text in the SVG, the
+DXF and the PDF and the layout checks see them. matplotlib lays the letters out in the
+font the sheet letters them in (:func:`_font`: osifont, bundled, where it draws every
+character of a text, else DejaVu Sans), so their widths agree.
 """
 
 from __future__ import annotations
 
-import io
 import math
-import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -43,7 +35,6 @@ TEXT_H, SMALL_H = 3.5, 2.5  #: capital heights of labels and of position numbers
 #: box; above each curve (the arrow and the label), below it, and the room the position
 #: numbers need under the φ axis.
 TOP, BOTTOM, GAP, MARGIN_X, PAD_TOP, PAD_BOT, BELOW_AXIS = 6.0, 1.0, 3.0, 2.0, 8.0, 1.5, 5.5
-HASH_SALT = "graphplan"  #: fixed salt of matplotlib's SVG ids: the same figure, the same text
 
 TEXT = {
     "en": {"exact": "exact", "chords": "method of chords", "m": "m", "s": "s", "rad": "rad",
@@ -77,6 +68,20 @@ def _font(text: str, height_mm: float) -> dict:
             "fontsize": height_mm / fonts.cap_ratio(family) * MM}
 
 
+def spaced_labels(xs, labels, mm_per_unit: float, height: float = SMALL_H) -> list[str]:
+    """Labels of ticks at ``xs`` (data units, ``mm_per_unit`` mm each) with those that would
+    touch the previous shown one left blank: close positions (a, 1; 0′, 7) never overprint."""
+    out, last = [], -math.inf
+    for x, lab in zip(xs, labels, strict=True):
+        half = 0.5 * fonts.text_width(str(lab), height) + 0.3 * height
+        if x * mm_per_unit - half - last < 1.0:
+            out.append("")
+        else:
+            out.append(str(lab))
+            last = x * mm_per_unit + half
+    return out
+
+
 @dataclass(frozen=True, slots=True)
 class _Frame:
     """Geometry of the figure in mm: the axes box width and each panel's ordinate range."""
@@ -106,7 +111,7 @@ def _frame(d: KinematicDiagrams) -> _Frame:
 
 
 def diagrams_size(d: KinematicDiagrams) -> tuple[float, float]:
-    """The smallest ``(width, height)`` in mm that :func:`diagrams_svg` can draw ``d`` in."""
+    """The smallest ``(width, height)`` in mm that :func:`diagrams_figure` can draw ``d`` in."""
     f = _frame(d)
     return f.width, f.height
 
@@ -153,9 +158,45 @@ def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: floa
                       "mm at any whole-mm length and height")
 
 
-def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
-                 lang: str = "ru") -> str:
-    """SVG text of the diagrams s(φ), v(φ), a(φ), exactly ``width_mm`` × ``height_mm``.
+def _position_numbers(ax, d: KinematicDiagrams, k: int, K: float, x_per_mm: float,
+                      v_end: float) -> None:
+    """The numbers of the main positions on the φ axis of panel k, each on the side of the
+    axis away from the curve and the chords there (below where they run above), the one
+    at the origin right of the ordinate axis, close ones left out (:func:`spaced_labels`)."""
+    curve = (d.s, d.v, d.a)[k]
+    if k == 1:
+        cx, cy = np.r_[0.0, d.mid_deg, 360.0], np.r_[v_end, d.v_chords, v_end]
+    else:
+        cx, cy = d.node_deg, (d.s_nodes, d.v_chords, d.a_chords)[k]
+    named = [(x, s) for x, s in zip(d.node_deg, d.node_labels, strict=True) if s]
+    shown = spaced_labels([x for x, _ in named], [s for _, s in named], 1.0 / x_per_mm)
+    gap = 1.6 * K
+    for (x, _), lab in zip(named, shown, strict=True):
+        if not lab:
+            continue
+        half = (0.5 * fonts.text_width(lab, SMALL_H) + 1.0) * x_per_mm
+        lo_x, hi_x = (x, x + 2 * half) if x <= 1e-9 else (x - half, x + half)
+        sel = (d.phi_deg >= lo_x) & (d.phi_deg <= hi_x)
+        vals = np.r_[curve[sel], np.interp([lo_x, x, hi_x], cx, cy)]
+        above = vals.max() <= 0.0 or (vals.min() < 0.0 < vals.max() and vals.mean() < 0.0)
+        ax.text(x + (0.8 * x_per_mm if x <= 1e-9 else 0.0), gap if above else -gap, lab,
+                ha="left" if x <= 1e-9 else "center", va="bottom" if above else "top",
+                **_font("0123456789", SMALL_H))
+
+
+def diagrams_items(d: KinematicDiagrams, origin, width_mm: float, height_mm: float,
+                   lang: str = "ru", *, id: str = "kin-diagrams"):
+    """The diagrams of :func:`diagrams_figure` as a group of sheet items whose box has its
+    top-left corner at ``origin`` (mm)."""
+    from .mpl_items import figure_items
+
+    return figure_items(diagrams_figure(d, width_mm, height_mm, lang), origin, id=id,
+                        lang=lang)
+
+
+def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
+                    lang: str = "ru"):
+    """matplotlib figure of the diagrams s(φ), v(φ), a(φ), ``width_mm`` × ``height_mm``.
 
     Three stacked axes share the φ axis (crank travel from the first position, the
     main positions numbered at the nodes), drawn at the scales of ``d`` and centred in
@@ -188,8 +229,8 @@ def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    rc = {"svg.fonttype": "path", "svg.hashsalt": HASH_SALT, "axes.unicode_minus": False,
-          "lines.solid_capstyle": "round", "lines.solid_joinstyle": "round"}
+    rc = {"axes.unicode_minus": False, "lines.solid_capstyle": "round",
+          "lines.solid_joinstyle": "round"}
     with matplotlib.rc_context(rc):
         fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4))
         x0 = (width_mm - f.box_w) / 2
@@ -218,7 +259,8 @@ def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
             ax.set_xticks(d.node_deg[[bool(s) for s in d.node_labels]])
             ax.set_xticks([x for x, s in zip(d.node_deg, d.node_labels, strict=True) if not s],
                           minor=True)
-            ax.set_xticklabels([s for s in d.node_labels if s], **_font("0123456789", SMALL_H))
+            ax.set_xticklabels([])
+            _position_numbers(ax, d, k, K, x_per_mm, v_end)
             ax.tick_params(axis="x", which="both", direction="inout", width=THIN * MM,
                            length=1.5 * MM, pad=0.6 * MM)
             ax.tick_params(axis="x", which="major", length=2.5 * MM)
@@ -244,7 +286,8 @@ def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
             for r in chords[: d.intervals]:  # rays from the pole, parallel to the chords
                 ax.plot([px, 0.0], [0.0, r], "-", color="0.45", lw=0.7 * THIN * MM)
             ax.plot([px], [0.0], "o", color="black", markersize=1.2 * MM, clip_on=False)
-            ax.text(px, 1.2 * K, f"P{k}", ha="center", va="bottom", **_font("P1", TEXT_H))
+            ax.text(px - 2.5 * x_per_mm, 0.0, f"P{k}", ha="right", va="center",
+                    **_font("P1", TEXT_H))  # left of the pole: clear of its rays
             ax.plot(d.phi_deg, (d.v, d.a)[k - 1], "-k", lw=THIN * MM)
             if k == 1:
                 ax.plot(np.r_[0.0, d.mid_deg, 360.0], np.r_[v_end, chords, v_end], "-k",
@@ -267,13 +310,4 @@ def diagrams_svg(d: KinematicDiagrams, width_mm: float, height_mm: float,
                    bbox_to_anchor=((x0 + f.box_w) / width_mm, 1 - 0.5 / height_mm),
                    prop=legend_font,
                    handlelength=2.5, borderaxespad=0.0)
-        buf = io.StringIO()
-        fig.savefig(buf, format="svg", metadata={"Date": None})
-    return buf.getvalue()
-
-
-def svg_viewbox(svg_text: str) -> tuple[float, float]:
-    """Width and height of the root ``viewBox`` of ``svg_text`` (user units: pt here)."""
-    root = ET.fromstring(svg_text.encode("utf-8"))
-    _, _, w, h = (float(v) for v in root.get("viewBox", "").replace(",", " ").split())
-    return w, h
+    return fig

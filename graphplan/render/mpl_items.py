@@ -99,7 +99,8 @@ class _RecorderMixin:
         stroke_rgba = gc.get_rgb()
         lw = float(gc.get_linewidth()) / MM
         stroke = lw > 0 and _visible(stroke_rgba) and (gc.get_alpha() or 1.0) > 0
-        fill = _visible(rgbFace)
+        # a white face (axes, legend) only masks the paper: the sheet does not paint it
+        fill = _visible(rgbFace) and min(float(c) for c in rgbFace[:3]) < 1.0 - 1e-3
         if not (stroke or fill):
             return
         _offset, dashes = gc.get_dashes()
@@ -189,7 +190,10 @@ def figure_items(fig, origin, *, layer: str = "diagrams", id: str, lang: str = "
     w, h = fig.bbox.width, fig.bbox.height
     rec = Recorder()
     rec._setup(w, h, origin, layer, lang)
-    fig.draw(rec)
+    import matplotlib
+
+    with matplotlib.rc_context({"axes.unicode_minus": False}):  # osifont has no U+2212
+        fig.draw(rec)
     return Group(tuple(rec.items), layer=layer, id=id)
 
 
