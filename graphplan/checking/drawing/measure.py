@@ -1,0 +1,224 @@
+"""A plan found on the drawing laid against graphplan's construction of the same plan.
+
+graphplan builds the plan of the position (:func:`graphplan.constructions.velocity_plan`,
+:func:`~graphplan.constructions.acceleration_plan`) at the **student's** scale; each
+letter of the student's plan is matched to a point of the construction by name
+(``nBA`` = ``n_BA``; a bare ``n`` or ``k`` to the nearest component's end of that
+letter); every segment of the construction whose two ends the student lettered is
+measured between the student's points (mm) and its direction compared (degrees).
+
+Whole-plan explanations are tried before the segments are judged one by one
+(:func:`judge_plan`):
+
+* **another position** — the plan fits the construction of another position of the
+  mechanism, and not the one its caption names;
+* **scale** — the plan fits the construction scaled by one factor: it is drawn at another
+  scale than the one written (``Kv = 0,01`` written, the plan drawn at 0,02);
+* **a component left out** — a normal or Coriolis component of the construction
+  (longer than the reading precision) has no letter on the student's plan.
+
+The fit of a plan to a construction is the root mean square of the distances between
+the student's points and the construction's (mm, poles laid on each other).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..units import fold
+from .plans import FoundPlan
+
+
+@dataclass(frozen=True, slots=True)
+class Segmenting:
+    """A segment of the construction: its reading name, its ends and its role."""
+
+    name: str
+    start: str
+    end: str
+    role: str
+
+
+@dataclass(slots=True)
+class Laid:
+    """A found plan against one construction.
+
+    ``match`` maps the student's names to the construction's points; ``vectors`` the
+    measured (student) and expected (construction) place of each matched point relative to
+    the pole, mm; ``rms`` the fit; ``ratio`` the one factor that fits the student's plan
+    to the construction best, and ``rms_scaled`` the fit after it.
+    """
+
+    position: str
+    index: int
+    match: dict[str, str]
+    measured: dict[str, np.ndarray]
+    expected: dict[str, np.ndarray]
+    rms: float
+    ratio: float
+    rms_scaled: float
+    size: float
+    plan: object = None
+    segments: list[Segmenting] = field(default_factory=list)
+    unknown: list[str] = field(default_factory=list)
+
+
+def norm(name: str) -> str:
+    return fold(name).lower().replace("_", "").replace(" ", "").replace("'", "")
+
+
+def construction(ref, kind: str, k: int, scales: dict[str, float]):
+    """graphplan's plan of position k at the student's scales (``None`` without one)."""
+    from ...constructions import acceleration_plan, velocity_plan
+    from ...units import Scale
+
+    kl = Scale("Kl", scales.get("Kl", 1e-3), "m/mm")
+    kv = Scale("Kv", scales.get("Kv") or 0.01, "(m/s)/mm")
+    vp = velocity_plan(ref.mech, ref.kin, k, kl, kv)
+    if kind == "velocity":
+        return vp
+    ka = Scale("Ka", scales.get("Ka") or 0.05, "(m/s²)/mm")
+    return acceleration_plan(ref.mech, ref.kin, k, kl, ka, vp)
+
+
+def plan_segments(plan) -> list[Segmenting]:
+    """The construction's segments with the names of the points at their ends."""
+    pts = plan.points
+    names = list(pts)
+
+    def at(xy) -> str:
+        return min(names, key=lambda n: float(np.hypot(*(np.asarray(xy) - pts[n]))))
+
+    out, seen = [], set()
+    for st in plan.steps:
+        for e in st.elements:
+            if e.kind != "segment" or e.name in seen:
+                continue
+            seen.add(e.name)
+            out.append(Segmenting(e.name, at(e.start), at(e.end), e.role))
+    return out
+
+
+def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
+    """Match the student's letters to the construction's points and fit them."""
+    pole = plan.kind == "velocity" and "p" or "π"
+    by_norm = {norm(n): n for n in plan.points}
+    match: dict[str, str] = {}
+    unknown = []
+    for name in found.points:
+        if name == found.pole:
+            match[name] = pole
+        elif norm(name) in by_norm:
+            match[name] = by_norm[norm(name)]
+    p0 = np.asarray(found.points[found.pole])
+    taken = set(match.values())
+    for name in found.points:
+        if name in match:
+            continue
+        n = norm(name)
+        cands = [c for c in plan.points if c not in taken and norm(c)[:1] == n[:1] and
+                 "_" in c]
+        if not cands:
+            unknown.append(name)
+            continue
+        m = np.asarray(found.points[name]) - p0
+        best = min(cands, key=lambda c: float(np.hypot(*(m - plan.points[c]))))
+        match[name] = best
+        taken.add(best)
+    measured = {}
+    for s, c in match.items():
+        m = np.asarray(found.points[s]) - p0
+        # a letter between two points: the point that fits the construction
+        for o in found.options.get(s, ())[1:] if s != found.pole else ():
+            mo = np.asarray(o) - p0
+            if np.hypot(*(mo - plan.points[c])) < np.hypot(*(m - plan.points[c])):
+                m = mo
+        measured[c] = m
+    expected = {c: np.asarray(plan.points[c], float) for c in match.values()}
+    keys = [c for c in measured if c != pole]
+    size = max((float(np.hypot(*plan.points[c])) for c in plan.points), default=1.0)
+    if keys:
+        M = np.array([measured[c] for c in keys])
+        E = np.array([expected[c] for c in keys])
+        rms = float(np.sqrt(np.mean(np.sum((M - E) ** 2, axis=1))))
+        ee = float(np.sum(E * E))
+        ratio = float(np.sum(M * E) / ee) if ee > 0 else 1.0
+        rms_s = float(np.sqrt(np.mean(np.sum((M - ratio * E) ** 2, axis=1))))
+    else:
+        rms, ratio, rms_s = math.inf, 1.0, math.inf
+    return Laid(position, index, match, measured, expected, rms, ratio, rms_s, size, plan,
+                plan_segments(plan), unknown)
+
+
+def fits(laid: Laid, rms: float, reading_mm: float, segment: float) -> bool:
+    """A fit within the drafting tolerance: the reading precision or the segment
+    tolerance of the plan's size, whichever is larger."""
+    return rms <= max(reading_mm, segment * laid.size)
+
+
+@dataclass(frozen=True, slots=True)
+class Direction:
+    """A segment's direction on the drawing against the construction's (degrees)."""
+
+    name: str
+    measured_deg: float
+    expected_deg: float
+    error_deg: float
+    length_mm: float
+    verdict: str
+
+
+def directions(laid: Laid, reading_mm: float) -> list[Direction]:
+    """The direction of every segment the student lettered at both ends."""
+    inv = {c: s for s, c in laid.match.items()}
+    out = []
+    for sg in laid.segments:
+        if sg.start not in inv or sg.end not in inv:
+            continue
+        m = laid.measured[sg.end] - laid.measured[sg.start]
+        e = laid.expected[sg.end] - laid.expected[sg.start]
+        lm, le = float(np.hypot(*m)), float(np.hypot(*e))
+        if min(lm, le) < max(2.0, 4 * reading_mm):
+            continue  # too short to show a direction
+        am, ae = math.degrees(math.atan2(m[1], m[0])), math.degrees(math.atan2(e[1], e[0]))
+        err = (am - ae + 180.0) % 360.0 - 180.0
+        ok = max(1.0, math.degrees(math.atan(reading_mm / le)))
+        tol = max(2.0, math.degrees(math.atan(2 * reading_mm / le)))
+        v = "ok" if abs(err) <= ok else ("inaccurate" if abs(err) <= tol else "wrong")
+        out.append(Direction(sg.name, am % 360.0, ae % 360.0, err, lm, v))
+    return out
+
+
+def missing_components(laid: Laid, reading_mm: float) -> list[Segmenting]:
+    """Normal and Coriolis components of the construction the student did not letter
+    (those shorter than twice the reading precision may well be left out)."""
+    inv = set(laid.match.values())
+    out = []
+    for sg in laid.segments:
+        if sg.role not in ("normal", "coriolis") or sg.end in inv:
+            continue
+        plan = laid.plan
+        length = float(np.hypot(*(plan.points[sg.end] - plan.points[sg.start])))
+        if length >= 2 * reading_mm:
+            out.append(sg)
+    return out
+
+
+def segment_lengths(laid: Laid) -> dict[str, float]:
+    """The length (mm) on the student's plan of every reading of the construction whose
+    two ends the student lettered."""
+    inv = {c: s for s, c in laid.match.items()}
+    out = {}
+    readings = getattr(laid.plan, "readings", {})
+    for sg in laid.segments:
+        if sg.name not in readings or sg.start not in inv or sg.end not in inv:
+            continue
+        out[sg.name] = float(np.hypot(*(laid.measured[sg.end] - laid.measured[sg.start])))
+    return out
+
+
+__all__ = ["Direction", "Laid", "Segmenting", "construction", "directions", "fits", "lay",
+           "missing_components", "norm", "plan_segments", "segment_lengths"]

@@ -1,0 +1,309 @@
+"""The geometry of a drawing as a draftsman reads it: points where lines end, the lines
+between them, arrowheads, and the letters placed near the points.
+
+* **Arrowheads** — a small fill (a SOLID, a HATCH, a filled path: an arrowhead drawn as a
+  block is exploded into these) or a "V" of two short lines — mark the tip of a vector: a
+  line that stops short of a tip on its own line is carried on to the tip.
+* **Nodes** are the ends of lines, the ends within :data:`SNAP_MM` of each other taken as
+  one point; a line split into pieces or drawn as a polyline gives the same nodes.
+* **Letters**: every short text that reads as names (``p``, ``b, s3``, ``nBA``, ``π``) is
+  split into its names, and each name is given to the nearest node within reach of the
+  text (a few letter heights), preferring a node where lines meet over the loose end of
+  a construction line.
+* **Groups**: lines that touch (an end on another line, or a shared end) are one group
+  — one plan, unless the sheet draws plans over each other.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from .primitives import Drawing, Segment, Text
+
+SNAP_MM = 0.35
+"""Ends closer than this are one point (mm)."""
+TOUCH_MM = 0.3
+"""A node this close to a line lies on it (mm)."""
+ARROW_MM = 7.0
+"""Largest arrowhead (mm): a line is carried on to a tip at most this far."""
+OPTION_H = 2.0
+"""Nodes within this many letter heights of a letter's nearest node are kept as its
+other options (for a letter placed between two points)."""
+
+_NAME = re.compile(r"^[A-Za-zА-Яа-яЁёπΠ][A-Za-zА-Яа-яЁёπ0-9_'′ʹ’()]{0,6}$|^\(?\d{1,2}\)?$")
+
+
+@dataclass(slots=True)
+class Node:
+    """A point of the drawing where lines end."""
+
+    x: float
+    y: float
+    ends: int = 0  # line ends here
+    passes: int = 0  # lines passing through
+    thick: float = 0.0  # the widest line ending here
+    segments: list[int] = field(default_factory=list)
+
+    @property
+    def degree(self) -> int:
+        return self.ends + 2 * self.passes
+
+
+@dataclass(frozen=True, slots=True)
+class Letter:
+    """One name of a text, and the node it names (``None`` if none is near)."""
+
+    name: str
+    text: Text
+    node: int | None
+    distance: float
+    options: tuple[int, ...] = ()  # other nodes nearly as near (the nearest first)
+
+
+def is_names(text: str) -> bool:
+    """Whether a text reads as one or more point names (``"b, s3"``)."""
+    parts = split_names(text)
+    return bool(parts) and all(_NAME.match(p) for p in parts)
+
+
+def split_names(text: str) -> list[str]:
+    return [p for p in re.split(r"[,;\s]+", text.strip()) if p]
+
+
+class Scene:
+    """Nodes, lines, groups and letters of a drawing (see the module docstring)."""
+
+    def __init__(self, drawing: Drawing):
+        self.drawing = drawing
+        segs = [s for s in drawing.segments if not s.curve and s.length > 1e-6]
+        self.arrow_tips = self._tips(segs)
+        self.segments = self._carry_to_tips(segs)
+        self.nodes: list[Node] = []
+        self._grid: dict[tuple[int, int], list[int]] = {}
+        self.seg_nodes: list[tuple[int, int]] = []
+        for i, s in enumerate(self.segments):
+            a = self._node(s.x1, s.y1)
+            b = self._node(s.x2, s.y2)
+            self.seg_nodes.append((a, b))
+            for n in (a, b):
+                nd = self.nodes[n]
+                nd.ends += 1
+                nd.thick = max(nd.thick, s.width)
+                nd.segments.append(i)
+        self._passes()
+        self.group_of = self._groups()
+        self.letters = self._letters()
+
+    # --- arrowheads ---------------------------------------------------------------------
+
+    def _tips(self, segs: list[Segment]) -> list[tuple[tuple[float, float], ...]]:
+        """Arrowheads: small fills, and "V"s of two short lines meeting at a tip (as a
+        triangle: one end, the tip, the other end)."""
+        heads = []
+        for f in self.drawing.fills:
+            xs = [p[0] for p in f.points]
+            ys = [p[1] for p in f.points]
+            if max(xs) - min(xs) <= ARROW_MM and max(ys) - min(ys) <= ARROW_MM:
+                heads.append(f.points)
+        short = [s for s in segs if s.length < ARROW_MM * 0.8]
+        ends: dict[tuple[int, int], list[tuple[Segment, int]]] = {}
+        for s in short:
+            for e, (x, y) in enumerate(((s.x1, s.y1), (s.x2, s.y2))):
+                ends.setdefault((round(x / SNAP_MM), round(y / SNAP_MM)), []).append((s, e))
+        for lst in ends.values():
+            if len(lst) == 2:
+                (s1, e1), (s2, e2) = lst
+                tip = (s1.x1, s1.y1) if e1 == 0 else (s1.x2, s1.y2)
+                o1 = (s1.x2, s1.y2) if e1 == 0 else (s1.x1, s1.y1)
+                o2 = (s2.x2, s2.y2) if e2 == 0 else (s2.x1, s2.y1)
+                heads.append((o1, tip, o2))
+        return heads
+
+    def _carry_to_tips(self, segs: list[Segment]) -> list[Segment]:
+        """Lines that stop at the base of an arrowhead, carried on to its tip."""
+        if not self.arrow_tips:
+            return segs
+        cell = ARROW_MM
+        grid: dict[tuple[int, int], list[int]] = {}
+        cents = []
+        for h, pts in enumerate(self.arrow_tips):
+            cx = sum(p[0] for p in pts) / len(pts)
+            cy = sum(p[1] for p in pts) / len(pts)
+            cents.append((cx, cy))
+            grid.setdefault((int(cx // cell), int(cy // cell)), []).append(h)
+        out = []
+        for s in segs:
+            if s.length < 1.0:
+                out.append(s)
+                continue
+            ends = [(s.x1, s.y1), (s.x2, s.y2)]
+            for e in (0, 1):
+                ex, ey = ends[e]
+                ox, oy = ends[1 - e]
+                L = math.hypot(ex - ox, ey - oy)
+                dx, dy = (ex - ox) / L, (ey - oy) / L
+                best = 0.0
+                ci, cj = int(ex // cell), int(ey // cell)
+                for di in (-1, 0, 1):
+                    for dj in (-1, 0, 1):
+                        for h in grid.get((ci + di, cj + dj), ()):
+                            cx, cy = cents[h]
+                            along_c = (cx - ex) * dx + (cy - ey) * dy
+                            across_c = abs(-(cx - ex) * dy + (cy - ey) * dx)
+                            if not (0 < along_c <= ARROW_MM and across_c < 0.6):
+                                continue
+                            pts = self.arrow_tips[h]
+                            if min(math.hypot(px - ex, py - ey) for px, py in pts) > 1.0:
+                                continue
+                            far = max((px - ex) * dx + (py - ey) * dy for px, py in pts)
+                            best = max(best, far)
+                if best > 0.05:
+                    ends[e] = (ex + best * dx, ey + best * dy)
+            out.append(Segment(ends[0][0], ends[0][1], ends[1][0], ends[1][1], s.colour,
+                               s.width, s.layer))
+        return out
+
+    # --- nodes --------------------------------------------------------------------------
+
+    def _node(self, x: float, y: float) -> int:
+        ci, cj = int(math.floor(x / SNAP_MM)), int(math.floor(y / SNAP_MM))
+        for di in (-1, 0, 1):
+            for dj in (-1, 0, 1):
+                for n in self._grid.get((ci + di, cj + dj), ()):
+                    nd = self.nodes[n]
+                    if math.hypot(nd.x - x, nd.y - y) <= SNAP_MM:
+                        return n
+        self.nodes.append(Node(x, y))
+        n = len(self.nodes) - 1
+        self._grid.setdefault((ci, cj), []).append(n)
+        return n
+
+    def _seg_cells(self, s: Segment, cell: float):
+        i0, i1 = sorted((int(s.x1 // cell), int(s.x2 // cell)))
+        j0, j1 = sorted((int(s.y1 // cell), int(s.y2 // cell)))
+        if (i1 - i0 + 1) * (j1 - j0 + 1) > 4000:
+            return
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                yield (i, j)
+
+    def _passes(self) -> None:
+        """Count the lines passing through each node (not ending there)."""
+        cell = 5.0
+        grid: dict[tuple[int, int], list[int]] = {}
+        for i, s in enumerate(self.segments):
+            for c in self._seg_cells(s, cell):
+                grid.setdefault(c, []).append(i)
+        self._seg_grid = grid
+        self.on_segment: list[list[int]] = [[] for _ in self.nodes]
+        self._interior: dict[int, list[int]] = {}
+        for n, nd in enumerate(self.nodes):
+            for i in grid.get((int(nd.x // cell), int(nd.y // cell)), ()):
+                if n in self.seg_nodes[i]:
+                    continue
+                if point_segment(nd.x, nd.y, self.segments[i]) <= TOUCH_MM:
+                    nd.passes += 1
+                    self.on_segment[n].append(i)
+                    self._interior.setdefault(i, []).append(n)
+
+    def _groups(self) -> list[int]:
+        parent = list(range(len(self.segments)))
+
+        def find(i):
+            while parent[i] != i:
+                parent[i] = parent[parent[i]]
+                i = parent[i]
+            return i
+
+        def union(a, b):
+            ra, rb = find(a), find(b)
+            if ra != rb:
+                parent[ra] = rb
+
+        for n, nd in enumerate(self.nodes):
+            segs = nd.segments + self.on_segment[n]
+            for i in segs[1:]:
+                union(segs[0], i)
+        return [find(i) for i in range(len(self.segments))]
+
+    def node_group(self, n: int) -> int:
+        return self.group_of[self.nodes[n].segments[0]]
+
+    def _overshoot(self, n: int) -> bool:
+        """A loose end of a line that runs on past a point (a construction line drawn
+        through a point and a little beyond it)."""
+        seg = self.nodes[n].segments[0]
+        return any(seg in on for on in self.on_segment if on) if not hasattr(
+            self, "_interior") else bool(self._interior.get(seg))
+
+    # --- letters ------------------------------------------------------------------------
+
+    def _letters(self) -> list[Letter]:
+        """Each text of names to a node: the nearest one within reach of the text's box
+        (a point where lines meet counts as a little nearer, the loose end of a line run
+        on past a point as much farther). Texts are placed in order of how sure they are,
+        and a node another text already names is taken only when no other node is
+        nearly as near (two texts rarely name one point)."""
+        cell = 5.0
+        grid: dict[tuple[int, int], list[int]] = {}
+        for n, nd in enumerate(self.nodes):
+            grid.setdefault((int(nd.x // cell), int(nd.y // cell)), []).append(n)
+        cands: list[tuple[Text, list[tuple[float, int, float]]]] = []
+        for t in self.drawing.texts:
+            if not is_names(t.text):
+                continue
+            half_w = 0.35 * t.height * len(t.text)
+            reach = 3.0 * t.height + 3.0  # from the text's box
+            a = math.radians(t.angle)
+            ca, sa = math.cos(a), math.sin(a)
+            r = int((reach + half_w) // cell) + 1
+            ci, cj = int(t.x // cell), int(t.y // cell)
+            lst = []
+            for di in range(-r, r + 1):
+                for dj in range(-r, r + 1):
+                    for n in grid.get((ci + di, cj + dj), ()):
+                        nd = self.nodes[n]
+                        u = (nd.x - t.x) * ca + (nd.y - t.y) * sa
+                        v = -(nd.x - t.x) * sa + (nd.y - t.y) * ca
+                        d = math.hypot(max(abs(u) - half_w, 0.0),
+                                       max(abs(v) - 0.5 * t.height, 0.0))
+                        if d > reach:
+                            continue
+                        cost = d - 0.25 * t.height * min(nd.degree - 1, 2)
+                        if nd.degree == 1 and self._overshoot(n):
+                            cost += 2.5 * t.height
+                        lst.append((cost, n, d))
+            lst.sort()
+            cands.append((t, lst))
+        cands.sort(key=lambda c: c[1][0][0] if c[1] else math.inf)
+        claimed: set[int] = set()
+        out = []
+        for t, lst in cands:
+            best = None
+            for cost, n, d in lst:
+                c = cost + (1.5 * t.height if n in claimed else 0.0)
+                if best is None or c < best[0]:
+                    best = (c, n, d)
+            node, dist = (best[1], best[2]) if best else (None, math.inf)
+            if node is not None:
+                claimed.add(node)
+            opts = tuple(n for c, n, _d in lst if c <= best[0] + OPTION_H * t.height
+                         and n != node) if best else ()
+            for name in split_names(t.text):
+                out.append(Letter(name, t, node, dist, ((node,) + opts) if node is not None
+                                  else ()))
+        return out
+
+
+def point_segment(px: float, py: float, s: Segment) -> float:
+    """Distance from a point to a segment (mm)."""
+    dx, dy = s.x2 - s.x1, s.y2 - s.y1
+    L2 = dx * dx + dy * dy
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((px - s.x1) * dx + (py - s.y1) * dy) / L2))
+    return math.hypot(px - s.x1 - t * dx, py - s.y1 - t * dy)
+
+
+__all__ = ["ARROW_MM", "SNAP_MM", "TOUCH_MM", "Letter", "Node", "Scene", "is_names",
+           "point_segment", "split_names"]
