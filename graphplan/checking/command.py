@@ -3,6 +3,7 @@
     graphplan check STUDENT.toml [--json] [--html FILE] [--svg FILE] [-o DIR]
     graphplan check FOLDER/ [-o DIR] [--jobs N]
     graphplan check --answer-key VARIANT.toml [-o FILE]
+    graphplan check --drawing SHEET.dxf|.svg|.pdf|FOLDER --variant VARIANT.toml [...]
 
 Exit status: 0 when nothing is wrong, 1 when something is (a wrong figure, or in a
 folder a student with faults or a file that could not be checked), 2 on an error of the
@@ -47,6 +48,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                             help=f"tolerance of {what}")
     parser.add_argument("--reading", type=float, default=None, metavar="MM",
                         help="drafting reading precision, mm (default 0.5)")
+    parser.add_argument("--drawing", action="append", default=[], metavar="SHEET",
+                        help="check a drawing (.dxf, .svg, .pdf) or a folder of them "
+                        "against the variant's constructions (with --variant; repeatable)")
+    parser.add_argument("--variant", metavar="VARIANT",
+                        help="the variant file a drawing is checked against (--drawing)")
     parser.add_argument("--answer-key", metavar="VARIANT",
                         help="write the calculation graphplan itself would hand in for a "
                         "variant, as a student file (to -o FILE, or to standard output)")
@@ -87,6 +93,10 @@ def run(args) -> int:
         else:
             sys.stdout.write(text)
         return 0
+    if args.drawing:
+        from .drawing.command import run_drawings
+
+        return run_drawings(args, _tolerances(args))
     if not args.paths:
         raise StudentFileError("graphplan check: expected a student file or a folder "
                                "(or --answer-key VARIANT)")

@@ -104,7 +104,7 @@ def plan_segments(plan) -> list[Segmenting]:
 
 def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
     """Match the student's letters to the construction's points and fit them."""
-    pole = plan.kind == "velocity" and "p" or "π"
+    pole = (plan.kind == "velocity" and "p") or "π"
     by_norm = {norm(n): n for n in plan.points}
     match: dict[str, str] = {}
     unknown = []
@@ -128,13 +128,22 @@ def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
         best = min(cands, key=lambda c: float(np.hypot(*(m - plan.points[c]))))
         match[name] = best
         taken.add(best)
+    # the one factor between the student's plan and the construction, from the letters'
+    # nearest points (a plan drawn at another scale is still matched point by point)
+    first = {c: np.asarray(found.points[s]) - p0 for s, c in match.items()}
+    E0 = np.array([plan.points[c] for c in first], float)
+    M0 = np.array(list(first.values()), float)
+    ee0 = float(np.sum(E0 * E0))
+    k0 = float(np.sum(M0 * E0) / ee0) if ee0 > 0 else 1.0
+    k0 = k0 if k0 > 0.05 else 1.0
     measured = {}
     for s, c in match.items():
-        m = np.asarray(found.points[s]) - p0
+        m = first[c]
+        want = k0 * np.asarray(plan.points[c], float)
         # a letter between two points: the point that fits the construction
         for o in found.options.get(s, ())[1:] if s != found.pole else ():
             mo = np.asarray(o) - p0
-            if np.hypot(*(mo - plan.points[c])) < np.hypot(*(m - plan.points[c])):
+            if np.hypot(*(mo - want)) < np.hypot(*(m - want)):
                 m = mo
         measured[c] = m
     expected = {c: np.asarray(plan.points[c], float) for c in match.values()}

@@ -174,7 +174,7 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
         others = [L for L in letters if L not in poles]
         if not others:
             continue
-        primed = sum(1 for L in others if L.name.endswith(("'", "′", "ʹ", "’")))
+        primed = sum(1 for L in others if any(c in L.name for c in "'′ʹ’"))
         if primed > len(others) / 2:
             continue  # Zhukovsky's lever
         if any(L.name[:1].isupper() and not pole_kind(L.name) for L in others) and \
@@ -205,7 +205,7 @@ def _captions(scene: Scene, plans: list[FoundPlan]) -> None:
     pairs = []
     for i, p in enumerate(plans):
         x0, y0, x1, y1 = p.bbox
-        reach = 0.5 * math.hypot(x1 - x0, y1 - y0) + 25.0
+        reach = 0.5 * math.hypot(x1 - x0, y1 - y0) + 40.0
         for j, (t, _pos, kind) in enumerate(caps):
             if kind not in (None, p.kind):
                 continue

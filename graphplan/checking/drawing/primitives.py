@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from itertools import pairwise
 from pathlib import Path
 
 from ..errors import StudentFileError
@@ -136,7 +137,7 @@ class Collector:
         pts = list(pts)
         if closed and len(pts) > 2:
             pts.append(pts[0])
-        for (a, b), (c, d) in zip(pts, pts[1:], strict=False):
+        for (a, b), (c, d) in pairwise(pts):
             if (a, b) != (c, d):
                 self.line(a, b, c, d, colour, width, layer, curve)
 

@@ -20,6 +20,7 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from ..units import fold
 from .primitives import Drawing, Segment, Text
 
 SNAP_MM = 0.35
@@ -31,6 +32,9 @@ ARROW_MM = 7.0
 OPTION_H = 2.0
 """Nodes within this many letter heights of a letter's nearest node are kept as its
 other options (for a letter placed between two points)."""
+
+POLE_NAMES = {"p", "π", "п", "pi", "Π"}
+"""Letters of the poles of velocity and acceleration plans (after look-alikes are folded)."""
 
 _NAME = re.compile(r"^[A-Za-zА-Яа-яЁёπΠ][A-Za-zА-Яа-яЁёπ0-9_'′ʹ’()]{0,6}$|^\(?\d{1,2}\)?$")
 
@@ -44,6 +48,7 @@ class Node:
     ends: int = 0  # line ends here
     passes: int = 0  # lines passing through
     thick: float = 0.0  # the widest line ending here
+    tip: bool = False  # an arrowhead points here
     segments: list[int] = field(default_factory=list)
 
     @property
@@ -93,6 +98,7 @@ class Scene:
                 nd.thick = max(nd.thick, s.width)
                 nd.segments.append(i)
         self._passes()
+        self._mark_tips()
         self.group_of = self._groups()
         self.letters = self._letters()
 
@@ -167,8 +173,23 @@ class Scene:
 
     # --- nodes --------------------------------------------------------------------------
 
+    def _mark_tips(self) -> None:
+        """Nodes an arrowhead points at: the vertex of a head farthest from the others."""
+        for pts in self.arrow_tips:
+            if len(pts) < 3:
+                continue
+            tip = max(pts, key=lambda p: sum(math.hypot(p[0] - q[0], p[1] - q[1])
+                                             for q in pts))
+            ci, cj = math.floor(tip[0] / SNAP_MM), math.floor(tip[1] / SNAP_MM)
+            for di in (-2, -1, 0, 1, 2):
+                for dj in (-2, -1, 0, 1, 2):
+                    for n in self._grid.get((ci + di, cj + dj), ()):
+                        nd = self.nodes[n]
+                        if math.hypot(nd.x - tip[0], nd.y - tip[1]) <= 2 * SNAP_MM:
+                            nd.tip = True
+
     def _node(self, x: float, y: float) -> int:
-        ci, cj = int(math.floor(x / SNAP_MM)), int(math.floor(y / SNAP_MM))
+        ci, cj = math.floor(x / SNAP_MM), math.floor(y / SNAP_MM)
         for di in (-1, 0, 1):
             for dj in (-1, 0, 1):
                 for n in self._grid.get((ci + di, cj + dj), ()):
@@ -231,6 +252,39 @@ class Scene:
     def node_group(self, n: int) -> int:
         return self.group_of[self.nodes[n].segments[0]]
 
+    @staticmethod
+    def _swap(cands, choice, rounds: int = 4) -> None:
+        """Two texts that would each be nearer the other's node swap nodes (letters set
+        off the same way from points in a row: each text is nearest the next point)."""
+        cost_of = [{n: c for c, n, _d in lst} for _t, lst in cands]
+        dist_of = [{n: d for _c, n, d in lst} for _t, lst in cands]
+        by_node: dict[int, list[int]] = {}
+        for i, b in enumerate(choice):
+            if b is not None:
+                for n in cost_of[i]:
+                    by_node.setdefault(n, []).append(i)
+        for _ in range(rounds):
+            changed = False
+            for i, b in enumerate(choice):
+                if b is None:
+                    continue
+                near = {k for n in cost_of[i] for k in by_node.get(n, ()) if k != i}
+                for k in near:
+                    bk = choice[k]
+                    if bk is None or bk[1] == b[1]:
+                        continue
+                    ni, nk = b[1], bk[1]
+                    if nk in cost_of[i] and ni in cost_of[k]:
+                        now = cost_of[i][ni] + cost_of[k][nk]
+                        then = cost_of[i][nk] + cost_of[k][ni]
+                        if then < now - 1e-9:
+                            choice[i] = (cost_of[i][nk], nk, dist_of[i][nk])
+                            choice[k] = (cost_of[k][ni], ni, dist_of[k][ni])
+                            b = choice[i]
+                            changed = True
+            if not changed:
+                break
+
     def _overshoot(self, n: int) -> bool:
         """A loose end of a line that runs on past a point (a construction line drawn
         through a point and a little beyond it)."""
@@ -254,6 +308,8 @@ class Scene:
         for t in self.drawing.texts:
             if not is_names(t.text):
                 continue
+            names = split_names(t.text)
+            pole = any(fold(n) in POLE_NAMES for n in names)
             half_w = 0.35 * t.height * len(t.text)
             reach = 3.0 * t.height + 3.0  # from the text's box
             a = math.radians(t.angle)
@@ -267,32 +323,48 @@ class Scene:
                         nd = self.nodes[n]
                         u = (nd.x - t.x) * ca + (nd.y - t.y) * sa
                         v = -(nd.x - t.x) * sa + (nd.y - t.y) * ca
-                        d = math.hypot(max(abs(u) - half_w, 0.0),
-                                       max(abs(v) - 0.5 * t.height, 0.0))
+                        dv = max(abs(v) - 0.5 * t.height, 0.0)
+                        d = math.hypot(max(abs(u) - half_w, 0.0), dv)
+                        if len(names) > 1:
+                            # a point named by a list is by its first or its last name,
+                            # not under the middle of the list
+                            w1 = 0.35 * t.height * len(names[0])
+                            w2 = 0.35 * t.height * len(names[-1])
+                            d1 = math.hypot(max(abs(u + half_w - w1) - w1, 0.0), dv)
+                            d2 = math.hypot(max(abs(u - half_w + w2) - w2, 0.0), dv)
+                            d = min(d1, d2, d + 0.8 * t.height)
                         if d > reach:
                             continue
                         cost = d - 0.25 * t.height * min(nd.degree - 1, 2)
                         if nd.degree == 1 and self._overshoot(n):
                             cost += 2.5 * t.height
+                        if pole:  # vectors start at a pole: no arrowhead points there
+                            cost += 2.0 * t.height if nd.tip else 0.0
+                        elif nd.tip:
+                            cost -= 0.3 * t.height
                         lst.append((cost, n, d))
             lst.sort()
             cands.append((t, lst))
         cands.sort(key=lambda c: c[1][0][0] if c[1] else math.inf)
-        claimed: set[int] = set()
-        out = []
-        for t, lst in cands:
+        claimed: dict[int, int] = {}
+        choice: list[tuple[float, int, float] | None] = []
+        for i, (t, lst) in enumerate(cands):
             best = None
             for cost, n, d in lst:
                 c = cost + (1.5 * t.height if n in claimed else 0.0)
                 if best is None or c < best[0]:
                     best = (c, n, d)
+            choice.append(best)
+            if best is not None:
+                claimed.setdefault(best[1], i)
+        self._swap(cands, choice)
+        out = []
+        for (t, lst), best in zip(cands, choice, strict=True):
             node, dist = (best[1], best[2]) if best else (None, math.inf)
-            if node is not None:
-                claimed.add(node)
             opts = tuple(n for c, n, _d in lst if c <= best[0] + OPTION_H * t.height
                          and n != node) if best else ()
             for name in split_names(t.text):
-                out.append(Letter(name, t, node, dist, ((node,) + opts) if node is not None
+                out.append(Letter(name, t, node, dist, (node, *opts) if node is not None
                                   else ()))
         return out
 

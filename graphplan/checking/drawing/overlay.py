@@ -1,0 +1,120 @@
+"""The overlay: graphplan's construction drawn over the student's plans.
+
+One SVG of the whole sheet and one close-up of every plan with a wrong finding: the
+student's lines in their own colour, graphplan's construction of the plan's position at
+the student's scale (pole laid on the student's pole) in blue, and in red each segment
+whose length or direction is wrong, with the measured and the expected length
+(``pb: 40,12 ≠ 42,19 мм``) and a ring where the construction puts the point.
+"""
+
+from __future__ import annotations
+
+import html
+
+import numpy as np
+
+from ..words import num
+
+BLUE = "#1f5fbf"
+RED = "#d01010"
+
+
+def _e(s: str) -> str:
+    return html.escape(str(s), quote=True)
+
+
+def drawing_overlay(dc, lang: str | None = None) -> list[str]:
+    """The overlay sheets (SVG texts) of a :class:`~.check.DrawingCheck`."""
+    lang = lang or dc.report.lang
+    d = dc.drawing
+    x0, y0, x1, y1 = d.bounds()
+    H = y1 + y0  # y is flipped about the middle of the drawing's extent
+
+    def P(x: float, y: float) -> str:
+        return f"{x:.2f},{H - y:.2f}"
+
+    body = []
+    for s in d.segments:
+        body.append(f"<line x1='{s.x1:.2f}' y1='{H - s.y1:.2f}' x2='{s.x2:.2f}' "
+                    f"y2='{H - s.y2:.2f}' stroke='{_e(s.colour)}' stroke-width='0.18'/>")
+    for f in d.fills:
+        body.append("<polygon points='" + " ".join(P(x, y) for x, y in f.points) +
+                    f"' fill='{_e(f.colour)}' stroke='none'/>")
+    for t in d.texts:
+        if len(t.text) > 40:
+            continue
+        body.append(f"<text x='{t.x:.2f}' y='{H - t.y + 0.35 * t.height:.2f}' "
+                    f"font-size='{t.height * 1.3:.2f}' text-anchor='middle' "
+                    f"fill='{_e(t.colour)}' font-family='sans-serif' "
+                    f"transform='rotate({-t.angle:.1f} {t.x:.2f} {H - t.y:.2f})'>"
+                    f"{_e(t.text)}</text>")
+    wrong_fig = {}
+    for f in dc.report.findings:
+        if f.verdict == "wrong":
+            wrong_fig.setdefault(f.where, []).append(f)
+    crops = []
+    for j in dc.plans:
+        L = j.laid
+        if L is None or L.plan is None:
+            continue
+        p0 = np.asarray(j.found.points[j.found.pole])
+        plan = L.plan
+        for sg in L.segments:
+            a = p0 + plan.points[sg.start]
+            b = p0 + plan.points[sg.end]
+            body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
+                        f"y2='{H - b[1]:.2f}' stroke='{BLUE}' stroke-width='0.3' "
+                        "stroke-opacity='0.75' stroke-dasharray='1.2,0.6'/>")
+        inv = {c: s for s, c in L.match.items()}
+        bad = [f for f in dc.report.findings if f.verdict == "wrong" and j.key and
+               j.key in f.where]
+        names = {f.quantity.lstrip("∠") for f in bad}
+        for sg in L.segments:
+            if sg.name not in names or sg.start not in inv or sg.end not in inv:
+                continue
+            a = p0 + L.measured[sg.start]
+            b = p0 + L.measured[sg.end]
+            ea = p0 + plan.points[sg.start]
+            eb = p0 + plan.points[sg.end]
+            lm = float(np.hypot(*(b - a)))
+            le = float(np.hypot(*(eb - ea)))
+            body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
+                        f"y2='{H - b[1]:.2f}' stroke='{RED}' stroke-width='0.45'/>")
+            body.append(f"<circle cx='{eb[0]:.2f}' cy='{H - eb[1]:.2f}' r='0.9' fill='none' "
+                        f"stroke='{RED}' stroke-width='0.25'/>")
+            mid = (a + b) / 2
+            unit = "мм" if lang == "ru" else "mm"
+            body.append(f"<text x='{mid[0] + 1:.2f}' y='{H - mid[1] - 1:.2f}' font-size='2.2' "
+                        f"fill='{RED}' font-family='sans-serif'>{_e(sg.name)}: "
+                        f"{_e(num(lm, lang, 4))} ≠ {_e(num(le, lang, 4))} {unit}</text>")
+        if any(f.primary for f in bad):
+            bx0, by0, bx1, by1 = j.found.bbox
+            pts = [p0 + plan.points[c] for c in plan.points]
+            bx0 = min([bx0] + [q[0] for q in pts])
+            bx1 = max([bx1] + [q[0] for q in pts])
+            by0 = min([by0] + [q[1] for q in pts])
+            by1 = max([by1] + [q[1] for q in pts])
+            m = 12.0
+            crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m,
+                          j.key))
+    legend = ("graphplan's construction (blue), wrong segments (red) with the measured ≠ "
+              "expected length, rings where the construction puts the point" if lang != "ru"
+              else "построение graphplan (синим), неверные отрезки (красным): измерено ≠ "
+              "по построению, кружки — где точка по построению")
+    content = "\n".join(body)
+    out = [_svg(x0 - 5, H - y1 - 5, x1 - x0 + 10, y1 - y0 + 10, content, legend)]
+    for vx, vy, vw, vh, title in crops:
+        out.append(_svg(vx, vy, vw, vh, content, title))
+    return out
+
+
+def _svg(x: float, y: float, w: float, h: float, content: str, title: str) -> str:
+    w, h = max(w, 1.0), max(h, 1.0)
+    width = 800 if w >= h else max(300, int(800 * w / h))
+    return (f"<svg xmlns='http://www.w3.org/2000/svg' viewBox='{x:.2f} {y:.2f} {w:.2f} "
+            f"{h:.2f}' width='{width}' height='{int(width * h / w)}'>"
+            f"<title>{_e(title)}</title><rect x='{x:.2f}' y='{y:.2f}' width='{w:.2f}' "
+            f"height='{h:.2f}' fill='white'/>{content}</svg>\n")
+
+
+__all__ = ["drawing_overlay"]

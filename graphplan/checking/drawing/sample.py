@@ -1,0 +1,292 @@
+"""Drawings of the plans made the way students make them, for trying the drawing checker.
+
+:func:`student_sheet` draws the velocity and acceleration plans of some positions of a
+variant — not with graphplan's sheet code, but as a CAD user draws: each vector a line
+split into pieces or a polyline through several points, arrowheads as INSERTs of a block
+holding a SOLID (DXF) or as filled patches (PDF), letters as MTEXT set off diagonally
+from their points, captions such as «Положение 2. План скоростей» and scales written
+``μv = 0,01 (м/с)/мм`` with a decimal comma, the whole placed far from the origin and,
+optionally, in inches. :class:`Plant` puts one error of a student into it: a point
+moved, a scale written wrong, a normal component left out (its end unlettered and the
+point drawn where the plan goes without it), or the plan of another position under the
+caption.
+
+The tests check these drawings with ``graphplan check --drawing``: the correct ones must
+give no wrong finding, each planted error its own.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ...constructions import acceleration_plan, plan_scales, velocity_plan
+
+
+@dataclass(frozen=True, slots=True)
+class Plant:
+    """One error to put into a drawing.
+
+    ``kind``: ``moved`` (the point ``point`` of the plan moved by ``offset`` mm),
+    ``scale`` (the plan's scale written ``factor`` times the one it is drawn at),
+    ``omit`` (the normal component ending at ``point`` — e.g. ``n_BA`` — left out), or
+    ``position`` (the plan of position ``other`` drawn under the caption).
+    """
+
+    kind: str
+    plan: str  # "velocity" | "acceleration"
+    position: str
+    point: str = ""
+    offset: tuple[float, float] = (2.5, 2.0)
+    factor: float = 2.0
+    other: str = ""
+
+
+def _plans(ref, label: str, kl, kv, ka):
+    k = ref.index(label)
+    vp = velocity_plan(ref.mech, ref.kin, k, kl, kv)
+    ap = acceleration_plan(ref.mech, ref.kin, k, kl, ka, vp)
+    return vp, ap
+
+
+def _without_normal(plan, normal: str):
+    """The points of an acceleration plan drawn with the normal component ``normal``
+    (ending at ``n_XY``) left out: X where the line of its tangential component, drawn
+    from the component's start instead, meets the other line through X."""
+    pts = {k: np.asarray(v, float).copy() for k, v in plan.points.items()}
+    segs = []
+    for st in plan.steps:
+        for e in st.elements:
+            if e.kind == "segment":
+                segs.append(e)
+    nseg = next(e for e in segs if e.role == "normal" and
+                np.allclose(e.end, plan.points[normal]))
+    start = np.asarray(nseg.start)
+    tseg = next((e for e in segs if e.role == "tangential" and
+                 np.allclose(e.start, nseg.end)), None)
+    if tseg is None:
+        raise ValueError(f"no tangential component after {normal}")
+    tip = np.asarray(tseg.end)
+    d1 = tip - np.asarray(tseg.start)
+    if np.hypot(*d1) < 1e-9:
+        raise ValueError("a zero tangential component")
+    other = next((e for e in segs if np.allclose(e.end, tip) and e is not tseg and
+                  e.role == "tangential"), None) or next(
+        e for e in segs if np.allclose(e.end, tip) and e.role == "absolute")
+    d2 = tip - np.asarray(other.start)
+    A = np.array([d1, -d2]).T
+    t = np.linalg.solve(A, tip - start)
+    new = start + t[0] * d1
+    point = next(k for k, v in plan.points.items() if np.allclose(v, tip))
+    moved = pts[point].copy()
+    for k, v in plan.points.items():
+        if np.allclose(v, moved):
+            pts[k] = new
+    del pts[normal]
+    return pts, [e for e in segs if e is not nseg]
+
+
+def _layout(ref, labels, plant: Plant | None):
+    """Each plan to draw: (kind, caption label, scale symbol, scale written, points,
+    segments, letters) in plan mm."""
+    kl, kv, ka = plan_scales(ref.mech, ref.kin)
+    out = []
+    for lab in labels:
+        for kind in ("velocity", "acceleration"):
+            src = lab
+            written = kv.per_mm if kind == "velocity" else ka.per_mm
+            if plant and plant.kind == "position" and plant.plan == kind and \
+                    plant.position == lab:
+                src = plant.other
+            vp, ap = _plans(ref, src, kl, kv, ka)
+            plan = vp if kind == "velocity" else ap
+            pts = {k: np.asarray(v, float) for k, v in plan.points.items()}
+            segs = [e for st in plan.steps for e in st.elements if e.kind == "segment"]
+            lines = [e for st in plan.steps for e in st.elements if e.kind == "line"]
+            if plant and plant.plan == kind and plant.position == lab:
+                if plant.kind == "moved":
+                    old = pts[plant.point].copy()
+                    for k2, v in list(pts.items()):
+                        if np.allclose(v, old):
+                            pts[k2] = old + np.asarray(plant.offset)
+                elif plant.kind == "scale":
+                    written *= plant.factor
+                elif plant.kind == "omit":
+                    pts, segs = _without_normal(plan, plant.point)
+                    lines = []
+            # segments by their ends' names, on the (possibly changed) points
+            names = list(plan.points)
+
+            def at(xy, names=names, plan=plan):
+                return min(names, key=lambda n: float(np.hypot(*(np.asarray(xy) -
+                                                                 plan.points[n]))))
+
+            seg_names = [(at(e.start), at(e.end)) for e in segs]
+            seg_names = [(a, b) for a, b in seg_names if a in pts and b in pts]
+            ln = [(np.asarray(e.start), np.asarray(e.end)) for e in lines]
+            out.append((kind, lab, "Kv" if kind == "velocity" else "Ka", written, pts,
+                        seg_names, ln))
+    return out
+
+
+def _letters(pts: dict) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """One text per place (names of coincident points joined by commas), with the
+    direction to set it off in: away from the middle of the plan."""
+    groups: list[tuple[list[str], np.ndarray]] = []
+    for name, xy in pts.items():
+        for g in groups:
+            if np.hypot(*(g[1] - xy)) < 0.3:
+                g[0].append(name)
+                break
+        else:
+            groups.append(([name], xy))
+    mid = np.mean([xy for _n, xy in groups], axis=0) if groups else np.zeros(2)
+    out = []
+    for names, xy in groups:
+        d = xy - mid
+        L = float(np.hypot(*d))
+        u = d / L if L > 1e-6 else np.array([0.7071, 0.7071])
+        out.append((", ".join(n.replace("_", "") for n in names), xy, u))
+    return out
+
+
+def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
+                  plant: Plant | None = None, origin=(5000.0, -3000.0),
+                  inches: bool = False) -> Path:
+    """Draw the plans of ``labels`` of a variant as a student's DXF or PDF (module doc)."""
+    from ..checks import reference_for
+
+    ref = reference_for(Path(variant))
+    plans = _layout(ref, labels, plant)
+    path = Path(path)
+    if fmt == "pdf":
+        _pdf(plans, path)
+    else:
+        _dxf(plans, path, np.asarray(origin, float), inches)
+    return path
+
+
+def _cells(plans):
+    """Where each plan goes: a grid of cells 130 mm wide, 120 mm high."""
+    for i, p in enumerate(plans):
+        col = i // 2
+        row = i % 2
+        yield p, np.array([70.0 + 130.0 * col, 330.0 - 150.0 * row])
+
+
+def _dxf(plans, path: Path, origin: np.ndarray, inches: bool) -> None:
+    import ezdxf
+
+    doc = ezdxf.new("R2013")
+    doc.header["$INSUNITS"] = 1 if inches else 4
+    k = 1 / 25.4 if inches else 1.0
+    blk = doc.blocks.new("ARROWHEAD")
+    # a 3 × 1 mm solid, the tip at the block's origin, pointing along +x
+    blk.add_solid([(0, 0), (-3 * k, 0.5 * k), (-3 * k, -0.5 * k)])
+    doc.layers.add("ПЛАНЫ", color=5)
+    doc.layers.add("Построения", color=8)
+    msp = doc.modelspace()
+
+    def X(v) -> tuple[float, float]:
+        return (float((v[0] + origin[0]) * k), float((v[1] + origin[1]) * k))
+
+    for (kind, lab, _sym, written, pts, segs, lines), c in _cells(plans):
+        pole = "p" if kind == "velocity" else "π"
+        word = "скоростей" if kind == "velocity" else "ускорений"
+        top = max(float(v[1]) for v in pts.values()) + 14.0
+        cap = msp.add_mtext(f"Положение {lab}. План {word}",
+                            dxfattribs={"char_height": 3.5 * k, "layer": "ПЛАНЫ"})
+        cap.set_location(X(c + np.array([-30.0, top])))
+        unit = "(м/с)/мм" if kind == "velocity" else "(м/с²)/мм"
+        mu = "μv" if kind == "velocity" else "μa"
+        msp.add_text(f"{mu} = {written:.4g} {unit}".replace(".", ","),
+                     dxfattribs={"height": 2.5 * k, "layer": "ПЛАНЫ"}).set_placement(
+            X(c + np.array([-30.0, top - 7.0])))
+        for a, b in lines:
+            msp.add_line(X(c + a), X(c + b), dxfattribs={"layer": "Построения"})
+        chain = []
+        for i, (a, b) in enumerate(segs):
+            A, B = c + pts[a], c + pts[b]
+            L = float(np.hypot(*(B - A)))
+            if L < 1e-6:
+                continue
+            if i % 3 == 0:
+                # split in two pieces, as a line broken and joined again
+                M = A + 0.4 * (B - A)
+                msp.add_line(X(A), X(M), dxfattribs={"layer": "ПЛАНЫ"})
+                msp.add_line(X(M), X(B), dxfattribs={"layer": "ПЛАНЫ"})
+            elif i % 3 == 1:
+                chain.append((A, B))
+            else:
+                msp.add_lwpolyline([X(A), X(B)], dxfattribs={"layer": "ПЛАНЫ"})
+            ang = float(np.degrees(np.arctan2(*(B - A)[::-1])))
+            if L > 3.5:
+                msp.add_blockref("ARROWHEAD", X(B), dxfattribs={"rotation": ang,
+                                                                "layer": "ПЛАНЫ"})
+        for A, B in chain:
+            msp.add_lwpolyline([X(A), X(A + 0.5 * (B - A)), X(B)],
+                               dxfattribs={"layer": "ПЛАНЫ", "color": 1})
+        for text, xy, out in _letters(pts):
+            # set off outwards from the plan's middle, as a draftsman keeps letters clear
+            att = (7 if out[1] >= 0 else 1) if out[0] >= 0 else (9 if out[1] >= 0 else 3)
+            m = msp.add_mtext(text, dxfattribs={"char_height": 3.0 * k, "layer": "ПЛАНЫ"})
+            m.set_location(X(c + xy + 1.5 * out), attachment_point=att)
+        del pole
+    doc.saveas(path)
+
+
+def _pdf(plans, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.patches import Polygon
+
+    with matplotlib.rc_context({"pdf.fonttype": 42, "font.family": "DejaVu Sans"}):
+        W, H = 594.0, 420.0  # A2 landscape, mm
+        fig = plt.figure(figsize=(W / 25.4, H / 25.4))
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_xlim(0, W)
+        ax.set_ylim(0, H)
+        ax.set_axis_off()
+        pt = 72 / 25.4
+        for (kind, lab, sym, written, pts, segs, lines), c in _cells(plans):
+            pole = "p" if kind == "velocity" else "π"
+            word = "скоростей" if kind == "velocity" else "ускорений"
+            top = max(float(v[1]) for v in pts.values()) + 14.0
+            ax.text(*(c + np.array([-30.0, top])), f"План {word}, пол. {lab}",
+                    fontsize=3.5 * pt / 0.72)
+            unit = "(м/с)/мм" if kind == "velocity" else "(м/с²)/мм"
+            ax.text(*(c + np.array([-30.0, top - 7.0])),
+                    f"{sym} = {written:.4g} {unit}".replace(".", ","), fontsize=2.5 * pt / 0.72)
+            for a, b in lines:
+                ax.plot([c[0] + a[0], c[0] + b[0]], [c[1] + a[1], c[1] + b[1]], "-",
+                        color="0.4", lw=0.25 * pt)
+            for a, b in segs:
+                A, B = c + pts[a], c + pts[b]
+                L = float(np.hypot(*(B - A)))
+                if L < 1e-6:
+                    continue
+                u = (B - A) / L
+                n = np.array([-u[1], u[0]])
+                if L > 3.5:
+                    S = B - 3.0 * u
+                    ax.plot([A[0], S[0]], [A[1], S[1]], "-", color="k", lw=0.5 * pt)
+                    ax.add_patch(Polygon([B, S + 0.5 * n, S - 0.5 * n], closed=True,
+                                         facecolor="k", edgecolor="none"))
+                else:
+                    ax.plot([A[0], B[0]], [A[1], B[1]], "-", color="k", lw=0.5 * pt)
+            for text, xy, out in _letters(pts):
+                ax.text(*(c + xy + 1.5 * out), text, fontsize=3.0 * pt / 0.72,
+                        ha="left" if out[0] >= 0 else "right",
+                        va="bottom" if out[1] >= 0 else "top")
+            del pole
+        with PdfPages(path, metadata={"CreationDate": None}) as pdf:
+            pdf.savefig(fig)
+        plt.close(fig)
+
+
+__all__ = ["Plant", "student_sheet"]
