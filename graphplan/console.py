@@ -96,7 +96,7 @@ codecs.register_error(ERROR_HANDLER, _handler)
 
 
 def _is_utf(encoding: str | None) -> bool:
-    return bool(encoding) and codecs.lookup(encoding).name == "utf-8"
+    return encoding is not None and codecs.lookup(encoding).name == "utf-8"
 
 
 def prepare_streams(stdout=None, stderr=None) -> None:

@@ -273,7 +273,7 @@ def load_font(family: str) -> FontInfo | None:
         glyph_set = font.getGlyphSet()
         hmtx = font["hmtx"]
         upem = int(font["head"].unitsPerEm)
-        os2 = font["OS/2"] if "OS/2" in font else None
+        os2 = font.get("OS/2")
         cap = float(getattr(os2, "sCapHeight", 0) or 0) if os2 is not None else 0.0
         if cap <= 0 and ord("H") in cmap:
             pen = BoundsPen(glyph_set)
@@ -402,6 +402,57 @@ def text_width(text: str, height: float) -> float:
         else:
             total += adv / info.units_per_em * size  # type: ignore[union-attr]
     return total
+
+
+def text_of_svg(svg_text: str) -> str:
+    """The characters of the texts of an SVG (its text nodes; markup left out)."""
+    import html
+    import re
+
+    return html.unescape("".join(re.findall(r">([^<]+)<", svg_text)))
+
+
+@lru_cache(maxsize=1024)
+def _file_coverage(path: Path) -> frozenset[int]:
+    """Code points a font file maps to a glyph (the first font of a collection)."""
+    try:
+        from fontTools.ttLib import TTFont
+
+        with TTFont(str(path), lazy=True, fontNumber=0) as font:
+            return frozenset((font.getBestCmap() or {}).keys())
+    except Exception:  # not a font fontTools reads: it covers nothing
+        return frozenset()
+
+
+def uncovered_chars(text: str) -> str:
+    """Characters of ``text`` that no family of :data:`FONT_CHAIN` draws."""
+    return "".join(dict.fromkeys(
+        ch for ch in _needed(text)
+        if not any(ord(ch) in _coverage(f) for f in FONT_CHAIN)))
+
+
+def fallback_font_files(text: str) -> tuple[Path, ...]:
+    """System font files that draw the characters of ``text`` the bundled fonts lack.
+
+    For the PDF and PNG renderers: a title or a student's name in a script the lettering
+    fonts do not have (Chinese, Georgian, Arabic …) is drawn in a font of the machine,
+    found with :func:`system_font_files` (matplotlib's font manager, or
+    ``$GRAPHPLAN_FONT_PATH``), the first that draws each character. Empty — and so the
+    output independent of the machine — when the bundled fonts draw everything, as for
+    every sheet of Russian or English text.
+    """
+    need = set(uncovered_chars(text))
+    if not need:
+        return ()
+    chosen: list[Path] = []
+    for path in system_font_files():
+        drawn = {ch for ch in need if ord(ch) in _file_coverage(path)}
+        if drawn:
+            chosen.append(path)
+            need -= drawn
+            if not need:
+                break
+    return tuple(chosen)
 
 
 def coverage_report(chars: str = REQUIRED_CHARS) -> dict[str, str]:

@@ -729,3 +729,33 @@ def test_the_cairo_engine_stays_an_option():
     assert float(box.width) * 25.4 / 72 == pytest.approx(A1[0], abs=0.1)
     assert reader.metadata["/Creator"] == "graphplan" and "/CreationDate" not in reader.metadata
     assert png_bytes(s, 20, text, engine="cairo").startswith(b"\x89PNG")
+
+
+def test_a_character_no_bundled_font_draws_comes_from_a_system_font(monkeypatch, tmp_path):
+    # '⌢' (U+2322) is in none of osifont, DejaVu Sans, DejaVu Sans Mono; matplotlib's
+    # STIX font has it. Put that font in the only folder searched for system fonts.
+    import shutil
+
+    import matplotlib
+
+    from graphplan import fonts as fonts_mod
+
+    monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
+    folder = tmp_path / "fonts"
+    folder.mkdir()
+    shutil.copy(f"{matplotlib.get_data_path()}/fonts/ttf/STIXGeneral.ttf", folder)
+    a3 = Sheet(Page("A3"), (), TitleBlock(designation="ТММ.00.03", title="Дуга ⌢ AB"))
+    text = render_svg(a3)
+    assert fonts_mod.uncovered_chars("Дуга ⌢ AB") == "⌢"
+    monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(folder))
+    assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(text)) == (
+        folder / "STIXGeneral.ttf",)
+    names = {b.split("+")[-1] for b, _ in _fonts(pypdf.PdfReader(io.BytesIO(
+        pdf_bytes(a3, text))).pages[0])}
+    assert "STIXGeneral-Regular" in names and "osifont" in names, names
+    with_stix = svg_to_png_bytes(text, 20)
+    monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(tmp_path / "nowhere"))
+    assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(text)) == ()
+    assert svg_to_png_bytes(text, 20) != with_stix  # the arc is drawn only with STIX
+    # a sheet of Russian and English text needs no system font at all
+    assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(svg_text("press-1"))) == ()

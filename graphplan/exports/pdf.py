@@ -58,10 +58,19 @@ def svg_size_mm(svg_text: str) -> tuple[float, float]:
     return sizes[0], sizes[1]
 
 
-def font_folders() -> list[str]:
-    """The folders of the bundled fonts of :data:`graphplan.fonts.FONT_CHAIN`."""
-    paths = (fonts.find_font_file(f) for f in fonts.FONT_CHAIN)
-    return sorted({str(p.parent) for p in paths if p is not None})
+def font_folders(svg_text: str = "") -> list[str]:
+    """Folders of the fonts Typst may use for ``svg_text``.
+
+    The folders of the bundled fonts of :data:`graphplan.fonts.FONT_CHAIN`, then — only
+    when the SVG has characters none of them draws — the folders of the system fonts
+    that do (:func:`graphplan.fonts.fallback_font_files`). Typst takes folders, not files.
+    """
+    paths = [fonts.find_font_file(f) for f in fonts.FONT_CHAIN]
+    folders = list(dict.fromkeys(str(p.parent) for p in paths if p is not None))
+    if svg_text:
+        extra = fonts.fallback_font_files(fonts.text_of_svg(svg_text))
+        folders += [d for d in dict.fromkeys(str(p.parent) for p in extra) if d not in folders]
+    return folders
 
 
 def _typst_pdf(svg_text: str) -> bytes:
@@ -69,7 +78,7 @@ def _typst_pdf(svg_text: str) -> bytes:
     width, height = svg_size_mm(svg_text)
     inputs = {"svg": svg_text, "title": _title(svg_text), "width": repr(width),
               "height": repr(height)}
-    return typst.compile(_TYPST_MAIN, sys_inputs=inputs, font_paths=font_folders(),
+    return typst.compile(_TYPST_MAIN, sys_inputs=inputs, font_paths=font_folders(svg_text),
                          ignore_system_fonts=True, format="pdf")
 
 

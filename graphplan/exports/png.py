@@ -59,6 +59,8 @@ def svg_to_png_bytes(svg_text: str, dpi: float = DEFAULT_DPI, engine: str | None
                                 background_color="white")
     resvg = require("resvg_py", "png")
     files = [str(p) for p in (fonts.find_font_file(f) for f in fonts.FONT_CHAIN) if p]
+    # a character no bundled font draws (a name in Chinese …): a system font draws it
+    files += [str(p) for p in fonts.fallback_font_files(fonts.text_of_svg(svg_text))]
     try:
         return bytes(resvg.svg_to_bytes(
             svg_string=svg_text, dpi=dpi, background="white", skip_system_fonts=True,
