@@ -81,8 +81,11 @@ def _analyze(args) -> int:
     result = analyze(load(path))
     for w in result.warnings:
         print(f"graphplan: warning: {w}", file=sys.stderr)
-    if args.json:
-        text = json.dumps(result.to_json(), ensure_ascii=False, indent=1, allow_nan=False) + "\n"
+    if args.json:  # escaped (\u03c9) only on a console that cannot encode the text
+        from .console import json_ascii
+
+        text = json.dumps(result.to_json(), ensure_ascii=json_ascii() and not args.output,
+                          indent=1, allow_nan=False) + "\n"
     else:
         text = analysis_text(result, args.lang)
     if args.output:

@@ -11,7 +11,8 @@ command runs:
 * **a console**, and any kept encoding: its own encoding, and a character it cannot
   encode is written in a spelling it can (:func:`console_spelling`: ω → w, φ → phi,
   − → -, ₁ → 1, ² → ^2, Cyrillic → Latin on an ASCII console, anything else → ?), never
-  a ``UnicodeEncodeError``.
+  a ``UnicodeEncodeError``. JSON written there escapes such characters instead
+  (``\\u03c9``, :func:`json_ascii`): the data stay exact.
 
 Standard error gets the same replacement (its encoding is left as it is).
 
@@ -99,6 +100,18 @@ def _is_utf(encoding: str | None) -> bool:
     return encoding is not None and codecs.lookup(encoding).name == "utf-8"
 
 
+def json_ascii(stream=None) -> bool:
+    """``ensure_ascii`` for JSON written to ``stream`` (default: sys.stdout).
+
+    False on a UTF-8 stream; True on any other, so that JSON on a cp1251, cp866 or ASCII
+    console escapes what the console lacks (``\\u03c9``) and stays exactly the data —
+    never a spelling that changes a value.
+    """
+    stream = sys.stdout if stream is None else stream
+    encoding = getattr(stream, "encoding", None)
+    return encoding is not None and not _is_utf(encoding)
+
+
 def prepare_streams(stdout=None, stderr=None) -> None:
     """Make ``stdout``/``stderr`` (default: sys's) safe for any text graphplan prints."""
     out = sys.stdout if stdout is None else stdout
@@ -124,6 +137,6 @@ def _isatty(stream) -> bool:
         return False
 
 
-__all__ = ["ERROR_HANDLER", "EXIT_BAD_INPUT", "EXIT_CODES", "EXIT_FAULTS", "EXIT_FILE_ERROR",
+__all__ = ["ERROR_HANDLER", "json_ascii", "EXIT_BAD_INPUT", "EXIT_CODES", "EXIT_FAULTS", "EXIT_FILE_ERROR",
            "EXIT_INTERNAL", "EXIT_INTERRUPTED", "EXIT_OK", "SYMBOLS", "console_spelling",
            "prepare_streams"]

@@ -192,3 +192,27 @@ def test_decode_text_names_the_line_and_the_code_page():
         decode_text("a = 1\n# Привет мир\n".encode("cp866"), "x")
     with pytest.raises(InputError, match=r"^x: line 1: not UTF-8 text: save"):
         decode_text(b"\xff\x00\x80", "x")
+
+
+@pytest.mark.parametrize("encoding", ["cp1251", "ascii"])
+def test_json_on_a_legacy_console_is_escaped_not_altered(encoding):
+    import json
+
+    proc = graphplan(["analyze", "--json"], encoding)
+    assert proc.returncode == 0
+    text = proc.stdout.decode(encoding)
+    data = json.loads(text)
+    assert data["positions"][0]["forces"]["loads"]["forces"]["Pи2"]["kind"] == "inertia"
+    assert text.isascii()  # every non-ASCII character escaped: the data are exact
+
+
+def test_the_verdicts_of_the_check_schema_are_the_checkers():
+    import json
+    from importlib import resources
+
+    from graphplan.checking.findings import VERDICTS
+
+    schema = json.loads((resources.files("graphplan") / "data" / "schema" /
+                         "check.schema.json").read_text(encoding="utf-8"))
+    enum = schema["properties"]["figures"]["items"]["properties"]["verdict"]["enum"]
+    assert tuple(enum) == VERDICTS

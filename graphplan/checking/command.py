@@ -128,7 +128,9 @@ def _file(path: Path, args, tol: dict, multiple: bool) -> int:
     protect = (path, work.variant)
     sheets = overlays(checker, report) if (args.html or args.svg or args.output) else []
     if args.json:
-        sys.stdout.write(json.dumps(report.to_json(), ensure_ascii=False, indent=1,
+        from ..console import json_ascii  # \u escapes on a console lacking a character
+
+        sys.stdout.write(json.dumps(report.to_json(), ensure_ascii=json_ascii(), indent=1,
                                     allow_nan=False) + "\n")
     else:
         sys.stdout.write(text_report(report))
