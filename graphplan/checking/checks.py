@@ -177,14 +177,13 @@ class Checker:
                 continue
             figs[(scope, key)] = self.evaluate(scope, occs)
         dg = Diagnoser(self, figs)
-        for f in figs.values():
-            if f.verdict == "wrong" and dg.own_chain(f):
-                f.verdict = "inaccurate"
-                f.extra_notes.append(_Say(
-                    "follows by a right formula from the student's own readings, which are "
-                    "within drafting accuracy",
-                    "получено по верной формуле из собственных отсчётов студента, которые в "
-                    "пределах точности построения")(self.lang))
+        changed = True
+        while changed:  # down the student's chain: a reading, its value, the load from it
+            changed = False
+            for f in figs.values():
+                if f.verdict == "wrong" and dg.own_chain(f):
+                    f.verdict = "inaccurate"
+                    f.own_chain = changed = True
         consistency = self._consistency(figs, dg)  # first: it adds notes to the figures
         findings: list[Finding] = []
         for key, f in list(figs.items()):

@@ -81,6 +81,7 @@ class Fig:
     verdict: str
     diag: Diag | None = None
     extra_notes: list[str] = field(default_factory=list)
+    own_chain: bool = False  # off only as far as the student's readings carry it
 
     @property
     def name(self) -> str:
@@ -128,6 +129,14 @@ class Diagnoser:
 
     def inaccurate(self, f: Fig) -> Diag:
         rel = (f.s - f.e) / abs(f.e) if f.e else None  # type: ignore[operator]
+        if f.own_chain:
+            en = (f"off by {pct(rel)} of graphplan's {self._u(f, f.e)}, but it follows by a "
+                  "right formula from the student's own readings, each within drafting "
+                  "accuracy: their error carried, not a fault.")
+            ru = (f"отличается на {pct(rel, 'ru')} от точного {self._u(f, f.e, 'ru')}, но "
+                  "получено по верной формуле из собственных отсчётов, каждый в пределах "
+                  "точности построения: это перенесённая погрешность, не ошибка.")
+            return Diag("model", en, ru)
         tol = f"{f.rel * 100:g} %"
         en = (f"off by {pct(rel)} of graphplan's {self._u(f, f.e)}: beyond the drafting "
               f"reading accuracy, within the {tol} the method allows.")
@@ -325,8 +334,21 @@ class Diagnoser:
                 lw.template is None or lw.matched is None or f.e is None:
             return False
         env, offs = self.model_env(lw, band=1)
-        if env is None or offs:
+        if env is None:
             return False
+        if offs:  # off beyond their band, but each may be right by its own chain
+            for name, _node in lw.matched.bindings:
+                x = next((y for y in lw.occs if y.name == name and y.role == "operand"), None)
+                if x is None or x.q.kind == "scale":
+                    continue
+                g = self.figs.get((x.scope, x.q.key))
+                if g is None or g.e is None or g.verdict == "wrong" or not _close(
+                        abs(x.value), abs(g.s), 0.005, 0.5 * 10.0 ** -decimals(x.text)):
+                    if g is None or g.e is None or g.verdict == "wrong" or g is f:
+                        label = x.name if x.position is None or x.q.scope == "global" or \
+                            "@" in x.name else f"{x.name} ({x.position})"
+                        if label in offs:
+                            return False
         try:
             F = self._canonical(lw, o, value(lw.template, env))
         except ExpressionError:
@@ -436,7 +458,7 @@ class Diagnoser:
                        g.q.unit == f.q.unit and g.q.scale == f.q.scale)
             if not (same_q or other_q) or abs(g.s - f.s) > max(half, 1e-12):
                 continue
-            if self.near(f, g.s, f.e) or g.verdict == "wrong":
+            if self.near(f, g.s, f.e) or (other_q and g.verdict == "wrong"):
                 continue
             if same_q:
                 en = (f"{self._u(f, f.s)} is the student's own {go.name} of position "
