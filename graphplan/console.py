@@ -137,6 +137,17 @@ def _isatty(stream) -> bool:
         return False
 
 
-__all__ = ["ERROR_HANDLER", "json_ascii", "EXIT_BAD_INPUT", "EXIT_CODES", "EXIT_FAULTS", "EXIT_FILE_ERROR",
-           "EXIT_INTERNAL", "EXIT_INTERRUPTED", "EXIT_OK", "SYMBOLS", "console_spelling",
-           "prepare_streams"]
+__all__ = [
+    "ERROR_HANDLER",
+    "EXIT_BAD_INPUT",
+    "EXIT_CODES",
+    "EXIT_FAULTS",
+    "EXIT_FILE_ERROR",
+    "EXIT_INTERNAL",
+    "EXIT_INTERRUPTED",
+    "EXIT_OK",
+    "SYMBOLS",
+    "console_spelling",
+    "json_ascii",
+    "prepare_streams",
+]

@@ -111,11 +111,12 @@ def plan_longest(sh) -> dict[str, float]:
 def empty_share(sh) -> float:
     """Share of 20×20 mm tiles inside the frame, title block left out, with no ink
     (the rendered SVG at 2 px/mm, a tile is empty when no pixel is darker than 200/255)."""
-    cairosvg = pytest.importorskip("cairosvg")
+    pytest.importorskip("resvg_py")  # the export extra's renderer: no cairo needed
     from PIL import Image
 
-    png = cairosvg.svg2png(bytestring=render_svg(sh).encode("utf-8"), dpi=2 * 25.4,
-                           background_color="white")
+    from graphplan.exports.png import svg_to_png_bytes
+
+    png = svg_to_png_bytes(render_svg(sh), 2 * 25.4, engine="resvg")
     im = np.asarray(Image.open(io.BytesIO(png)).convert("L"))
     f, tb = sh.page.frame, sh.page.title_block_rect
     tiles = empty = 0
