@@ -153,3 +153,34 @@ def test_the_coriolis_acceleration_has_the_names_students_give_it(written):
 
     v = reference_for(Path(SHAPER)).vocabulary()
     assert v.lookup(written).key[:2] == ("reading", "k_A3")
+
+
+def test_a_slip_in_a_scale_line_is_said_once_and_the_drawing_judged_at_the_scale_used():
+    # Kv = 0,942/47,1 = 0,02, written 0,2; every line after uses 0,02 (the drawing's)
+    head = FOURBAR_HEAD.replace("0,942/47,1 = 0,02 (м/с)/мм", "0,942/47,1 = 0,2 (м/с)/мм")
+    r = _check(head + '''[[positions]]
+label = "2"
+lines = [
+  "vB = pb∙Kv = 29,9∙0,02 = 0,598 м/с",
+  "vBA = ab∙Kv = 27,9∙0,02 = 0,558 м/с",
+  "ps2 = 36,9 мм",
+]
+''', lang="en")
+    (f,) = r.wrong
+    assert f.kind == "arithmetic" and f.quantity == "Kv"
+    assert {x.quantity: x.verdict for x in r.figures}["ps2"] == "ok"
+
+
+def test_two_force_plans_at_one_position_each_at_its_own_kp():
+    # sixbar_press, position 2: group 4-5 at Kp = 10 N/mm, then group 2-3 at 20 N/mm
+    # (graphplan draws them so); the segments after each Kp are read at that Kp
+    from graphplan.checking.generate import generate
+
+    gen = generate(EXAMPLES / "sixbar_press.toml", positions=("2",),
+                   variant_ref=(EXAMPLES / "sixbar_press.toml").as_posix())
+    text = gen.toml()
+    assert text.count('"Кр = ') == 2
+    text = text.replace('"h21 = ', '"R12_mm = 75,2 мм",\n  "h21 = ')  # a plain segment
+    r = _check(text)
+    assert r.wrong == (), [f.explanation_en for f in r.wrong]
+    assert {f.quantity: f.verdict for f in r.figures}["R12_mm"] == "ok"

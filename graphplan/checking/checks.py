@@ -107,7 +107,7 @@ class Checker:
         o = occs[0]
         q = o.q
         s = o.value if q.signed else abs(o.value)
-        base = self.w.stated_scales(o.position)
+        base = self.w.stated_scales(o.position, o.line)
         cands: list[dict[str, float]] = [base]
         if q.on_paper and q.scale:
             cands = []
@@ -150,7 +150,7 @@ class Checker:
         if not (f.q.on_paper and f.q.scale):
             return f, d
         best = (d.rank, f, d)
-        base = self.w.stated_scales(o.position)
+        base = self.w.stated_scales(o.position, o.line)
         for k in self.w.scale_candidates(f.q, o.position, f.occs)[1:]:
             sc = {**base, f.q.scale: k}
             e = self.w.expected(f.q, f.scope, o, f.model, sc)
@@ -316,7 +316,7 @@ class Checker:
         """A force written as its segment on the force plan where the force is meant
         (``Мур = R21∙h21∙Кl`` with R21 = 60,02 mm of the plan at Kp = 2 N/mm)."""
         plan = SCALE_OF_DIMENSION.get(f.q.dimension)
-        k = self.w.stated_scales(o.position).get(plan or "")
+        k = self.w.stated_scales(o.position, o.line).get(plan or "")
         if not k or f.q.on_paper or abs(k - 1) < 0.05 or not _close(
                 abs(o.raw) * k, abs(f.s), 0.01):
             return None
@@ -342,7 +342,18 @@ class Checker:
                 continue
             stated = next(o for o in occs if _close(o.value, k0, 1e-9))
             groups: dict[float, list[Occurrence]] = defaultdict(list)
+            several = sym == "Kp" and len(w.kp_stated(scope)) > 1
             for o in occs:
+                if several:  # a force plan per group: each use against the Kp in force
+                    if o.role != "operand" or _close(o.value, w.kp_at(scope, o.line, k0),
+                                                     self.tol.arithmetic):
+                        continue
+                    kv = next((v for v in groups if _close(v, o.value, 1e-9)), o.value)
+                    groups[kv].append(o)
+                    continue
+                if o.role != "operand" and o.work is not None and \
+                        o.work.arithmetic == "wrong" and _close(w._effective(o), k0, 1e-9):
+                    continue  # the slip of the scale's own line: said there, once
                 if not _close(o.value, k0, self.tol.arithmetic):
                     kv = next((v for v in groups if _close(v, o.value, 1e-9)), o.value)
                     groups[kv].append(o)

@@ -265,7 +265,7 @@ class Diagnoser:
         the stated one, or the one used in the line when the line's lengths on paper fit
         it better (the drawing was made at it)."""
         out: dict[str, float] = {}
-        stated = self.w.stated_scales(lw.position)
+        stated = self.w.stated_scales(lw.position, lw.line)
         for o in lw.occs:
             if o.role != "operand" or o.q.kind != "scale":
                 continue
@@ -294,7 +294,7 @@ class Diagnoser:
         if lw.matched is None:
             return None, []
         scales = self.line_scales(lw)
-        stated = self.w.stated_scales(lw.position)
+        stated = self.w.stated_scales(lw.position, lw.line)
         env: dict[str, float] = {}
         offs: list[str] = []
         for name, _node in lw.matched.bindings:

@@ -330,17 +330,21 @@ class Work:
         self.occs.append(o)
         return o
 
-    def reference_value(self, q: Quantity, scope: str, position: str | None) -> float | None:
+    def reference_value(self, q: Quantity, scope: str, position: str | None,
+                        line: Line | None = None) -> float | None:
         """What a name is known to be: graphplan's value, else the student's stated one
-        (a scale)."""
+        (a scale; a Kp: the one in force on ``line``)."""
         where = position if position in self.ref.labels or position == "max" else 0
         try:
-            v = self.ref.expected(q, where, self.stated_scales(position))
+            v = self.ref.expected(q, where, self.stated_scales(position, line))
         except (KeyError, ValueError, IndexError):
             v = None
         if v is not None and v != 0:
             return v
-        return self.stated_first.get((scope, q.key), v)
+        first = self.stated_first.get((scope, q.key), v)
+        if q.key == ("scale", "Kp") and line is not None:
+            return self.kp_at(scope, line, first)
+        return first
 
     def _prefix(self, q: Quantity, raw: float, scope: str, position: str | None) -> int:
         if len(q.prefixes) == 1:
@@ -367,7 +371,8 @@ class Work:
                 return 0.5
             q = self._in_product(lw, q, name, all_names)
             pos = name.split("@", 1)[1] if "@" in name else lw.position
-            ref = self.reference_value(q, self.scope_of(q, pos), pos)
+            ref = self.reference_value(q, self.scope_of(q, pos), pos,
+                                       lw.line if pos == lw.position else None)
             if ref is None:
                 return 0.5
             if ref == 0 or v == 0:
@@ -412,15 +417,61 @@ class Work:
 
     # --- scales -----------------------------------------------------------------------
 
-    def stated_scales(self, position: str | None) -> dict[str, float]:
-        """The scales the student states (Kl, Kv, Ka for the whole work, Kp per position)."""
+    def stated_scales(self, position: str | None, line: Line | None = None
+                      ) -> dict[str, float]:
+        """The scales the student states (Kl, Kv, Ka for the whole work, Kp per position).
+
+        A position may have a force plan per group, each at its own Kp: a Kp stated on a
+        line holds for the lines after it, up to the next Kp stated (``line`` says where;
+        before the first, the first holds).
+        """
         out: dict[str, float] = {}
         for sym in SCALE_DIMENSIONS:
             scope = "global" if sym != "Kp" else (position or "general")
             v = self._stated_scale(sym, scope)
+            if sym == "Kp" and line is not None:
+                v = self.kp_at(scope, line, v)
             if v is not None:
                 out[sym] = v
         return out
+
+    def _occs_of(self, scope: str, key: tuple) -> list[Occurrence]:
+        return self.figures.get((scope, key)) or [o for o in self.occs if o.scope == scope
+                                                   and o.q.key == key]
+
+    def kp_stated(self, scope: str) -> list[tuple[int, float]]:
+        """The Kp stated at a position, in the order of the lines: (file line, value)."""
+        out = []
+        for o in sorted(self._occs_of(scope, ("scale", "Kp")),
+                        key=lambda x: x.line.file_line or 0):
+            if o.role in ("result", "alias"):
+                v = self._effective(o)
+                if not out or not _close(out[-1][1], v, 1e-9):
+                    out.append((o.line.file_line or 0, v))
+        return out
+
+    def kp_at(self, scope: str, line: Line, default: float | None) -> float | None:
+        """The Kp in force on a line (see :meth:`stated_scales`)."""
+        stated = self.kp_stated(scope)
+        if len(stated) < 2 or line.file_line is None:
+            return default
+        before = [v for n, v in stated if n <= line.file_line]
+        return before[-1] if before else stated[0][1]
+
+    def _effective(self, o: Occurrence) -> float:
+        """A scale as the student really uses it: a scale line whose result is an
+        arithmetic slip (``Kv = 0,942/47,1 = 0,2``) holds with the value its numbers give
+        when the student uses that value elsewhere (the slip is reported once, on its
+        line)."""
+        lw = o.work
+        if lw is None or lw.arithmetic != "wrong" or lw.bad is None or o.role == "operand":
+            return o.value
+        computed = float(lw.bad[0].value) * (o.value / o.raw if o.raw else 1.0)
+        used = [x.value for x in self._occs_of(o.scope, o.q.key)
+                if x.role == "operand" and x.work is not lw]
+        if any(_close(u, computed, 0.005) for u in used):
+            return computed
+        return o.value
 
     def _stated_scale(self, sym: str, scope: str) -> float | None:
         key = ("scale", sym)
@@ -429,7 +480,7 @@ class Work:
             o for o in self.occs if o.scope == scope and o.q.key == key]
         res = [o for o in occs if o.role == "result"] or [o for o in occs if o.role == "alias"]
         if res:
-            return res[0].value
+            return self._effective(res[0])
         if occs:
             return Counter(o.value for o in occs).most_common(1)[0][0]
         return None
@@ -446,7 +497,8 @@ class Work:
         line of the position)."""
         if not q.scale:
             return []
-        stated = self.stated_scales(position).get(q.scale)
+        at = occs[0].line if occs else None
+        stated = self.stated_scales(position, at).get(q.scale)
         out = [stated] if stated else []
         if occs is None:
             used = self.used_scales(position, q.scale)
@@ -475,7 +527,7 @@ class Work:
                  scales: dict[str, float] | None = None) -> float | None:
         """graphplan's value of a figure (``None`` if there is none to compare with)."""
         where = self.where_index(scope, o)
-        scales = scales if scales is not None else self.stated_scales(o.position)
+        scales = scales if scales is not None else self.stated_scales(o.position, o.line)
         if where is None:  # a position's figure outside a position: only if it is constant
             vals = [self.ref.expected(q, k, scales, model) for k in range(len(self.ref.labels))]
             if not vals or any(v is None for v in vals):

@@ -321,23 +321,30 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
         arms: list[tuple[str, str, str]] = []
         written = {ln.lhs: ln.result for ln in lines}
         written.update(weights)
-        kp = max(fp.scale.per_mm for fp in plans[:-1]) if len(plans) > 1 else \
-            plans[-1].scale.per_mm
-        kp_t = _fmt(kp, 6)
-        first = plans[0]
-        basis = first.scale.quantity
-        if basis in first.readings:
+        # a force plan per group, each at its own Kp stated before it (graphplan's own
+        # answer key draws them so); one Kp for all when they agree
+        kp, kp_t = 0.0, ""
+
+        def state_kp(fp) -> None:
+            nonlocal kp, kp_t
+            scale = fp.scale.per_mm
+            basis = fp.scale.quantity
+            if kp and (_close_rel(scale, kp) or basis not in fp.readings):
+                return
+            kp, kp_t = scale, _fmt(scale, 6)
+            size = fp.readings[basis].value
             lines.append(GenLine("Кр", f"{{{basis}}}/{{{basis}_mm}}",
-                                 (Operand(basis, _fmt(first.readings[basis].value, 6)),
-                                  Operand(f"{basis}_mm",
-                                          _fmt(first.readings[basis].value / kp, decimals=2))),
+                                 (Operand(basis, _fmt(size, 6)),
+                                  Operand(f"{basis}_mm", _fmt(size / kp, decimals=2))),
                                  "Н/мм", 4, tags=("scale",), result_text=kp_t))
+
         for fp in plans:
             if fp.group.startswith("crank"):
                 gl = _crank_line(fp, written, arms, kl, cr, measure)
                 if gl is not None:
                     lines.extend(gl)
                 continue
+            state_kp(fp)
             for eq in fp.equations:
                 gl = _tangential(eq, fp, written, arms, kl, measure)
                 if gl is not None:
@@ -355,6 +362,10 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
         out_positions.append(GenPosition(label, tuple(lines), tuple(arms)))
     return Generated(variant_ref or str(Path(variant).resolve()), tuple(general),
                      tuple(out_positions), student)
+
+
+def _close_rel(a: float, b: float) -> bool:
+    return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 
 
 def _known_component(ref: Reference, k: int, quantity: str, seg: str,
