@@ -126,3 +126,26 @@ def test_sheets_and_pages_without_system_fonts_are_the_committed_bytes(tmp_path)
     committed_files = {p.relative_to(ROOT / "drawings") for p in (ROOT / "drawings").rglob("*")
                        if p.is_file() and p.name != "README.md"}
     assert committed_files == {p.relative_to(out) for p in written}
+
+
+def test_other_fonts_come_from_matplotlibs_font_manager(monkeypatch, tmp_path):
+    # unset $GRAPHPLAN_FONT_PATH: the system's fonts are matplotlib's findSystemFonts(),
+    # which on Windows reads the registry of the machine and of the user (the per-user
+    # folder %LOCALAPPDATA%\Microsoft\Windows\Fonts of Windows 10+), fontconfig elsewhere
+    from matplotlib import font_manager
+
+    user_font = tmp_path / "AppData/Local/Microsoft/Windows/Fonts/STIXGeneral.ttf"
+    user_font.parent.mkdir(parents=True)
+    shutil.copy(Path(matplotlib.get_data_path()) / "fonts/ttf/STIXGeneral.ttf", user_font)
+    seen = []
+
+    def find_system_fonts(fontpaths=None, fontext="ttf"):
+        seen.append(fontpaths)
+        return [str(user_font)]
+
+    monkeypatch.delenv(fonts.FONT_PATH_ENV, raising=False)
+    monkeypatch.setattr(font_manager, "findSystemFonts", find_system_fonts)
+    assert fonts.system_font_files() == (user_font,)
+    assert seen == [None]  # the platform's own search, not a folder list of ours
+    assert fonts.fallback_font_files("⌢") == (user_font,)
+    assert fonts.fallback_font_files("Масштаб 1:2 ω₁") == ()  # the bundled fonts draw it
