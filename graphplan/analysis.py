@@ -84,10 +84,12 @@ class Analysis:
         positions = [self.kin.as_json(k, moving) for k in range(self.kin.n)]
         from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
 
-        sc = sheet_scales(m, self.kin)
+        sc, note = _report_scales(m, self.kin, sheet_scales)
         kl, kv, ka = sc.kl, sc.kv, sc.ka
         mechanism["scales"] = {s.symbol: {"value": s.per_mm, "unit": s.unit, "basis": s.basis}
                                for s in (kl, kv, ka)}
+        if note:
+            mechanism["scales_note"] = note
         for k, entry in enumerate(positions):
             vp = velocity_plan(m, self.kin, k, kl, kv)
             ap = acceleration_plan(m, self.kin, k, kl, ka, vp)
@@ -138,6 +140,32 @@ class Analysis:
                                   "Kv": lever.plan.scale.per_mm,
                                   "arms_mm": {r.name: r.mm for r in lever.readings.values()},
                                   **_marks(lever)}
+
+
+def _report_scales(m, kin, sheet_scales):
+    """The scales of the report: sheet 1's, or — when sheet 1 cannot hold the plans of
+    every position (48 positions and more) — those of a sheet drawing an even sample of
+    them, so that the JSON never depends on a sheet's layout. Returns (scales, note)."""
+    from dataclasses import replace
+
+    from .errors import LayoutError
+
+    try:
+        return sheet_scales(m, kin), ""
+    except LayoutError as exc:
+        first = str(exc)
+    drawing = m.settings.get("drawing", {})
+    for size in (8, 1):
+        step = max(1, kin.n // size)
+        sample = list(dict.fromkeys(kin.labels[k] for k in range(0, kin.n, step)))[:size]
+        mm = replace(m, settings={**m.settings, "drawing": {**drawing, "positions": sample}})
+        try:
+            sc = sheet_scales(mm, kin)
+        except LayoutError:
+            continue
+        return sc, (f"sheet 1 cannot hold the plans of all {kin.n} positions ({first}); the "
+                    f"scales are those of a sheet drawing positions {', '.join(sample)}")
+    raise LayoutError(first)
 
 
 def _marks(*plans) -> dict:

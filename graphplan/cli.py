@@ -8,15 +8,17 @@ a student's calculation checked figure by figure (:mod:`graphplan.checking`);
 ``graphplan teach VARIANT.toml --position N --plan PLAN -o DIR`` — step-by-step teaching
 pages (:mod:`graphplan.teaching`).
 
-A thin layer over the library: every :class:`GraphplanError` becomes one line
-on standard error and exit status 2 (a traceback only with ``--debug``); the exit
-codes and the console encodings are :mod:`graphplan.console`'s.
+A thin layer over the library: every error becomes one line on standard error (a
+traceback only with ``--debug``) and an exit status of its own (2 bad input, 3 a file
+could not be read or written, 4 an internal error, 130 interrupted, 143 terminated); the
+exit codes and the console encodings are :mod:`graphplan.console`'s.
 With no variant file, the bundled press example is used.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 from pathlib import Path
@@ -120,38 +122,69 @@ COMMANDS = {"analyze": _analyze, "sheets": _sheets, "check": check_command.run,
             "teach": teach_command.run}
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, handled like Ctrl-C: the work done so far is kept (a class run writes
+    its summary), then the command exits with 143."""
+
+
+def _on_sigterm(signum, frame):  # pragma: no cover - exercised in a subprocess test
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status (:data:`graphplan.console.EXIT_CODES`).
 
     0 done, 1 faults found by ``check``, 2 bad input, 3 a file could not be read or
-    written, 4 an internal error (a bug), 130 interrupted.
+    written (read-only, full disk, a link or a file in the way), 4 an internal error (a
+    bug), 130 interrupted (Ctrl-C), 143 terminated (SIGTERM; a class run writes its
+    summary first).
     """
+    import signal
+
     from . import console
+    from .files import os_error_text
+    from .safe_text import terminal_text
 
     console.prepare_streams()  # never a UnicodeEncodeError on a cp1251/cp866/ASCII console
     args = _parser().parse_args(argv)
+    previous = None
+    with contextlib.suppress(ValueError, AttributeError):  # not the main thread / Windows
+        previous = signal.signal(signal.SIGTERM, _on_sigterm)
     try:
         return COMMANDS[args.command](args)
+    except BrokenPipeError:  # pragma: no cover - `graphplan analyze | head`
+        return console.EXIT_OK
+    except OSError as exc:  # also graphplan's OutputError (a GraphplanError)
+        if args.debug:
+            raise
+        msg = str(exc) if isinstance(exc, GraphplanError) else os_error_text(exc)
+        print(f"graphplan: error: {terminal_text(msg)}", file=sys.stderr)
+        return console.EXIT_FILE_ERROR
     except GraphplanError as exc:
         if args.debug:
             raise
-        print(f"graphplan: error: {exc}", file=sys.stderr)
+        print(f"graphplan: error: {terminal_text(str(exc))}", file=sys.stderr)
         return console.EXIT_BAD_INPUT
-    except BrokenPipeError:  # pragma: no cover - `graphplan analyze | head`
-        return console.EXIT_OK
-    except OSError as exc:
-        if args.debug:
-            raise
-        where = f"{exc.filename}: " if exc.filename else ""
-        print(f"graphplan: error: {where}{exc.strerror or exc}", file=sys.stderr)
-        return console.EXIT_FILE_ERROR
+    except Terminated:
+        print("graphplan: terminated", file=sys.stderr)
+        return console.EXIT_TERMINATED
     except KeyboardInterrupt:
         print("graphplan: interrupted", file=sys.stderr)
         return console.EXIT_INTERRUPTED
+    except (RecursionError, MemoryError) as exc:
+        if args.debug:
+            raise
+        print(f"graphplan: error: the input is too large or too deeply nested "
+              f"({type(exc).__name__})", file=sys.stderr)
+        return console.EXIT_BAD_INPUT
     except Exception as exc:
         if args.debug:
             raise
-        reason = " ".join(f"{type(exc).__name__}: {exc}".split())[:300]
+        reason = terminal_text(" ".join(f"{type(exc).__name__}: {exc}".split()))[:300]
         print(f"graphplan: internal error (a bug, please report it; --debug shows where): "
               f"{reason}", file=sys.stderr)
         return console.EXIT_INTERNAL
+    finally:
+        if previous is not None:
+            with contextlib.suppress(ValueError):
+                signal.signal(signal.SIGTERM, previous)

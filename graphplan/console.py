@@ -24,6 +24,7 @@ Exit status of every command (:data:`EXIT_CODES`)::
     3  a file could not be read or written (permissions, a full disk; one line on stderr)
     4  an internal error of graphplan — a bug (one line; --debug shows the traceback)
     130 interrupted (Ctrl+C)
+    143 terminated (SIGTERM)
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ EXIT_BAD_INPUT = 2
 EXIT_FILE_ERROR = 3
 EXIT_INTERNAL = 4
 EXIT_INTERRUPTED = 130
+EXIT_TERMINATED = 143
 
 #: Exit status → meaning (docs/cli.md and the README list the same).
 EXIT_CODES: dict[int, str] = {
@@ -48,6 +50,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_FILE_ERROR: "a file could not be read or written",
     EXIT_INTERNAL: "an internal error of graphplan (a bug)",
     EXIT_INTERRUPTED: "interrupted (Ctrl+C)",
+    EXIT_TERMINATED: "terminated (SIGTERM); a class run writes its summary first",
 }
 
 ERROR_HANDLER = "graphplan-console"  #: codecs error handler registered by this module

@@ -144,6 +144,14 @@ def link_coordinate(mech: Mechanism, out: str, kin_pos, kin_vel=None):
     return "rocker", q, rate, mech.crank.pin
 
 
+DRAWABLE_SINE = 0.002
+"""Smallest |sin| between the two lines of a dyad with a guide (a prismatic pair)
+anywhere in the turn that a drawing can show (0.11°): below it the variant is refused at
+load, with the reason — guides 0.1° from parallel make strokes of hundreds of metres and
+intersections that move metres for a reading's 0.5 mm. (A revolute dyad passing a
+change point keeps its marks of ill-conditioning on the plans.)"""
+
+
 def _travel(phi, phi0, sense):
     """Crank turn from phi0 to phi in the sense of rotation, in [0, 2π)."""
     return np.mod((np.asarray(phi) - phi0) * sense, 2 * math.pi)
@@ -183,6 +191,13 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
                 "become parallel)"
             )
         min_cond[name] = (min(s_min, float(s[k])), phi_min if s_min < s[k] else float(grid[k]))
+        if min_cond[name][0] < DRAWABLE_SINE and "P" in name.split("(", 1)[0]:
+            raise SingularPoseError(
+                f"{mech.source}: dyad {name}: its two lines are nearly parallel (smallest "
+                f"|sin| = {min_cond[name][0]:.2g} at φ = "
+                f"{math.degrees(min_cond[name][1]) % 360:.2f}°, below {DRAWABLE_SINE:g}): no "
+                "plan of it can be drawn or read (a stroke of kilometres, a point off any "
+                "sheet); check the guides' and slots' angles and the lengths")
     _check_slot_clearance(mech, grid, pos)
 
     kind, dead, q_start, q_end, stroke, turn = _dead_centres(

@@ -233,12 +233,9 @@ def load(path: str | Path) -> Mechanism:
     """
     path = Path(path)
     source = str(path)
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise InputError(f"{source}: file not found") from None
-    except OSError as exc:
-        raise InputError(f"{source}: cannot read ({exc.strerror})") from None
+    from .files import read_input
+
+    raw = read_input(path)  # a regular file, bounded in size (no FIFO, no /dev/zero)
     return loads(decode_text(raw, source), source=source)  # BOM, CRLF, "save as UTF-8"
 
 
@@ -248,7 +245,30 @@ def loads(text: str, source: str = "<string>") -> Mechanism:
         data = tomllib.loads(text)
     except (tomllib.TOMLDecodeError, ValueError) as exc:  # ValueError: e.g. a 5000-digit integer
         raise InputError(one_line(f"{source}: not valid TOML ({exc})")) from None
-    return _build(data, _Reader(source))
+    except RecursionError:
+        raise InputError(f"{source}: not valid TOML (nested too deeply)") from None
+    mech = _build(data, _Reader(source))
+    _refuse_control_characters(data, source)
+    return mech
+
+
+def _refuse_control_characters(data, source: str, key: str = "") -> None:
+    """Every text of a variant reaches the sheets (XML), the tables and the terminal: a
+    control character (an escape sequence, U+0008 …) is refused at load, naming the key."""
+    from .safe_text import control_character
+
+    items = data.items() if isinstance(data, dict) else enumerate(data)
+    for k, v in items:
+        where = f"{key}.{k}" if isinstance(k, str) and key else (k if isinstance(k, str)
+                                                                   else f"{key}[{k}]")
+        for text in ((k, v) if isinstance(k, str) else (v,)):
+            if isinstance(text, str):
+                bad = control_character(text)
+                if bad is not None:
+                    raise InputError(f"{source}: {where}: a control character ({bad}) in "
+                                     "the text: not allowed")
+        if isinstance(v, dict | list):
+            _refuse_control_characters(v, source, where)
 
 
 def _build(data: dict, r: _Reader) -> Mechanism:

@@ -18,7 +18,9 @@
   ``sheetN.dxf`` (CAD, layers, 1:1 mm), ``sheetN.pdf`` (true size) and ``sheetN.png``
   (a preview at ``--dpi``): :mod:`graphplan.exports`.
 
-Every file is written atomically; the variant file is never overwritten. With
+The files are replaced as a set (:func:`graphplan.files.write_set`: written beside the
+folder, then swapped in; a crash leaves the old set or the new one, never a mix); the
+variant file is never overwritten. With
 several variants, each goes into ``DIR/<variant name>/``.
 """
 
@@ -27,8 +29,6 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, replace
 from pathlib import Path
-
-from .errors import InputError
 
 
 @dataclass(frozen=True, slots=True)
@@ -100,7 +100,7 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
     from .analysis import analyze
     from .exports import check_formats, parse_formats
     from .exports.png import check_dpi
-    from .files import write_atomic
+    from .files import OutputError, write_set
     from .loader import load
 
     formats = parse_formats(formats)
@@ -108,6 +108,9 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
     if dpi is not None:
         check_dpi(dpi)
     variant = Path(variant)
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"{out}: exists and is not a folder (the output must be a folder)")
     mech = load(variant)
     if page:  # the format decides the scales: the sheet, tables and JSON must agree
         drawing = {**mech.settings.get("drawing", {}), "format": page}
@@ -116,9 +119,4 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
     analysis = analyze(mech)
     texts = project_files(analysis, lang=lang, precision=precision, formats=formats,
                           dpi=dpi)
-    out = Path(out_dir)
-    if out.exists() and not out.is_dir():
-        raise InputError(f"{out}: the output must be a directory")
-    written = tuple(write_atomic(out / name, text, protect=(variant,))
-                    for name, text in texts.items())
-    return Written(variant, written, analysis.warnings)
+    return Written(variant, write_set(out, texts, protect=(variant,)), analysis.warnings)

@@ -150,7 +150,7 @@ def test_sheets_refuses_a_file_as_output_folder(capsys, tmp_path):
     f = tmp_path / "taken"
     f.write_text("x")
     code, _, err = run(capsys, "sheets", "-o", str(f))
-    assert code == 2 and "the output must be a directory" in err
+    assert code == 3 and "the output must be a folder" in err  # 3: an output error
     assert f.read_text() == "x"
 
 

@@ -93,8 +93,9 @@ def test_spellings_for_consoles_that_lack_a_character():
 
 def test_exit_codes_are_distinct_and_documented():
     codes = [console.EXIT_OK, console.EXIT_FAULTS, console.EXIT_BAD_INPUT,
-             console.EXIT_FILE_ERROR, console.EXIT_INTERNAL, console.EXIT_INTERRUPTED]
-    assert codes == [0, 1, 2, 3, 4, 130] and set(console.EXIT_CODES) == set(codes)
+             console.EXIT_FILE_ERROR, console.EXIT_INTERNAL, console.EXIT_INTERRUPTED,
+             console.EXIT_TERMINATED]
+    assert codes == [0, 1, 2, 3, 4, 130, 143] and set(console.EXIT_CODES) == set(codes)
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     for code in codes:
         assert f"| {code} |" in readme, code

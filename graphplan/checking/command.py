@@ -52,7 +52,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="check a drawing (.dxf, .svg, .pdf) or a folder of them "
                         "against the variant's constructions (with --variant; repeatable)")
     parser.add_argument("--variant", metavar="VARIANT",
-                        help="the variant file a drawing is checked against (--drawing)")
+                        help="the teacher's variant: student files are checked against it "
+                        "(a class summary flags a student whose own variant differs), and "
+                        "so are drawings (--drawing)")
+    parser.add_argument("--class", dest="class_file", metavar="FILE",
+                        help="a class file: [class] variant = ... and [tolerances] (the "
+                        "command's options win)")
+    parser.add_argument("--timeout", type=float, default=None, metavar="S",
+                        help="wall-time limit of one student file in a folder (default 120)")
+    parser.add_argument("--memory", type=int, default=None, metavar="MB",
+                        help="memory limit of one student file's worker (default 1024)")
+    parser.add_argument("--resume", action="store_true",
+                        help="a folder: keep the rows of the last run (-o DIR/summary.jsonl) "
+                        "whose file has not changed, check the rest")
     parser.add_argument("--answer-key", metavar="VARIANT",
                         help="write the calculation graphplan itself would hand in for a "
                         "variant, as a student file (to -o FILE, or to standard output)")
@@ -101,6 +113,16 @@ def run(args) -> int:
         raise StudentFileError("graphplan check: expected a student file or a folder "
                                "(or --answer-key VARIANT)")
     tol = _tolerances(args)
+    variant = Path(args.variant) if args.variant else None
+    if args.class_file:
+        from .batch import class_rules
+
+        cvariant, ctol = class_rules(args.class_file)
+        variant = variant or cvariant
+        tol = {**ctol, **tol}
+    if variant is not None and not variant.is_file():
+        raise StudentFileError(f"--variant: variant file {str(variant)!r} not found")
+    args.teacher_variant = variant
     paths = [Path(p) for p in args.paths]
     if any(p.is_dir() for p in paths):
         if len(paths) != 1:
@@ -109,20 +131,32 @@ def run(args) -> int:
     if len(paths) > 1 and (args.json or args.html or args.svg):
         raise StudentFileError("graphplan check: --json, --html and --svg take one student "
                                "file (use -o DIR for several)")
+    from .batch import report_names
+
     status = 0
-    for p in paths:
-        status = max(status, _file(p, args, tol, multiple=len(paths) > 1))
+    for p, name in zip(paths, report_names(paths), strict=True):
+        status = max(status, _file(p, args, tol, multiple=len(paths) > 1, name=name))
     return status
 
 
-def _file(path: Path, args, tol: dict, multiple: bool) -> int:
+def _file(path: Path, args, tol: dict, multiple: bool, name: str = "") -> int:
+    import dataclasses
+
     from ..files import write_atomic
+    from ..safe_text import terminal_text
     from .checks import checker_for, overlays
     from .report_html import html_report
     from .report_text import text_report
     from .student import load_student
 
     work = load_student(path)
+    if work.tolerances:
+        print(terminal_text(f"graphplan: note: {path}: the file's own [tolerances] are "
+                            "ignored (tolerances are the teacher's: --segment-tolerance, "
+                            "--class …)"), file=sys.stderr)
+        work = dataclasses.replace(work, tolerances={})
+    if args.teacher_variant is not None:
+        work = dataclasses.replace(work, variant=args.teacher_variant)
     checker = checker_for(work, tol, tuple(Path(n) for n in args.neighbour), args.lang)
     report = checker.run()
     protect = (path, work.variant)
@@ -133,7 +167,7 @@ def _file(path: Path, args, tol: dict, multiple: bool) -> int:
         sys.stdout.write(json.dumps(report.to_json(), ensure_ascii=json_ascii(), indent=1,
                                     allow_nan=False) + "\n")
     else:
-        sys.stdout.write(text_report(report))
+        sys.stdout.write(terminal_text_lines(text_report(report)))
     if args.html:
         write_atomic(args.html, html_report(report, sheets), protect=protect)
     if args.svg:
@@ -142,39 +176,73 @@ def _file(path: Path, args, tol: dict, multiple: bool) -> int:
             p = Path(args.svg)
             write_atomic(p.with_name(f"{p.stem}-{i}{p.suffix}"), s, protect=protect)
     if args.output:
-        out = Path(args.output) / (path.stem if multiple else "")
-        write_atomic(out / "report.html", html_report(report, sheets), protect=protect)
+        root = Path(args.output)
+        out = root / (name if multiple else "")
+        write_atomic(out / "report.html", html_report(report, sheets), protect=protect,
+                     root=root)
         write_atomic(out / "report.json", json.dumps(report.to_json(), ensure_ascii=False,
                                                      indent=1, allow_nan=False) + "\n",
-                     protect=protect)
+                     protect=protect, root=root)
         for i, s in enumerate(sheets, start=1):
             write_atomic(out / ("overlay.svg" if i == 1 else f"overlay-{i}.svg"), s,
-                         protect=protect)
+                         protect=protect, root=root)
     return 0 if report.ok else 1
 
 
+def terminal_text_lines(text: str) -> str:
+    """A report for the terminal: every line made safe (:func:`terminal_text`)."""
+    from ..safe_text import terminal_text
+
+    return "".join(terminal_text(ln) + "\n" for ln in text.splitlines())
+
+
 def _folder(folder: Path, args, tol: dict) -> int:
-    from .batch import check_folder
+    from ..safe_text import terminal_text
+    from .batch import Limits, check_folder
 
-    from .batch import skipped_files
+    limits = Limits()
+    if args.timeout is not None:
+        if not 0 < args.timeout <= 86400:
+            raise_bad("--timeout", "a number of seconds in (0, 86400]", args.timeout)
+        limits = Limits(args.timeout, limits.memory_mb, limits.max_bytes)
+    if args.memory is not None:
+        if not 64 <= args.memory <= 1 << 20:
+            raise_bad("--memory", "a number of megabytes of at least 64", args.memory)
+        limits = Limits(limits.seconds, args.memory, limits.max_bytes)
+    if args.resume and not args.output:
+        raise_bad("--resume", "-o DIR (the folder of the run to resume)", "no -o")
 
-    for p in skipped_files(folder):
-        print(f"{p.name}: not a student file (no [work] table), skipped", file=sys.stderr)
-    batch = check_folder(folder, args.output, jobs=args.jobs, tolerances=tol, lang=args.lang)
-    width = max(len(Path(r.file).name) for r in batch.rows)
-    for r in batch.rows:
-        name = Path(r.file).name.ljust(width)
+    def line(r) -> str:
+        name = terminal_text(Path(r.file).name)
         if r.status == "error":
-            print(f"{name}  error   {r.error}")
+            text = f"{name}  error   {terminal_text(r.error)}"
         else:
-            print(f"{name}  {r.status:<6}  {r.figures} figures, {r.wrong} wrong, {r.faults} "
-                  f"faults{': ' + r.kinds if r.kinds else ''}")
+            text = (f"{name}  {r.status:<6}  {r.figures} figures, {r.wrong} wrong, "
+                    f"{r.faults} faults{': ' + r.kinds if r.kinds else ''}"
+                    + (f", {r.unreadable} unreadable lines" if r.unreadable else ""))
+        return text + (f"  [{terminal_text(r.notes)}]" if r.notes else "")
+
+    batch = check_folder(folder, args.output, jobs=args.jobs, tolerances=tol, lang=args.lang,
+                         variant=args.teacher_variant, limits=limits, resume=args.resume,
+                         progress=lambda r: print(line(r), flush=True))
+    for name in batch.skipped:
+        print(f"{terminal_text(Path(name).name)}: not a student file (no [work] table), "
+              "skipped", file=sys.stderr)
     n_err = sum(r.status == "error" for r in batch.rows)
     n_ok = sum(r.status == "ok" for r in batch.rows)
     print(f"{len(batch.rows)} files: {n_ok} without faults, {len(batch.rows) - n_ok - n_err} "
           f"with faults, {n_err} not checked"
-          + (f"; summary in {Path(args.output) / 'summary.html'}" if args.output else ""))
+          + (f"; class variant {terminal_text(batch.class_variant)}" if batch.class_variant
+             else "")
+          + (f"; summary in {terminal_text(str(Path(args.output) / 'summary.html'))}"
+             if args.output else ""))
     return 0 if batch.ok else 1
+
+
+def raise_bad(option: str, expected: str, got) -> None:
+    from .errors import StudentFileError
+
+    raise StudentFileError(f"{option}: expected {expected} (got {got})")
 
 
 __all__ = ["HELP", "add_arguments", "run"]

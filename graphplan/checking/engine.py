@@ -27,7 +27,7 @@ from collections import Counter
 from dataclasses import dataclass, field, fields
 from itertools import pairwise
 
-from .errors import ExpressionError
+from .errors import ExpressionError, UnreadableError
 from .expressions import Node, Sym, decimals, parse, show, split_chain, value
 from .matching import Match, match
 from .quantities import SCALE_DIMENSIONS, Quantity, Vocabulary
@@ -79,11 +79,15 @@ class Member:
 
 
 def read_member(text: str, vocab: Vocabulary) -> Member:
-    """Classify and parse one member of a written chain."""
+    """Classify and parse one member of a written chain. Numbers that parse but have no
+    finite value (``1/0``, ``ln 0``, ``1e400``: :class:`UnreadableError`) are ``bad``,
+    never a formula."""
     body, unit = split_unit(text)
     try:
         node = parse(body)
         return Member(text, "numeric", node, unit, value(node))
+    except UnreadableError as exc:
+        return Member(text, "bad", unit=unit, error=str(exc))
     except ExpressionError as exc:
         err = str(exc)
     if not any(c.isalpha() for c in body):
@@ -94,6 +98,10 @@ def read_member(text: str, vocab: Vocabulary) -> Member:
         return Member(text, "text", error=str(exc))
     if isinstance(node, Sym):
         return Member(text, "name", node)
+    unknown = [n for n in _sym_names(node) if vocab.lookup(n) is None]
+    if unknown and _has_number(node):  # "9,81e": numbers with a stray letter
+        return Member(text, "text", error=f"{unknown[0]!r} among the numbers is no known "
+                      "name")
     return Member(text, "formula", node)
 
 
@@ -189,6 +197,11 @@ class Work:
         self.occs: list[Occurrence] = []
         self._formulas: dict[tuple, Node] = {}  # the last formula written alone, by its name
         self.figures: dict[tuple[str, tuple], list[Occurrence]] = {}  # filled at the end
+        # by (scope, key), in reading order; and the stated scales found so far: looked up
+        # for every number of every line, so kept linear in the file's size
+        self._occ_index: dict[tuple[str, tuple], list[Occurrence]] = {}
+        self._scale_memo: dict[tuple[str, str], float | None] = {}
+        self._scale_state: dict[tuple[str, tuple], list] = {}
         for ln in work.general:
             self.lines.append(self._read(ln, None, self.vocab_general))
         for p in work.positions:
@@ -202,8 +215,10 @@ class Work:
         for o in self.occs:
             self.figures.setdefault((o.scope, o.q.key), []).append(o)
         order = {"result": 0, "alias": 1, "operand": 2}
+        index = {id(o): i for i, o in enumerate(self.occs)}
         for occs in self.figures.values():
-            occs.sort(key=lambda o: (order[o.role], self.occs.index(o)))
+            occs.sort(key=lambda o: (order[o.role], index[id(o)]))
+        self._scale_memo.clear()
 
     # --- reading ----------------------------------------------------------------------
 
@@ -328,6 +343,15 @@ class Work:
                        name, composite, lw)
         lw.occs.append(o)
         self.occs.append(o)
+        self._occ_index.setdefault((scope, q.key), []).append(o)
+        if q.key[0] == "scale":  # what _find_stated_scale needs, kept as the lines are read
+            st = self._scale_state.setdefault((scope, q.key), [None, None, Counter()])
+            if role == "result" and st[0] is None:
+                st[0] = o.value
+            elif role == "alias" and st[1] is None:
+                st[1] = o.value
+            st[2][o.value] += 1
+            self._scale_memo.clear()
         return o
 
     def reference_value(self, q: Quantity, scope: str, position: str | None,
@@ -380,7 +404,14 @@ class Work:
             return min(3.0, min(abs(math.log(abs(v) * 1000.0 ** k / abs(ref)))
                                 for k in q.prefixes))
 
-        m = match(lw.template, target.node, cost)
+        memo: dict[tuple[str, float], float] = {}
+
+        def cost_once(name: str, v: float) -> float:  # a pair is tried once per term pair
+            if (name, v) not in memo:
+                memo[(name, v)] = cost(name, v)
+            return memo[(name, v)]
+
+        m = match(lw.template, target.node, cost_once)
         lw.matched = m
         if m is None:
             lw.note = lw.note or ("the formula and the numbers differ in form: the numbers "
@@ -474,10 +505,19 @@ class Work:
         return o.value
 
     def _stated_scale(self, sym: str, scope: str) -> float | None:
+        if (sym, scope) not in self._scale_memo:
+            self._scale_memo[(sym, scope)] = self._find_stated_scale(sym, scope)
+        return self._scale_memo[(sym, scope)]
+
+    def _find_stated_scale(self, sym: str, scope: str) -> float | None:
         key = ("scale", sym)
-        # while the lines are still being read, the figures are not grouped yet
-        occs = self.figures.get((scope, key)) or [
-            o for o in self.occs if o.scope == scope and o.q.key == key]
+        if not self.figures:  # while the lines are read: the state kept by _occurrence
+            st = self._scale_state.get((scope, key))
+            if st is None:
+                return None
+            first = st[0] if st[0] is not None else st[1]
+            return first if first is not None else st[2].most_common(1)[0][0]
+        occs = self.figures.get((scope, key), [])
         res = [o for o in occs if o.role == "result"] or [o for o in occs if o.role == "alias"]
         if res:
             return self._effective(res[0])
@@ -596,6 +636,21 @@ def _sym_names(node: Node) -> list[str]:
     if isinstance(node, Call):
         return _sym_names(node.arg)
     return []
+
+
+def _has_number(node: Node) -> bool:
+    """A number written in the tree (names such as G3 hold digits, not numbers)."""
+    from .expressions import Bin, Call, Neg, Num
+
+    if isinstance(node, Num):
+        return node.text != "π"
+    if isinstance(node, Neg):
+        return _has_number(node.x)
+    if isinstance(node, Call):
+        return _has_number(node.arg)
+    if isinstance(node, Bin):
+        return _has_number(node.a) or _has_number(node.b)
+    return False
 
 
 def _is_number(node: Node) -> bool:

@@ -22,3 +22,14 @@ class ExpressionError(InputError):
     def __init__(self, message: str, column: int = 0):
         super().__init__(message)
         self.column = column
+
+
+class UnreadableError(ExpressionError):
+    """Arithmetic that is written well but has no value a calculation can have: a literal
+    or a result that is not a finite real number (``1e400``, ``2^1024``), a division by
+    zero (``1/0``), a function outside its domain (``ln 0``, ``sqrt(-1)``), or work
+    beyond the reader's bounds.
+
+    The checker reports such a line as a finding of its own (kind ``unreadable``): it is
+    never taken for a formula, and never "nothing is wrong".
+    """

@@ -27,6 +27,20 @@ name (``0,7Q0``). Two numbers in a row are refused.
 Nothing is ever passed to ``eval``: the parser builds a tree of frozen nodes and
 :func:`value` walks it. Every refusal is an :class:`ExpressionError` naming the
 expression, the column and what was expected.
+
+Two kinds of refusal (the interface the checker counts on):
+
+* :class:`ExpressionError` — the text is not arithmetic as written (a name where a number
+  is expected, an unknown character, two numbers in a row): it may still be a formula or
+  words;
+* :class:`UnreadableError` (a subclass) — the text *is* arithmetic, but it has no finite
+  real value: a literal that overflows (``1e400``), a result that does (``2^1024``), a
+  division by zero, a function outside its domain (``ln 0``, ``sqrt(-1)``). A line with
+  such a member is a finding of kind ``unreadable``, never a formula.
+
+Work is bounded linearly in the text: at most :data:`MAX_LENGTH` characters, nesting at
+most :data:`MAX_DEPTH`, and every operation on floats (a power is ``math.pow``, never an
+integer power that grows without bound).
 """
 
 from __future__ import annotations
@@ -36,7 +50,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from .errors import ExpressionError
+from .errors import ExpressionError, UnreadableError
 from .units import Unit, fold, split_unit
 
 MAX_LENGTH = 600
@@ -142,7 +156,10 @@ def _number_value(text: str) -> float:
     t = t.replace(",", ".").replace("е", "e").replace("Е", "e").replace("−", "-")
     if t.startswith("."):
         t = "0" + t
-    return float(t)
+    x = float(t)
+    if not math.isfinite(x):
+        raise UnreadableError(f"the number {text!r} is too large to be a finite number")
+    return x
 
 
 def _is_name_start(ch: str) -> bool:
@@ -165,7 +182,11 @@ def tokenize(text: str) -> list[Token]:
         m = _NUMBER.match(text, i)
         if m and (ch.isdigit() or ch in ".,"):
             num = m.group()
-            out.append(Token("num", num, i + 1, _number_value(num)))
+            try:
+                val = _number_value(num)
+            except UnreadableError as exc:
+                raise UnreadableError(f"{exc} at column {i + 1}", i + 1) from None
+            out.append(Token("num", num, i + 1, val))
             i = m.end()
             continue
         if _is_name_start(ch):
@@ -247,7 +268,8 @@ class _Parser:
     def enter(self) -> None:
         self.depth += 1
         if self.depth > MAX_DEPTH:
-            raise self.fail(f"nested deeper than {MAX_DEPTH} levels")
+            err = self.fail(f"nested deeper than {MAX_DEPTH} levels")
+            raise UnreadableError(str(err), err.column)
 
     def leave(self) -> None:
         self.depth -= 1
@@ -390,7 +412,7 @@ def parse(text: str, *, names: bool = False, resolve: Resolver | None = None) ->
     if not isinstance(text, str):
         raise ExpressionError(f"expected an expression as text (got {type(text).__name__})")
     if len(text) > MAX_LENGTH:
-        raise ExpressionError(f"expression of {len(text)} characters: at most {MAX_LENGTH} "
+        raise UnreadableError(f"expression of {len(text)} characters: at most {MAX_LENGTH} "
                               "are read")
     return _Parser(text, names, resolve).parse()
 
@@ -403,8 +425,11 @@ def value(node: Node, env: dict[str, float] | None = None) -> float:
 
     Raises
     ------
+    UnreadableError
+        Division by zero, a function outside its domain, a result that is not a finite
+        real number.
     ExpressionError
-        Division by zero, a result that is not a finite real number, an unknown name.
+        An unknown name.
     """
     if isinstance(node, Num):
         return node.value
@@ -419,7 +444,7 @@ def value(node: Node, env: dict[str, float] | None = None) -> float:
         try:
             out = FUNCTIONS[node.fn](x)
         except (ValueError, ZeroDivisionError, OverflowError):
-            raise ExpressionError(f"{node.fn}({_g(x)}) is not defined") from None
+            raise UnreadableError(f"{node.fn}({_g(x)}) is not defined") from None
         return _finite(out, node.fn)
     a, b = value(node.a, env), value(node.b, env)
     op = node.op
@@ -431,12 +456,12 @@ def value(node: Node, env: dict[str, float] | None = None) -> float:
         return _finite(a * b, "a product")
     if op == "/":
         if b == 0:
-            raise ExpressionError(f"division by zero ({_g(a)}/0)")
+            raise UnreadableError(f"division by zero ({_g(a)}/0)")
         return _finite(a / b, "a quotient")
     try:  # "^"
         out = math.pow(a, b)
     except (ValueError, OverflowError, ZeroDivisionError):
-        raise ExpressionError(f"{_g(a)}^{_g(b)} is not a finite real number") from None
+        raise UnreadableError(f"{_g(a)}^{_g(b)} is not a finite real number") from None
     return _finite(out, "a power")
 
 
@@ -446,7 +471,7 @@ def _g(x: float) -> str:
 
 def _finite(x: float, what: str) -> float:
     if not math.isfinite(x):
-        raise ExpressionError(f"{what} is not a finite number")
+        raise UnreadableError(f"{what} is not a finite number")
     return x
 
 
@@ -477,6 +502,8 @@ def evaluate(text: str) -> Value:
     node = parse(body)
     try:
         return Value(value(node), unit, text)
+    except UnreadableError as exc:
+        raise UnreadableError(f"expression {text.strip()!r}: {exc}") from None
     except ExpressionError as exc:
         raise ExpressionError(f"expression {text.strip()!r}: {exc}") from None
 
@@ -521,6 +548,6 @@ def _show(node: Node, outer: int) -> str:
     return f"({s})" if p < outer else s
 
 
-__all__ = ["FUNCTIONS", "MAX_DEPTH", "MAX_LENGTH", "Bin", "Call", "Neg", "Node", "Num", "Sym",
-           "Token", "Value", "decimals", "evaluate", "parse", "show", "split_chain", "tokenize",
-           "value"]
+__all__ = ["FUNCTIONS", "MAX_DEPTH", "MAX_LENGTH", "Bin", "Call", "ExpressionError", "Neg",
+           "Node", "Num", "Sym", "Token", "UnreadableError", "Value", "decimals", "evaluate",
+           "parse", "show", "split_chain", "tokenize", "value"]

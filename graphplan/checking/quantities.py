@@ -265,6 +265,7 @@ class Vocabulary:
     def _add(self, q: Quantity, *aliases: str) -> None:
         for n in (q.name, *aliases):
             self.names.setdefault(fold(n), q)
+        self._lower = None
 
     def lookup(self, name: str) -> Quantity | None:
         """The quantity a name stands for (``None`` if unknown); ``X@4`` names X."""
@@ -273,10 +274,14 @@ class Vocabulary:
         if q is not None:
             return q
         folded = fold(base)
-        hits = {id(v): v for k, v in self.names.items() if k.lower() == folded.lower()}
+        if getattr(self, "_lower", None) is None:  # an index, not a scan per unknown name
+            self._lower: dict[str, list[tuple[str, Quantity]]] | None = {}
+            for k, v in self.names.items():
+                self._lower.setdefault(k.lower(), []).append((k, v))
+        cands = self._lower.get(folded.lower(), [])  # type: ignore[union-attr]
+        hits = {id(v): v for _k, v in cands}
         if len(hits) > 1:  # "as2": prefer the names whose first letter has the same case
-            hits = {id(v): v for k, v in self.names.items()
-                    if k.lower() == folded.lower() and k[:1] == folded[:1]}
+            hits = {id(v): v for k, v in cands if k[:1] == folded[:1]}
         return next(iter(hits.values())) if len(hits) == 1 else None
 
     def segment_of(self, q: Quantity) -> Quantity | None:

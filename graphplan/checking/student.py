@@ -26,6 +26,7 @@ See ``docs/check-format.md`` for the format. In short::
 
 from __future__ import annotations
 
+import bisect
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -33,6 +34,7 @@ from pathlib import Path
 from typing import Any
 
 from ..files import decode_text
+from ..safe_text import control_character
 from .errors import StudentFileError
 from .quantities import ArmSpec
 
@@ -125,6 +127,8 @@ class _Read:
         self.text = text
         self.rows = text.splitlines()
         self.cursor = 0  # lines are found in file order
+        self.starts: list[int] | None = None  # offset of each row in the joined text
+        self.joined = ""
 
     def fail(self, key: str, msg: str) -> StudentFileError:
         return StudentFileError(f"{self.source}: {key}: {msg}")
@@ -150,6 +154,9 @@ class _Read:
             raise self.fail(key, f"expected one of {', '.join(choices)} (got {v!r})")
         if "\n" in v or "\r" in v:
             raise self.fail(key, "expected one line of text (got a line break)")
+        bad = control_character(v)
+        if bad is not None:
+            raise self.fail(key, f"a control character ({bad}) in the text: not allowed")
         return v
 
     def number(self, v: Any, key: str, lo: float | None = None, hi: float | None = None):
@@ -171,14 +178,17 @@ class _Read:
         probe = text.strip()[:40]
         if not probe:
             return None
-        for i in range(self.cursor, len(self.rows)):
-            if probe in self.rows[i]:
-                self.cursor = i
-                return i + 1
-        for i, row in enumerate(self.rows):
-            if probe in row:
-                return i + 1
-        return None
+        if self.starts is None:
+            self.starts = [0]
+            for row in self.rows:
+                self.starts.append(self.starts[-1] + len(row) + 1)
+            self.joined = "\n".join(self.rows)
+        at = self.joined.find(probe, self.starts[self.cursor])
+        if at >= 0:
+            self.cursor = bisect.bisect_right(self.starts, at) - 1
+            return self.cursor + 1
+        at = self.joined.find(probe)
+        return None if at < 0 else bisect.bisect_right(self.starts, at)
 
 
 def _typename(v: Any) -> str:
@@ -235,6 +245,18 @@ def _figures(r: _Read, v: Any, key: str, scope: str) -> list[Line]:
     return out
 
 
+def _count_lines(data: dict) -> int:
+    """Lines and figures of a student file, as written (whatever their types)."""
+    def size(v) -> int:
+        return len(v) if isinstance(v, list | dict) else 0
+
+    tables = [data.get("general")]
+    if isinstance(data.get("positions"), list):
+        tables += data["positions"]
+    return sum(size(t.get("lines")) + size(t.get("figures")) for t in tables
+               if isinstance(t, dict))
+
+
 def load_student(path: str | Path) -> StudentWork:
     """Read and validate a student file (``docs/check-format.md``).
 
@@ -245,14 +267,9 @@ def load_student(path: str | Path) -> StudentWork:
     """
     path = Path(path)
     source = str(path)
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise StudentFileError(f"{source}: file not found") from None
-    except IsADirectoryError:
-        raise StudentFileError(f"{source}: is a folder (expected a student file)") from None
-    except OSError as exc:
-        raise StudentFileError(f"{source}: cannot read ({exc.strerror})") from None
+    from ..files import read_input
+
+    raw = read_input(path, error=StudentFileError)  # a regular file, bounded in size
     # a BOM, CRLF line ends; cp1251 and other non-UTF-8 text: "save the file as UTF-8"
     return loads_student(decode_text(raw, source, StudentFileError), path)
 
@@ -266,9 +283,14 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
     except (tomllib.TOMLDecodeError, ValueError) as exc:
         msg = " ".join(str(exc).split())
         raise StudentFileError(f"{source}: not valid TOML ({msg})") from None
+    except RecursionError:
+        raise StudentFileError(f"{source}: not valid TOML (nested too deeply)") from None
     r = _Read(source, text)
     r.keys(data, "", {"work", "general", "arms", "tolerances", "positions"},
            {"work", "positions"})
+    total = _count_lines(data)  # before any line is read: the work stays linear
+    if total > MAX_LINES:
+        raise r.fail("positions", f"{total} lines: at most {MAX_LINES} are checked")
     work = r.table(data["work"], "work")
     r.keys(work, "work", {"variant", "student", "group", "title", "source", "lang",
                           "neighbours"}, {"variant"})

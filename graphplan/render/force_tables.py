@@ -221,9 +221,9 @@ class PositionForces:
 def _precision(analysis: Analysis, precision: float | None) -> float:
     if precision is None:
         precision = float(analysis.mech.settings.get("drawing", {}).get("reading_mm", 0.5))
-    if not (math.isfinite(precision) and precision > 0):
-        raise ValueError(f"the drafting precision must be finite and > 0 mm (got {precision!r})")
-    return float(precision)
+    if not (math.isfinite(precision) and precision >= 0):
+        raise ValueError(f"the drafting precision must be finite and >= 0 mm (got {precision!r})")
+    return float(precision)  # 0: exact readings (the drafted plans are the exact ones)
 
 
 def _load_rows(loads: Loads, full: Loads, k: int) -> tuple[LoadRow, ...]:
@@ -275,7 +275,8 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
         kv = s2.lever_kv(kin, k)
         lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal)
         ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
-        cond = force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
+        cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
+                if prec > 0 else None)  # exact readings: no reading error to bound
         out.append(PositionForces(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
