@@ -75,9 +75,12 @@ def _room_for_dT(wd, M) -> float:
     """What :data:`SPANS_HEIGHT` leaves to ΔT after the drawn Mс (with Mд) and Aс, Aд."""
     yM, yMd = np.concatenate((wd.yM_mm, M / wd.KM)), wd.M_d / wd.KM
     m_mm = max(float(yM.max()), yMd, 0.0) - min(float(yM.min()), 0.0)
-    a_mm = (max(float((wd.A_d / wd.KA).max()), 0.0)
-            - min(float((wd.A_c / wd.KA).min()), float(wd.yA_mm.min()), 0.0))
+    every = np.concatenate((wd.A_c / wd.KA, wd.A_d / wd.KA, wd.yA_mm, [-wd.yA_mm[-1], 0.0]))
+    a_mm = float(every.max() - every.min())
     return max(SPANS_HEIGHT - m_mm - a_mm, 100.0)
+
+
+PSI_MAX_DEG = 70.0  #: the upper tangent's angle ψmax at most this
 
 
 def energy_mass_scales(dT_span: float, I_span: float, omega: float, delta: float,
@@ -85,18 +88,53 @@ def energy_mass_scales(dT_span: float, I_span: float, omega: float, delta: float
                        ) -> tuple[float, float]:
     """Scales ``(KT, KJ)`` of ΔT(φ) and of the energy–mass diagram (J/mm, kg·m²/mm).
 
-    KT draws the span of ΔT at most ``height_mm`` tall. The tangents stand at
-    ``tg ψ = KJ·ω²·(1 ± δ)/(2·KT)``, so KJ is the finest round scale that makes
-    ``ψmin ≥ PSI_MIN_DEG`` (ψ of tens of degrees: the tangents and their points of
-    contact can be drawn and read), made coarser only if JII would be wider than
-    ``width_mm``. The diagram is then tall and narrow when JII varies little against
-    ΔT (a press: JII·ω²/2 is a few % of ΔT), which is the honest picture of it.
+    KT draws ``dT_span`` (ΔT's span with the tangents' intercepts k, l on the ΔT axis)
+    at most ``height_mm`` tall. The tangents stand at ``tg ψ = KJ·ω²·(1 ± δ)/(2·KT)``,
+    so KJ is the finest round scale that makes ``ψmin ≥ PSI_MIN_DEG`` (ψ of tens of
+    degrees: the tangents and their points of contact can be drawn and read), made
+    coarser only if JII would be wider than ``width_mm``; and where that makes ψmax
+    steeper than :data:`PSI_MAX_DEG` (JII's energy comparable with ΔT: an engine, a
+    compressor), KT is made coarser instead. The diagram is tall and narrow when JII
+    varies little against ΔT (a press: JII·ω²/2 is a few % of ΔT), which is the honest
+    picture of it.
     """
     KT = round_scale(dT_span / height_mm)
     KJ = round_scale(2.0 * KT * math.tan(math.radians(PSI_MIN_DEG)) / (omega**2 * (1 - delta)))
     if I_span > 0 and I_span / KJ > width_mm:
         KJ = round_scale(I_span / width_mm)
+        steepest = KJ * omega**2 * (1 + delta) / (2.0 * KT)
+        if steepest > math.tan(math.radians(PSI_MAX_DEG)):
+            KT = round_scale(KJ * omega**2 * (1 + delta)
+                             / (2.0 * math.tan(math.radians(PSI_MAX_DEG - 5.0))))
     return KT, KJ
+
+
+def _sheet3_scales(m, intervals: int, size: dict) -> tuple[dict, float, float]:
+    """The height of Mс(φ) and Aс(φ) (``size``), KT and KJ that fill sheet 3's column of
+    diagrams best: the drawn Mс, Aс and ΔT together as near :data:`SPANS_HEIGHT` as the
+    round scales allow (KM, H and KT are rounded, so a taller Mс and Aс may leave ΔT and
+    the energy–mass diagram more or less), ΔT at least 200 mm tall."""
+    best = None
+    for h in range(int(size["height_mm"]), int(size["height_mm"]) + 61, 10):
+        trial = {**size, "height_mm": float(h)}
+        wd = work_diagrams(m, intervals, **trial)
+        extent = _extent_with_intercepts(wd.dT, m.inertia.I_var, m.omega1, m.delta)
+        room = _room_for_dT(wd, m.moment.M)
+        KT, KJ = energy_mass_scales(extent, float(np.ptp(np.append(m.inertia.I_var, 0.0))),
+                                    m.omega1, m.delta, height_mm=room)
+        drawn = SPANS_HEIGHT - room + extent / KT
+        if best is None or (extent / KT >= 200.0 and drawn > best[0] + 1.0):
+            best = (drawn, trial, KT, KJ)
+    return best[1], best[2], best[3]
+
+
+def _extent_with_intercepts(dT, I_var, omega: float, delta: float) -> float:
+    """The drawn extent of ΔT with the lower tangent's intercept l below it, J: the
+    tangent ΔT = b + k·JII (k = ω²(1 − δ)/2) through the curve's lowest reach cuts the ΔT
+    axis at ``b = min(ΔT − k·JII)`` (≤ min ΔT since JII ≥ 0); k = ω²(1 + δ)/2 at the top
+    cuts it at or under max ΔT."""
+    b_min = float(np.min(dT - 0.5 * omega**2 * (1 - delta) * I_var))
+    return float(np.max(dT)) - min(float(np.min(dT)), b_min)
 
 
 def diagram_size(page: Page) -> dict[str, float]:
@@ -242,10 +280,7 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
     b_ratio = float(opts.get("b_ratio", 0.2))
     h_ratio = float(opts.get("h_ratio", 0.1))
     density = float(opts.get("density", STEEL))
-    wd = work_diagrams(m, intervals, **size)
-    KT, KJ = energy_mass_scales(float(np.ptp(wd.dT)),
-                                float(np.ptp(np.append(m.inertia.I_var, 0.0))),
-                                m.omega1, m.delta, height_mm=_room_for_dT(wd, m.moment.M))
+    size, KT, KJ = _sheet3_scales(m, intervals, size)
     fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
                   density=density, I_rotor=I_rotor, KI=KJ, KT=KT, **size)
     u = choice.u if (shaft == "motor" and choice is not None) else 1.0

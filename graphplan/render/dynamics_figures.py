@@ -191,8 +191,8 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     # --- Aс(φ) by chords, Aд(φ)
     yAc, yAd = wd.A_c / KA, wd.A_d / KA
     yA_end = -float(wd.yA_mm[-1])
-    hi = max(float(yAd.max()), yA_end, 0.0)
-    lo = min(float(yAc.min()), float(wd.yA_mm.min()), 0.0)
+    every = np.concatenate((yAc, yAd, wd.yA_mm, [yA_end, 0.0]))
+    hi, lo = float(every.max()), float(every.min())
     y0 = y_bottom + STRIP + hi
     _axes(b, x0, y0, x0 - 3.0, x_end + 10.0, y0 - lo + 3.0, y0 - hi - 8.0,
           f"Aс, Aд, {w['J']}")
@@ -217,8 +217,8 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     # --- ΔT(φ) at KT, the ordinates of the positions drawn
     yT = wd.dT / KT
     yTg = wd.dT_graph / KT
-    hi = max(float(yT.max()), float(yTg.max()), 0.0)
-    lo = min(float(yT.min()), float(yTg.min()), 0.0)
+    hi = max(float(yT.max()), float(yTg.max()), fw.k_mm, 0.0)  # k and l of the energy–
+    lo = min(float(yT.min()), float(yTg.min()), fw.l_mm, 0.0)  # mass diagram level with it
     T_top = y_bottom + 4.0
     y0 = T_top + STRIP + hi
     _axes(b, x0, y0, x0 - 3.0, x_end + 10.0, y0 - lo + 3.0, y0 - hi - 8.0,
@@ -291,7 +291,8 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> l
         length = x_far - xJ0
         b.line(((xJ0, yk), (x_far, yk - tan * length)))
         b.dot((xJ0, yk), 0.6)
-        b.text((xJ0 - 2.0, yk - 1.3 if name == "k" else yk + 4.8), name, TEXT_H, "end")
+        b.labels.insert(0, LabelRequest((xJ0, yk), name, TEXT_H, "kl",
+                                        150.0 if name == "k" else -150.0))
         r = min(12.0, max(length - 2.0, 6.0))
         b.line(((xJ0, yk), (xJ0 + r + 2.0, yk)))
         b.items.append(Arc((xJ0, yk), r, 0.0, psi, THIN, layer=LAYER))
