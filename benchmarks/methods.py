@@ -5,9 +5,9 @@ accelerations ((N, 2), SI), and where the method does forces the reactions (by
 graphplan's names, (N, 2)) and the balancing moment Mур (N,). Positions the method does
 not compute are absent.
 
-* ``graphplan analytic`` — the vectorised solver: :func:`graphplan.kinematics.solve`,
-  :func:`graphplan.applied_loads.compute_loads` (nothing neglected), and
-  :func:`graphplan.kinetostatics.solve_forces`;
+* ``graphplan analytic`` — the vectorised solver: :func:`graphplan.kinematics.exact.solve`,
+  :func:`graphplan.forces.loads.compute_loads` (nothing neglected), and
+  :func:`graphplan.forces.kinetostatics.solve_forces`;
 * ``graphplan constructions`` — the plans built as constructions and read back
   (velocity and acceleration plans, force plans of the groups and the crank, Zhukovsky's
   lever), read exactly or rounded to a drafting precision, at the sheet's scales or
@@ -38,9 +38,8 @@ class Result:
 
 def analytic(mech, cycle, phi) -> Result:
     """graphplan's vectorised solver, kinematics and kinetostatics (nothing neglected)."""
-    from graphplan.applied_loads import compute_loads
+    from graphplan.forces import compute_loads, solve_forces
     from graphplan.kinematics import solve
-    from graphplan.kinetostatics import solve_forces
 
     kin = solve(mech, phi)
     forces = solve_forces(mech, kin, compute_loads(mech, kin, cycle, neglect_below=0.0))
@@ -53,9 +52,8 @@ def analytic(mech, cycle, phi) -> Result:
 
 def full_cycle(mech, cycle, phi):
     """The timed unit of the target: kinematics + kinetostatics with the variant's settings."""
-    from graphplan.applied_loads import compute_loads
+    from graphplan.forces import compute_loads, solve_forces
     from graphplan.kinematics import solve
-    from graphplan.kinetostatics import solve_forces
 
     kin = solve(mech, phi)
     return solve_forces(mech, kin, compute_loads(mech, kin, cycle))
@@ -89,11 +87,9 @@ class Constructions:
     """
 
     def __init__(self, mech, cycle, phi):
-        from graphplan.applied_loads import compute_loads
-        from graphplan.cycle import sweep
-        from graphplan.kinematics import solve
-        from graphplan.kinetostatics import solve_forces
-        from graphplan.scales import sheet_scales
+        from graphplan.forces import compute_loads, solve_forces
+        from graphplan.kinematics import solve, sweep
+        from graphplan.project import sheet_scales
 
         self.mech = mech
         self.phi = np.asarray(phi)
@@ -114,9 +110,13 @@ class Constructions:
 
     def position(self, k: int, setting: Drafting, forces: bool = True):
         """Velocities, accelerations (by point), reactions and Mур (plans, lever) at k."""
-        from graphplan.constructions import Reader, acceleration_plan, velocity_plan
-        from graphplan.force_plans import force_plans
-        from graphplan.zhukovsky import zhukovsky_lever
+        from graphplan.plans import (
+            Reader,
+            acceleration_plan,
+            force_plans,
+            velocity_plan,
+            zhukovsky_lever,
+        )
 
         reader = Reader(setting.precision)
         kl, kv, ka = self.scales_for(setting.magnify)

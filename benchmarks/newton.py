@@ -272,7 +272,7 @@ def forces(model: LoopModel, kin: dict, cycle, phis):
 def _resistance(m, kin, cycle, k, phi, pts, guides, F, C):
     if not m.resistances:
         return
-    from graphplan.applied_loads import diagram_value
+    from graphplan.forces import diagram_value
 
     kind, what, key = ref._output(m)
     if kind == "slider":

@@ -284,9 +284,8 @@ def measure(name: str, n: int, reps: int, drafting: bool = True, timed: dict | N
 def profile_press(reps: int) -> dict:
     """What the press's full cycle is made of (medians, s): where the millisecond goes."""
     import graphplan as g
-    from graphplan.applied_loads import compute_loads
+    from graphplan.forces import compute_loads, solve_forces
     from graphplan.kinematics import solve
-    from graphplan.kinetostatics import solve_forces
 
     mech = g.load(ROOT / "examples" / "press.toml")
     cycle = g.analyse_cycle(mech)
@@ -415,7 +414,7 @@ def main(argv=None) -> int:
     reps = args.reps or (3 if args.quick else 31)
     t_start = time.perf_counter()
     import graphplan as g
-    from graphplan.analysis import analyze
+    from graphplan.project import analyze
 
     results: dict = {"environment": environment(reps), "reference": {
         "digits": R.DIGITS, "working_digits": R.WORK_DIGITS,

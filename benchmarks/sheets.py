@@ -14,9 +14,9 @@ from time import perf_counter
 from .timing import median
 
 SHEETS: tuple[tuple[str, str, str], ...] = (
-    ("sheet1", "graphplan.kinematics_sheet", "kinematics_sheet"),
-    ("sheet2", "graphplan.kinetostatics_sheet", "kinetostatics_sheet"),
-    ("sheet3", "graphplan.dynamics_sheet", "dynamics_sheet"),
+    ("sheet1", "graphplan.drawing.sheet1", "kinematics_sheet"),
+    ("sheet2", "graphplan.drawing.sheet2", "kinetostatics_sheet"),
+    ("sheet3", "graphplan.drawing.sheet3", "dynamics_sheet"),
 )
 """The sheets of a project: name, module, and the function ``f(analysis, lang=…) -> Sheet``."""
 

@@ -32,9 +32,8 @@ GRIDS = (72, 36, 24, 12)
 
 
 def _mbal(mech, cycle, phi, **kw):
-    from graphplan.applied_loads import compute_loads
+    from graphplan.forces import compute_loads, solve_forces
     from graphplan.kinematics import solve
-    from graphplan.kinetostatics import solve_forces
 
     kin = solve(mech, phi)
     return solve_forces(mech, kin, compute_loads(mech, kin, cycle, **kw)).M_bal
@@ -50,7 +49,7 @@ def _flywheel(analysis, grid=None, neglect_below=0.0):
 def measure(name: str) -> dict:
     """The changes of every simplification on one example (fractions, not %)."""
     import graphplan as g
-    from graphplan.analysis import analyze
+    from graphplan.project import analyze
 
     mech = g.load(ROOT / "examples" / f"{name}.toml")
     an = analyze(mech)

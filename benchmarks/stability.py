@@ -6,7 +6,7 @@ once a turn the coupler and the rocker are nearly collinear, the two lines of th
 velocity plan (⟂ AB, ⟂ CB) and the closing lines of the force plan (∥ AB, ∥ CB) meet at
 about 2°. Every method is run over the turn and its error is measured against the
 50-digit reference at every crank angle; the drafting emulation also gets the bound
-:mod:`graphplan.conditioning` states, and the positions where it marks its plans.
+:mod:`graphplan.plans.conditioning` states, and the positions where it marks its plans.
 """
 
 from __future__ import annotations
@@ -43,7 +43,7 @@ def sweep(mech, phi, precision: float = 0.5, bound_every: int = 3, pylinkage=Non
     ``marked`` (where its plans are marked), and the smallest intersection angle.
     """
     import graphplan as g
-    from graphplan.conditioning import force_conditioning, kinematic_conditioning
+    from graphplan.plans import force_conditioning, kinematic_conditioning
 
     cycle = g.analyse_cycle(mech)
     ref = M.reference_arrays(R.reference(mech, phi, cycle.dead_centres))

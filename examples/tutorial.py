@@ -17,12 +17,11 @@
 import sys
 from pathlib import Path
 
-from graphplan.analysis import analyze
-from graphplan.constructions import acceleration_plan, velocity_plan
 from graphplan.dynamics import dynamic_model, flywheel, simulate
 from graphplan.files import bundled_example
-from graphplan.loader import load
-from graphplan.scales import sheet_scales
+from graphplan.model import load
+from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.project import analyze, sheet_scales
 from graphplan.teaching import lesson, write_lesson
 from graphplan.teaching.context import context
 
@@ -144,7 +143,7 @@ print("teaching page:", write_lesson(lesson(a, "flywheel"), OUT, lang="en")[0])
 # Sheet 1 (kinematic analysis) shows itself in a notebook; in a script it is written.
 
 # %%
-from graphplan.kinematics_sheet import kinematics_sheet  # noqa: E402
+from graphplan.drawing import kinematics_sheet  # noqa: E402
 from graphplan.render.svg import write_svg  # noqa: E402
 
 sheet = kinematics_sheet(a, lang="en", diagrams=False)

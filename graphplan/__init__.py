@@ -5,7 +5,6 @@ Pipeline: :func:`load` a variant file → :func:`analyse_structure` →
 kinematics of the positions (vectorised over crank angles).
 """
 
-from .cycle import Cycle, analyse_cycle, sweep
 from .errors import (
     AssemblyError,
     GraphplanError,
@@ -14,11 +13,9 @@ from .errors import (
     SingularPoseError,
     StructureError,
 )
-from .kinematics import Kinematics, solve
-from .loader import load, loads
-from .model import Mechanism
-from .structure import Structure
-from .structure import analyse as analyse_structure
+from .kinematics import Cycle, Kinematics, analyse_cycle, solve, sweep
+from .model import Mechanism, Structure, load, loads
+from .model import analyse as analyse_structure
 
 __version__ = "0.1.0"
 

@@ -3,7 +3,7 @@
 ``graphplan analyze [VARIANT.toml] [--json] [--lang ru|en] [-o FILE]`` — structure and
 exact kinematics; ``graphplan sheets [VARIANT.toml ...] -o DIR [--format svg,dxf,pdf,png]``
 — the sheets, the tables and the JSON report of each variant (see
-:mod:`graphplan.project`, :mod:`graphplan.exports`); ``graphplan check STUDENT.toml`` —
+:mod:`graphplan.outputs`, :mod:`graphplan.render.formats`); ``graphplan check STUDENT.toml`` —
 a student's calculation checked figure by figure (:mod:`graphplan.checking`);
 ``graphplan teach VARIANT.toml --position N --plan PLAN -o DIR`` — step-by-step teaching
 pages (:mod:`graphplan.teaching`).
@@ -75,9 +75,9 @@ def _variant_path(arg: str | None) -> Path:
 
 
 def _analyze(args) -> int:
-    from .analysis import analyze
-    from .loader import load
-    from .render.tables import analysis_text
+    from .model import load
+    from .project import analyze
+    from .reports import analysis_text
 
     path = _variant_path(args.variant)
     result = analyze(load(path))
@@ -101,7 +101,7 @@ def _analyze(args) -> int:
 
 def _sheets(args) -> int:
     from .errors import InputError
-    from .project import write_project
+    from .outputs import write_project
 
     if args.precision is not None and not (0 <= args.precision <= 5):
         raise InputError(f"--precision: expected a reading precision of 0 … 5 mm "

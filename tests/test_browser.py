@@ -10,10 +10,7 @@ import os
 import pytest
 from matplotlib import image
 
-from graphplan.errors import GraphplanError
-from graphplan.render.browser import ENV_VAR, find_chromium, render_svg_png, svg_size_mm
-from graphplan.render.svg import write_svg
-from graphplan.sheet import (
+from graphplan.drawing import (
     DASHDOT,
     MAIN,
     MEDIUM,
@@ -26,6 +23,9 @@ from graphplan.sheet import (
     TitleBlock,
     signatures,
 )
+from graphplan.errors import GraphplanError
+from graphplan.render.browser import ENV_VAR, find_chromium, render_svg_png, svg_size_mm
+from graphplan.render.svg import write_svg
 
 PX_PER_MM = 2  # 1682 px across 841 mm
 
@@ -221,11 +221,10 @@ def test_sheet1_of_the_press_renders_in_the_browser(tmp_path):
     plans' grid has ink in every cell's middle band: nothing is lost in the browser.
     """
     require_chromium()
-    from graphplan.analysis import analyze
+    from graphplan.drawing import kinematics_sheet
     from graphplan.files import bundled_example
-    from graphplan.kinematics_sheet import kinematics_sheet
-    from graphplan.loader import load
-    from graphplan.scales import sheet_scales
+    from graphplan.model import load
+    from graphplan.project import analyze, sheet_scales
 
     a = analyze(load(bundled_example("press")))
     svg = write_svg(kinematics_sheet(a), tmp_path / "sheet1.svg")

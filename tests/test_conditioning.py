@@ -21,24 +21,25 @@ import numpy as np
 import pytest
 
 import graphplan as g
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads
-from graphplan.conditioning import (
+from graphplan.files import bundled_example
+from graphplan.forces import compute_loads, solve_forces
+from graphplan.plans import (
+    EXACT,
     ILL_ANGLE_DEG,
     SAFETY,
     Intersection,
+    Reader,
+    acceleration_plan,
     force_conditioning,
+    force_plans,
     ill_conditioned,
     intersections,
     kinematic_conditioning,
     note,
+    velocity_plan,
+    zhukovsky_lever,
 )
-from graphplan.constructions import EXACT, Reader, acceleration_plan, velocity_plan
-from graphplan.files import bundled_example
-from graphplan.force_plans import force_plans
-from graphplan.kinetostatics import solve_forces
-from graphplan.scales import sheet_scales
-from graphplan.zhukovsky import zhukovsky_lever
+from graphplan.project import analyze, sheet_scales
 
 EXAMPLES = ("press", "fourbar", "shaper", "offset_slider", "scotch_yoke", "shaper_prp",
             "sixbar_press")

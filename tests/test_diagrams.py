@@ -5,20 +5,21 @@ import math
 import numpy as np
 import pytest
 
-from graphplan import fonts
-from graphplan.cycle import analyse_cycle
-from graphplan.diagrams import KinematicDiagrams, kinematic_diagrams, output_motion
-from graphplan.errors import InputError, LayoutError
-from graphplan.files import bundled_example
-from graphplan.loader import load
-from graphplan.render.figures import (
+from graphplan.drawing import (
     TEXT,
+    Polyline,
+    Text,
     diagrams_figure,
     diagrams_items,
     diagrams_size,
     fit_diagrams,
+    fonts,
 )
-from graphplan.sheet import Polyline, Text
+from graphplan.errors import InputError, LayoutError
+from graphplan.files import bundled_example
+from graphplan.kinematics import analyse_cycle
+from graphplan.model import load
+from graphplan.plans import KinematicDiagrams, kinematic_diagrams, output_motion
 from graphplan.units import SERIES
 
 NAMES = ("press", "fourbar", "shaper", "scotch_yoke", "offset_slider", "shaper_prp",
@@ -247,7 +248,7 @@ def test_labels_avoid_blank_osifont_letters():
 
 def test_fit_to_a_box_of_the_sheet(variants):
     mech, cycle = variants["press"]
-    # the smallest diagram box of sheet 1 (graphplan.layout.DIAGRAM_MIN) is 200×130 mm
+    # the smallest diagram box of sheet 1 (graphplan.project.layout.DIAGRAM_MIN) is 200×130 mm
     d = fit_diagrams(mech, cycle, 200, 130)
     w, h = diagrams_size(d)
     assert w <= 200 and h <= 130
@@ -262,7 +263,7 @@ def test_fit_to_a_box_of_the_sheet(variants):
 
 
 def test_diagrams_module_needs_numpy_only():
-    import graphplan.diagrams as mod
+    import graphplan.plans.diagrams as mod
 
     with open(mod.__file__, encoding="utf-8") as fh:
         assert "matplotlib" not in fh.read()

@@ -100,7 +100,7 @@ def _plants(variant, labels):
 
     from graphplan.checking.checks import reference_for
     from graphplan.checking.drawing.measure import construction
-    from graphplan.constructions import plan_scales
+    from graphplan.plans import plan_scales
 
     ref = reference_for(variant)
     kl, kv, ka = plan_scales(ref.mech, ref.kin)

@@ -16,9 +16,9 @@ from pathlib import Path
 
 import pytest
 
-from graphplan.analysis import analyze
-from graphplan.loader import load
-from graphplan.project import project_files
+from graphplan.model import load
+from graphplan.outputs import project_files
+from graphplan.project import analyze
 
 ROOT = Path(__file__).resolve().parent.parent
 VARIANTS = sorted((ROOT / "examples").glob("*.toml"))

@@ -6,14 +6,13 @@ import math
 import numpy as np
 import pytest
 
-from graphplan import dynamics as dyn
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads, load_power
+from graphplan.dynamics import reduction as dyn
 from graphplan.errors import GraphplanError, InputError
 from graphplan.files import bundled_example
-from graphplan.kinematics import solve
-from graphplan.loader import load
-from graphplan.positions import solve_positions
+from graphplan.forces import compute_loads, load_power
+from graphplan.kinematics import solve, solve_positions
+from graphplan.model import load
+from graphplan.project import analyze
 
 NAMES = ("press", "shaper", "offset_slider", "fourbar")
 

@@ -19,9 +19,9 @@ import math
 import numpy as np
 import pytest
 
-from graphplan import dynamics as dyn
-from graphplan.analysis import analyze
-from graphplan.loader import loads
+from graphplan.dynamics import reduction as dyn
+from graphplan.model import loads
+from graphplan.project import analyze
 
 PRESS = """
 [frame]
@@ -93,7 +93,7 @@ def test_work_inside_the_cycle_is_exact_too():
     assert m.tau[k] == pytest.approx(math.pi, abs=1e-12)
     assert m.moment.A[k] == pytest.approx(-1400.0, rel=1e-9)
     # and half-way through the load (s = 0.65 of the stroke), −10 000·0.2·0.35 = −700 J
-    from graphplan.cycle import stroke_angle
+    from graphplan.kinematics import stroke_angle
 
     phi = stroke_angle(a.mech, a.cycle, 0.65)
     tau = (phi - a.cycle.dead_centres[0]) % (2 * math.pi)

@@ -25,20 +25,7 @@ pytest.importorskip("typst")
 pytest.importorskip("resvg_py")
 pypdf = pytest.importorskip("pypdf")
 
-from graphplan import exports  # noqa: E402
-from graphplan.errors import GraphplanError, InputError, LayoutError  # noqa: E402
-from graphplan.exports import dxf as dxf_mod  # noqa: E402
-from graphplan.exports import extra  # noqa: E402
-from graphplan.exports.pdf import pdf_bytes  # noqa: E402
-from graphplan.exports.png import png_bytes, png_size, svg_to_png_bytes  # noqa: E402
-from graphplan.exports.svg_paths import (  # noqa: E402
-    TOLERANCE,
-    figure_paths,
-    parse_transform,
-    path_subpaths,
-)
-from graphplan.render.svg import render_svg  # noqa: E402
-from graphplan.sheet import (  # noqa: E402
+from graphplan.drawing.sheet import (  # noqa: E402
     DASHDOT,
     DASHDOTDOT,
     DASHED,
@@ -60,6 +47,19 @@ from graphplan.sheet import (  # noqa: E402
     Text,
     TitleBlock,
 )
+from graphplan.errors import GraphplanError, InputError, LayoutError  # noqa: E402
+from graphplan.render import (  # noqa: E402
+    TOLERANCE,
+    extra,  # noqa: E402
+    figure_paths,
+    parse_transform,
+    path_subpaths,
+    pdf_bytes,  # noqa: E402
+)
+from graphplan.render import dxf as dxf_mod  # noqa: E402
+from graphplan.render import formats as exports  # noqa: E402
+from graphplan.render.png import png_bytes, png_size, svg_to_png_bytes  # noqa: E402
+from graphplan.render.svg import render_svg  # noqa: E402
 
 SVG = "{http://www.w3.org/2000/svg}"
 A1 = (841.0, 594.0)
@@ -100,8 +100,7 @@ def sheet(name: str) -> Sheet:
     """"press-1", "press-2", "shaper-1", "shaper-2" or "synthetic"."""
     if name == "synthetic":
         return synthetic_sheet()
-    from graphplan.kinematics_sheet import kinematics_sheet
-    from graphplan.kinetostatics_sheet import kinetostatics_sheet
+    from graphplan.drawing import kinematics_sheet, kinetostatics_sheet
 
     example, number = name.split("-")
     return (kinematics_sheet if number == "1" else kinetostatics_sheet)(_analysis(example))
@@ -109,9 +108,9 @@ def sheet(name: str) -> Sheet:
 
 @cache
 def _analysis(example: str):
-    from graphplan.analysis import analyze
     from graphplan.files import bundled_example
-    from graphplan.loader import load
+    from graphplan.model import load
+    from graphplan.project import analyze
 
     return analyze(load(bundled_example(example)))
 
@@ -693,7 +692,7 @@ def test_engines_are_chosen_by_name_or_environment(monkeypatch):
 
 def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(monkeypatch, tmp_path):
     # the same bytes whatever the machine has: typst is given the bundled fonts only
-    from graphplan import fonts as fonts_mod
+    from graphplan.drawing import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     s, text = sheet("press-1"), svg_text("press-1")
@@ -705,7 +704,7 @@ def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(monkeypatch, 
 
 
 def test_the_png_is_the_same_pixels_without_system_fonts(monkeypatch, tmp_path):
-    from graphplan import fonts as fonts_mod
+    from graphplan.drawing import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     text = svg_text("press-2")
@@ -738,7 +737,7 @@ def test_a_character_no_bundled_font_draws_comes_from_a_system_font(monkeypatch,
 
     import matplotlib
 
-    from graphplan import fonts as fonts_mod
+    from graphplan.drawing import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     folder = tmp_path / "fonts"

@@ -1,5 +1,5 @@
-"""Force plans (graphplan.force_plans) built as constructions, checked against the exact
-kinetostatics (graphplan.kinetostatics.solve_forces) and the seed's press.
+"""Force plans (graphplan.plans.forces) built as constructions, checked against the exact
+kinetostatics (graphplan.forces.kinetostatics.solve_forces) and the seed's press.
 
 * Exact reader: every reaction read off a polygon (vector, and the couple and offset of a
   prismatic pair), h21 and Mур equal solve_forces to 1e-9 relative, at every position of
@@ -20,13 +20,10 @@ import numpy as np
 import pytest
 
 import graphplan as g
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads
-from graphplan.constructions import EXACT, Reader
 from graphplan.files import bundled_example
-from graphplan.force_plans import ROOM_MM, crank_plan, force_plan, force_plans
-from graphplan.kinetostatics import solve_forces
-from graphplan.scales import sheet_scales
+from graphplan.forces import compute_loads, solve_forces
+from graphplan.plans import EXACT, ROOM_MM, Reader, crank_plan, force_plan, force_plans
+from graphplan.project import analyze, sheet_scales
 from graphplan.units import Scale
 
 EXAMPLES = ("press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
@@ -260,8 +257,8 @@ def test_random_mechanisms_force_plans_agree_with_the_power_balance():
     used), every group's polygon closes, every reaction equals the kinetostatics."""
     from hypothesis import HealthCheck, assume, given, settings
 
-    from graphplan.applied_loads import ForceLoad, MomentLoad, power_balance_moment
     from graphplan.errors import SingularPoseError
+    from graphplan.forces import ForceLoad, MomentLoad, power_balance_moment
 
     checked: list[str] = []
 

@@ -1,4 +1,4 @@
-"""Tables of the force analysis (graphplan.render.force_tables) on the seed's press.
+"""Tables of the force analysis (graphplan.reports.force_tables) on the seed's press.
 
 * Every number of the CSV is a force plan's reading (or arm, or Mур), and in exact mode
   equals the exact kinetostatics (solve_forces) to 1e-9; ``mm·scale = value``.
@@ -20,11 +20,10 @@ import numpy as np
 import pytest
 
 import graphplan as g
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads
 from graphplan.files import bundled_example
-from graphplan.kinetostatics import solve_forces
-from graphplan.render.force_tables import (
+from graphplan.forces import compute_loads, solve_forces
+from graphplan.project import analyze
+from graphplan.reports.force_tables import (
     CSV_COLUMNS,
     force_readings,
     forces_csv,

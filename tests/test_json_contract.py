@@ -21,7 +21,7 @@ import pytest
 
 jsonschema = pytest.importorskip("jsonschema")
 
-from graphplan import loader  # noqa: E402
+from graphplan.model import loader  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))

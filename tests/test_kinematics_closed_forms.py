@@ -5,7 +5,7 @@ variant (TOML text, inline), solved through the public API (``g.loads`` +
 ``g.solve`` / ``g.analyse_cycle``), and compared with formulas written out below
 (crank–slider, four-bar / Freudenstein, slotted link, Scotch yoke).
 
-Conventions used by the formulas (those of ``graphplan.model``): angles in rad,
+Conventions used by the formulas (those of ``graphplan.model.mechanism``): angles in rad,
 CCW positive from +x; φ is the absolute angle of O→A and dφ/dt = ω1 (constant,
 negative for a clockwise crank); a link's angle θ is the angle of its reference
 axis (rod: A→B; four-bar rocker: C→B; slotted link: the slot), ω = dθ/dt, ε = dω/dt.

@@ -1,4 +1,4 @@
-"""Kinetostatics (graphplan.applied_loads, graphplan.kinetostatics) checked by independent routes.
+"""Kinetostatics (graphplan.forces.loads, graphplan.forces.kinetostatics) checked by independent routes.
 
 * Virtual power (Zhukovsky): M_ур·ω1 + Σ F·v_point + Σ M·ω_link = 0 at every position,
   inertia included — it uses only the kinematics and the loads, never the reactions.
@@ -32,8 +32,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import graphplan as g
-from graphplan import kinetostatics as ks
-from graphplan.applied_loads import (
+from graphplan.files import bundled_example
+from graphplan.forces import (
     ForceLoad,
     MomentLoad,
     compute_loads,
@@ -41,8 +41,8 @@ from graphplan.applied_loads import (
     power_balance_moment,
     shift_inertia_force,
 )
-from graphplan.cycle import in_working_stroke
-from graphplan.files import bundled_example
+from graphplan.forces import kinetostatics as ks
+from graphplan.kinematics import in_working_stroke
 
 REL = 1e-9
 EXAMPLES = ("press", "offset_slider", "fourbar", "shaper", "shaper_prp", "scotch_yoke",
@@ -462,8 +462,8 @@ def test_loads_are_frozen(press):
 
 
 def test_package_loads_is_the_text_loader():
-    """The applied loads live in graphplan.applied_loads: graphplan.loads stays the loader."""
-    import graphplan.applied_loads  # noqa: F401
+    """The applied loads live in graphplan.forces.loads: graphplan.loads stays the loader."""
+    import graphplan.forces.loads  # noqa: F401
 
     m = g.loads(CF.slider_crank_toml(0.1, 0.4), source="x.toml")
     assert m.source == "x.toml" and m.dyads[0].kind == "RRP"

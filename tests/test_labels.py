@@ -2,8 +2,7 @@
 
 from shapely.geometry import LineString
 
-from graphplan.labels import LabelRequest, merge_coincident, place_labels
-from graphplan.sheet import text_box
+from graphplan.drawing import LabelRequest, merge_coincident, place_labels, text_box
 
 
 def test_coincident_points_are_written_together():

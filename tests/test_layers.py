@@ -13,7 +13,7 @@ from graphplan.files import bundled_example
 
 def test_import_loads_no_rendering_library():
     code = (
-        "import sys, graphplan, graphplan.analysis, graphplan.cli;"
+        "import sys, graphplan, graphplan.project.analysis, graphplan.cli;"
         "bad = [m for m in ('svgwrite', 'matplotlib', 'shapely') if m in sys.modules];"
         "print(','.join(bad))"
     )

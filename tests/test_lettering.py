@@ -8,16 +8,23 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from graphplan import fonts
-from graphplan.analysis import analyze
-from graphplan.dynamics_sheet import dynamics_sheet
+from graphplan.drawing import (
+    Figure,
+    Group,
+    Page,
+    Sheet,
+    Text,
+    decimal_comma,
+    dynamics_sheet,
+    fonts,
+    iter_leaves,
+    kinematics_sheet,
+    kinetostatics_sheet,
+)
 from graphplan.files import bundled_example
-from graphplan.kinematics_sheet import kinematics_sheet
-from graphplan.kinetostatics_sheet import kinetostatics_sheet
-from graphplan.loader import load
-from graphplan.render.mpl_items import decimal_comma
+from graphplan.model import load
+from graphplan.project import analyze
 from graphplan.render.svg import render_svg
-from graphplan.sheet import Figure, Group, Page, Sheet, Text, iter_leaves
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]
@@ -95,7 +102,7 @@ def test_russian_letters_osifont_cannot_draw_are_slanted_too():
 
 def test_diagram_text_is_text_in_the_dxf():
     ezdxf = pytest.importorskip("ezdxf")
-    from graphplan.exports.dxf import dxf_bytes
+    from graphplan.render import dxf_bytes
 
     sheet = sheets("press")["sheet2"]
     doc = ezdxf.read(__import__("io").StringIO(dxf_bytes(sheet).decode("utf-8")))

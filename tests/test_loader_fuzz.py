@@ -45,7 +45,7 @@ from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
 
 import graphplan as g
-from graphplan.loader import SECTIONS
+from graphplan.model import SECTIONS
 
 SRC = "fuzz/variant.toml"
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"

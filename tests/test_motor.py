@@ -6,8 +6,7 @@ import dataclasses
 
 import pytest
 
-from graphplan.errors import GraphplanError, InputError
-from graphplan.motor import (
+from graphplan.dynamics import (
     SYNC_SPEEDS,
     Motor,
     MotorSelectionError,
@@ -16,6 +15,7 @@ from graphplan.motor import (
     load_catalogue,
     required_power,
 )
+from graphplan.errors import GraphplanError, InputError
 
 SERIES = ("AIR", "4A")
 

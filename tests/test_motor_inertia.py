@@ -1,6 +1,6 @@
 """The Motive "Delphi" catalogue (graphplan/data/motors_delphi.csv): rotor inertia and the rest.
 
-The file is read through :func:`graphplan.motor.load_catalogue` with an explicit path, so these
+The file is read through :func:`graphplan.dynamics.motor.load_catalogue` with an explicit path, so these
 tests do not depend on the series being registered in ``motor._FILES``.
 """
 
@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from graphplan.motor import SYNC_SPEEDS, choose_motor, load_catalogue
+from graphplan.dynamics import SYNC_SPEEDS, choose_motor, load_catalogue
 
 PATH = Path(str(resources.files("graphplan") / "data" / "motors_delphi.csv"))
 

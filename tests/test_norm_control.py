@@ -2,7 +2,7 @@
 first, on every example in ``examples/`` (discovered: a new example is checked the day it is
 added) and on sheets 1, 2 and 3.
 
-Measured from the sheets themselves — the items of :class:`graphplan.sheet.Sheet` and the
+Measured from the sheets themselves — the items of :class:`graphplan.drawing.sheet.Sheet` and the
 SVG they render to — not from the shared ``sheet_metrics.py`` (which reads the committed
 files from outside and must agree):
 
@@ -29,12 +29,20 @@ import numpy as np
 import pytest
 import shapely
 
-from graphplan.analysis import analyze
-from graphplan.kinematics_sheet import kinematics_sheet
-from graphplan.kinetostatics_sheet import kinetostatics_sheet
-from graphplan.loader import load
+from graphplan.drawing import (
+    Arrow,
+    Figure,
+    Hatch,
+    Text,
+    item_geometry,
+    iter_leaves,
+    kinematics_sheet,
+    kinetostatics_sheet,
+    text_box,
+)
+from graphplan.model import load
+from graphplan.project import analyze
 from graphplan.render.svg import render_svg
-from graphplan.sheet import Arrow, Figure, Hatch, Text, item_geometry, iter_leaves, text_box
 
 EXAMPLES_DIR = Path(__file__).resolve().parent.parent / "examples"
 EXAMPLES = sorted(p.stem for p in EXAMPLES_DIR.glob("*.toml"))
@@ -74,7 +82,7 @@ def sheet(name: str, n: int):
         return kinematics_sheet(a)
     if n == 2:
         return kinetostatics_sheet(a)
-    from graphplan.dynamics_sheet import dynamics_sheet
+    from graphplan.drawing import dynamics_sheet
 
     if "delta" not in a.mech.settings.get("dynamics", {}):
         pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
@@ -113,7 +121,7 @@ def empty_share(sh) -> float:
     pytest.importorskip("resvg_py")  # the export extra's renderer: no cairo needed
     from PIL import Image
 
-    from graphplan.exports.png import svg_to_png_bytes
+    from graphplan.render.png import svg_to_png_bytes
 
     png = svg_to_png_bytes(render_svg(sh), 2 * 25.4, engine="resvg")
     im = np.asarray(Image.open(io.BytesIO(png)).convert("L"))
@@ -272,7 +280,7 @@ def _renamed(tmp_path, name: str, mapping: dict[str, str]) -> Path:
 def test_point_names_that_are_a_plans_letters_break_nothing(tmp_path, name, mapping):
     import json
 
-    from graphplan.project import project_files
+    from graphplan.outputs import project_files
 
     a = analyze(load(_renamed(tmp_path, name, mapping)))
     files = project_files(a, lang="ru")

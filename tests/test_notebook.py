@@ -7,14 +7,13 @@ import html
 import re
 from pathlib import Path
 
-from graphplan.analysis import analyze
 from graphplan.checking import check_file
-from graphplan.constructions import velocity_plan
+from graphplan.drawing import kinematics_sheet
+from graphplan.dynamics import machine_unit
 from graphplan.files import bundled_example
-from graphplan.kinematics_sheet import kinematics_sheet
-from graphplan.loader import load
-from graphplan.machine_unit import machine_unit
-from graphplan.scales import sheet_scales
+from graphplan.model import load
+from graphplan.plans import velocity_plan
+from graphplan.project import analyze, sheet_scales
 from graphplan.teaching import lesson
 
 ROOT = Path(__file__).resolve().parent.parent

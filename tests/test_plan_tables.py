@@ -9,12 +9,12 @@ import re
 import numpy as np
 import pytest
 
-from graphplan.analysis import analyze
-from graphplan.constructions import plan_scales
 from graphplan.files import bundled_example
 from graphplan.geometry import norm
-from graphplan.loader import load
-from graphplan.render.plan_tables import (
+from graphplan.model import load
+from graphplan.plans import plan_scales
+from graphplan.project import analyze
+from graphplan.reports.plan_tables import (
     CSV_COLUMNS,
     SUMMARY_CELL,
     plan_readings,

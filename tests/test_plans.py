@@ -6,8 +6,8 @@ import math
 import pytest
 
 import graphplan as g
-from graphplan.constructions import EXACT, Reader, acceleration_plan, velocity_plan
 from graphplan.geometry import norm
+from graphplan.plans import EXACT, Reader, acceleration_plan, velocity_plan
 from graphplan.units import fit_scale, nice_ceil
 
 EXAMPLES = sorted(glob.glob(str(__import__("pathlib").Path(__file__).parents[1] / "examples" / "*.toml")))

@@ -6,10 +6,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from graphplan import fonts
-from graphplan.errors import GraphplanError, LayoutError
-from graphplan.render.svg import num, render_svg, write_svg
-from graphplan.sheet import (
+from graphplan.drawing import (
     DASHDOT,
     DASHDOTDOT,
     FORM1_SEGMENTS,
@@ -30,9 +27,12 @@ from graphplan.sheet import (
     Text,
     TitleBlock,
     check_layout,
+    fonts,
     signatures,
     table_items,
 )
+from graphplan.errors import GraphplanError, LayoutError
+from graphplan.render.svg import num, render_svg, write_svg
 
 NS = {"svg": "http://www.w3.org/2000/svg"}
 SVG = "{http://www.w3.org/2000/svg}"

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import matplotlib
 
-from graphplan import fonts
+from graphplan.drawing import fonts
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))

@@ -6,9 +6,7 @@ import math
 import pytest
 from shapely.geometry import box
 
-from graphplan import fonts
-from graphplan.errors import InputError, LayoutError
-from graphplan.sheet import (
+from graphplan.drawing import (
     DASHDOT,
     DASHDOTDOT,
     DASHED,
@@ -31,6 +29,7 @@ from graphplan.sheet import (
     arc_point,
     arrow_parts,
     check_layout,
+    fonts,
     frame_items,
     hatch_segments,
     iter_leaves,
@@ -40,6 +39,7 @@ from graphplan.sheet import (
     text_box,
     title_block_items,
 )
+from graphplan.errors import InputError, LayoutError
 
 # method.md A.2, "Computed frame rectangles": trim, frame x0..x1, y0..y1, title block
 PAGES = {

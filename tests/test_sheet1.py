@@ -12,14 +12,20 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from graphplan.analysis import analyze
-from graphplan.constructions import acceleration_plan, velocity_plan
+from graphplan.drawing import (
+    Arrow,
+    Figure,
+    Text,
+    check_layout,
+    iter_leaves,
+    kinematics_sheet,
+    text_box,
+)
 from graphplan.files import bundled_example
-from graphplan.kinematics_sheet import kinematics_sheet
-from graphplan.loader import load
+from graphplan.model import load
+from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.project import analyze, sheet_scales
 from graphplan.render.svg import render_svg
-from graphplan.scales import sheet_scales
-from graphplan.sheet import Arrow, Figure, Text, check_layout, iter_leaves, text_box
 
 SVG = "{http://www.w3.org/2000/svg}"
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
@@ -187,7 +193,7 @@ def _variant_with(tmp_path, extra: str, name="press"):
 
 def test_a3_sheet_draws_the_chosen_positions(tmp_path):
     """On A3 the press fits at Kl = 0.004 with the plans of (2) and (3) only."""
-    from graphplan.sheet import Page
+    from graphplan.drawing import Page
 
     p = _variant_with(tmp_path, 'positions = ["(2)", "(3)"]').read_text(encoding="utf-8")
     p = p.replace("Kl = 0.001", "Kl = 0.004")
@@ -216,8 +222,8 @@ def test_unknown_position_to_draw_is_a_one_line_error(tmp_path):
 
 
 def test_a_plan_of_positions_too_large_for_the_format_is_a_layout_error():
+    from graphplan.drawing import Page
     from graphplan.errors import LayoutError
-    from graphplan.sheet import Page
 
     a, _, _ = built("press")  # Kl = 0.001 fixed: 388 mm tall
     with pytest.raises(LayoutError, match="choose a smaller Kl"):

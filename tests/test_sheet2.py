@@ -4,13 +4,12 @@ import math
 
 import pytest
 
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads
+from graphplan.drawing import Figure, Text, check_layout, iter_leaves
+from graphplan.drawing.sheet2 import kinetostatics_sheet, sheet2_positions
 from graphplan.files import bundled_example
-from graphplan.kinetostatics import solve_forces
-from graphplan.kinetostatics_sheet import kinetostatics_sheet, sheet2_positions
-from graphplan.loader import load
-from graphplan.sheet import Figure, Text, check_layout, iter_leaves
+from graphplan.forces import compute_loads, solve_forces
+from graphplan.model import load
+from graphplan.project import analyze
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]

@@ -6,16 +6,7 @@ import re
 import numpy as np
 import pytest
 
-from graphplan import dynamics as dyn
-from graphplan.analysis import analyze
-from graphplan.dynamics_sheet import dynamics_sheet, results_lines
-from graphplan.errors import InputError
-from graphplan.files import bundled_example
-from graphplan.loader import load
-from graphplan.machine_unit import machine_unit
-from graphplan.motor import load_catalogue
-from graphplan.render.dynamics_tables import dynamics_markdown, position_rows
-from graphplan.sheet import (
+from graphplan.drawing import (
     Arc,
     Arrow,
     Figure,
@@ -23,10 +14,19 @@ from graphplan.sheet import (
     Line,
     Text,
     check_layout,
+    dynamics_sheet,
     item_geometry,
     iter_leaves,
+    results_lines,
     text_box,
 )
+from graphplan.dynamics import load_catalogue, machine_unit
+from graphplan.dynamics import reduction as dyn
+from graphplan.errors import InputError
+from graphplan.files import bundled_example
+from graphplan.model import load
+from graphplan.project import analyze
+from graphplan.reports import dynamics_markdown, position_rows
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]

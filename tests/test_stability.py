@@ -13,9 +13,9 @@ graphical construction loses its footing:
   Mур → 0 (lever arms near zero).
 
 At every position, for every figure the drafting reads (reading precision 0.5 and 1 mm),
-the drafted value is compared with the *solver's* exact value (graphplan.kinematics,
-graphplan.kinetostatics: an independent route from the constructions) and must be
-within the bound :mod:`graphplan.conditioning` states, unless the position is marked
+the drafted value is compared with the *solver's* exact value (graphplan.kinematics.exact,
+graphplan.forces.kinetostatics: an independent route from the constructions) and must be
+within the bound :mod:`graphplan.plans.conditioning` states, unless the position is marked
 ill-conditioned. The sweeps must reach marked positions where the angle is small and
 none where it is not. Finally every output of the variants (tables, JSON report, the
 sheets' SVG) is free of NaN and infinity.
@@ -31,16 +31,20 @@ import numpy as np
 import pytest
 
 import graphplan as g
-from graphplan.analysis import analyze
-from graphplan.applied_loads import compute_loads
-from graphplan.conditioning import ILL_ANGLE_DEG, force_conditioning, kinematic_conditioning
-from graphplan.constructions import Reader, acceleration_plan, velocity_plan
 from graphplan.files import bundled_example
-from graphplan.force_plans import force_plans
-from graphplan.kinetostatics import solve_forces
-from graphplan.project import project_files
-from graphplan.scales import sheet_scales
-from graphplan.zhukovsky import zhukovsky_lever
+from graphplan.forces import compute_loads, solve_forces
+from graphplan.outputs import project_files
+from graphplan.plans import (
+    ILL_ANGLE_DEG,
+    Reader,
+    acceleration_plan,
+    force_conditioning,
+    force_plans,
+    kinematic_conditioning,
+    velocity_plan,
+    zhukovsky_lever,
+)
+from graphplan.project import analyze, sheet_scales
 
 NAN_INF = re.compile(r"\b(nan|inf|infinity)\b", re.IGNORECASE)
 
@@ -252,7 +256,7 @@ def test_a_non_finite_value_never_leaves_the_solver(monkeypatch, where):
     # the solver's check looks at the accelerations, velocities, ω, ε and the positions of
     # the points of translating links (every other position enters its acceleration):
     # a NaN planted in any of them raises SingularPoseError naming the array
-    import graphplan.kinematics as K
+    import graphplan.kinematics.exact as K
 
     mech = g.load(bundled_example("shaper"))
     real_acc, real_pos = K.accelerations_complex, K.solve_complex

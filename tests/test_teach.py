@@ -14,13 +14,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphplan.analysis import analyze
 from graphplan.cli import main
-from graphplan.constructions import velocity_plan
 from graphplan.dynamics import dynamic_model
 from graphplan.files import bundled_example, examples_dir
-from graphplan.loader import load
-from graphplan.scales import sheet_scales
+from graphplan.model import load
+from graphplan.plans import velocity_plan
+from graphplan.project import analyze, sheet_scales
 from graphplan.teaching import PLANS, lesson, page_name, teaching_page, write_lesson
 from graphplan.teaching.captions import ZERO_MM, localise, mm, num, result_text
 from graphplan.teaching.context import context
@@ -256,7 +255,7 @@ def test_the_page_is_deterministic_and_carries_its_fonts(press):
     les = lesson(press, "acceleration", "(3)")
     one, two = teaching_page(les, "en"), teaching_page(les, "en")
     assert one == two
-    from graphplan import fonts
+    from graphplan.drawing import fonts
 
     for fam in fonts.FONT_CHAIN:
         if fonts.find_font_file(fam) is not None:
@@ -366,12 +365,12 @@ def test_notebook_views(press):
     assert len(arrows) == len({e.name for s in plan.steps for e in s.elements
                                if e.kind == "segment" and e.start != e.end})
     ctx = context(press)
-    from graphplan.force_plans import force_plans
+    from graphplan.plans import force_plans
 
     fp = force_plans(press.mech, press.kin, ctx.forces, ctx.loads, 1, sc.kl)[0]
     texts = ["".join(t.itertext()) for t in ET.fromstring(fp._repr_svg_()).iter(f"{SVG}text")]
     assert any(q in " ".join(texts) for q in fp.readings)
-    from graphplan.kinematics_sheet import kinematics_sheet
+    from graphplan.drawing import kinematics_sheet
 
     sheet_svg = kinematics_sheet(press, diagrams=False)._repr_svg_()
     root = ET.fromstring(sheet_svg)
@@ -448,7 +447,7 @@ def test_embedded_fonts_keep_their_own_date():
 
     from fontTools.ttLib import TTFont
 
-    from graphplan import fonts
+    from graphplan.drawing import fonts
     from graphplan.teaching.webfonts import _subset_woff
 
     family = fonts.FONT_CHAIN[0]

@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphplan.analysis import analyze
 from graphplan.files import bundled_example, examples_dir
-from graphplan.loader import load
+from graphplan.model import load
+from graphplan.project import analyze
 from graphplan.render.browser import ENV_VAR, FLAGS, find_chromium
 from graphplan.teaching import lesson, write_lesson
 from graphplan.teaching.captions import WORDS, ZERO_MM, localise
@@ -318,7 +318,7 @@ def test_no_network_request(browser, pages):
     assert "default-src 'none'" in csp
     # the embedded fonts are used: osifont (when installed where the page was made)
     # letters the drawing from its data: URL
-    from graphplan.fonts import find_font_file
+    from graphplan.drawing import find_font_file
 
     if find_font_file("osifont") is not None:
         loaded = browser.js("Array.from(document.fonts).filter(f => f.status === 'loaded')"

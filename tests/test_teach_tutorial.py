@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from graphplan.analysis import analyze
 from graphplan.dynamics import dynamic_model, flywheel
 from graphplan.files import bundled_example
-from graphplan.loader import load
+from graphplan.model import load
+from graphplan.project import analyze
 
 TUTORIAL = Path(__file__).resolve().parent.parent / "examples" / "tutorial.py"
 

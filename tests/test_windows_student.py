@@ -20,7 +20,7 @@ from graphplan import console
 from graphplan.checking.student import load_student
 from graphplan.errors import InputError
 from graphplan.files import bundled_example, decode_text
-from graphplan.loader import load
+from graphplan.model import load
 
 ROOT = Path(__file__).resolve().parent.parent
 PRESS = bundled_example("press")

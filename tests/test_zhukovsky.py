@@ -1,4 +1,4 @@
-"""Zhukovsky's lever (graphplan.zhukovsky) against the force plans and the power balance.
+"""Zhukovsky's lever (graphplan.plans.zhukovsky) against the force plans and the power balance.
 
 * Exact mode: M_ур(Ж) off the lever equals ``kinetostatics.solve_forces(...).M_bal`` and
   ``applied_loads.power_balance_moment`` to REL = 1e-9 (relative where |M_ур| is not ~0,
@@ -25,18 +25,17 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import graphplan as g
-from graphplan.applied_loads import (
+from graphplan.files import bundled_example
+from graphplan.forces import (
     ForceLoad,
     MomentLoad,
     compute_loads,
     point_velocity,
     power_balance_moment,
+    solve_forces,
 )
-from graphplan.constructions import EXACT, Reader, plan_scales
-from graphplan.files import bundled_example
-from graphplan.kinetostatics import solve_forces
+from graphplan.plans import EXACT, Reader, discrepancy_pct, plan_scales, zhukovsky_lever
 from graphplan.units import Scale
-from graphplan.zhukovsky import discrepancy_pct, zhukovsky_lever
 
 REL = 1e-9
 EXAMPLES = ("press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",

@@ -515,7 +515,7 @@ class Diagnoser:
         """The crank's reaction on the group (R12) from the group's polygon drawn with the
         student's loads and outer reaction (graphplan's directions): ``R12 = −(ΣF + R43)``.
         Only for a mechanism of one group; ``None`` when the student gives no R43."""
-        from ..kinetostatics import dyad_pairs, reaction_name
+        from ..forces import dyad_pairs, reaction_name
 
         mech, ref = self.ref.mech, self.ref
         k = ref.index(position)
@@ -575,7 +575,7 @@ class Diagnoser:
         o = f.occs[0]
         if o.position is None or o.position not in self.ref.labels or len(mech.dyads) != 1:
             return None
-        from ..kinetostatics import dyad_pairs
+        from ..forces import dyad_pairs
 
         first = dyad_pairs(mech, mech.dyads[0])[0]
         key = f.key

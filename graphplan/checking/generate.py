@@ -5,7 +5,7 @@ scales, ω1, the velocities and accelerations read off the plans (``vB = pb∙Kv
 weights and inertia forces, each group's moment equation for its tangential reaction
 with the arms measured on the position plan, the reactions read off the force plans
 (``R12 = R12_mm∙Kp = …``), h21 and ``Мур = R21∙h21∙Кl = …`` — from graphplan's own
-constructions (:mod:`graphplan.constructions`, :mod:`graphplan.force_plans`) at
+constructions (:mod:`graphplan.plans.constructions`, :mod:`graphplan.plans.forces`) at
 graphplan's scales, every segment rounded to 0,01 mm and every result computed from the
 written numbers, as a student computes it. It must pass the checker clean.
 
@@ -211,8 +211,8 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
     """
     measure = drafting
     dg = drafting.digits
-    from ..force_plans import force_plans
-    from ..scales import sheet_scales
+    from ..plans import force_plans
+    from ..project import sheet_scales
 
     ref = ref or Reference.of(variant)
     mech, kin = ref.mech, ref.kin

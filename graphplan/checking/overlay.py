@@ -11,7 +11,7 @@ positions):
 
 Graphplan's construction is black. Each wrong figure is marked in red: a length on paper
 as a red segment of the student's length laid along the right one from the same start,
-with ``name: stated ≠ right``. The drawing is a :class:`graphplan.sheet.Sheet` rendered by
+with ``name: stated ≠ right``. The drawing is a :class:`graphplan.drawing.sheet.Sheet` rendered by
 :func:`graphplan.render.svg.render_svg` (mm, ESKD frame); the red of the marks is one CSS
 rule added to that SVG.
 """
@@ -23,7 +23,7 @@ from itertools import pairwise
 
 import numpy as np
 
-from ..sheet import (
+from ..drawing import (
     MEDIUM,
     THIN,
     Arrow,
@@ -164,8 +164,7 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
     work : Work
         The checker's reading of the student's lines (its scales).
     """
-    from ..constructions import acceleration_plan, velocity_plan
-    from ..force_plans import force_plan
+    from ..plans import acceleration_plan, force_plan, velocity_plan
     from ..render.svg import render_svg
 
     mech, kin = ref.mech, ref.kin
@@ -247,8 +246,8 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
 
 def _scheme(ref, k: int, label: str, cell: Rect, kl: float, figs, work, ident: str):
     """The mechanism at position k, the line of R21 and the arms (correct), marks in red."""
-    from ..kinetostatics import reaction_name
-    from ..sheet import MAIN
+    from ..drawing import MAIN
+    from ..forces import reaction_name
 
     mech, kin = ref.mech, ref.kin
     pts = {n: np.asarray(p[k], float) for n, p in kin.pos.points.items()}

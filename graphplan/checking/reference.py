@@ -1,10 +1,10 @@
 """What graphplan says each figure should be: its exact results, and a few wrong models.
 
 A :class:`Reference` runs graphplan on the student's variant once —
-:func:`graphplan.analysis.analyze` (kinematics of every position),
-:func:`graphplan.applied_loads.compute_loads` and
-:func:`graphplan.kinetostatics.solve_forces` (loads, reactions, Mур), the velocity and
-acceleration plans of :mod:`graphplan.constructions` at the student's own scales — and
+:func:`graphplan.project.analysis.analyze` (kinematics of every position),
+:func:`graphplan.forces.loads.compute_loads` and
+:func:`graphplan.forces.kinetostatics.solve_forces` (loads, reactions, Mур), the velocity and
+acceleration plans of :mod:`graphplan.plans.constructions` at the student's own scales — and
 answers :meth:`Reference.value`: the physical value (SI) of a quantity's key at a position
 under a *model*:
 
@@ -32,12 +32,10 @@ from functools import cached_property
 
 import numpy as np
 
-from ..analysis import analyze
-from ..applied_loads import Loads, compute_loads
+from ..forces import Forces, Loads, compute_loads, reaction_name, solve_forces
 from ..kinematics import solve
-from ..kinetostatics import Forces, reaction_name, solve_forces
-from ..loader import load
-from ..model import Mechanism
+from ..model import Mechanism, load
+from ..project import analyze
 from .quantities import Key, Quantity, Vocabulary
 from .units import fold
 
@@ -101,7 +99,7 @@ class Reference:
     @cached_property
     def vocabulary_parts(self) -> tuple[dict[str, str], tuple[str, ...], tuple[str, ...]]:
         """Reading names of the plans, reaction names, load names (for a Vocabulary)."""
-        from ..constructions import acceleration_plan, velocity_plan
+        from ..plans import acceleration_plan, velocity_plan
         from ..units import Scale
 
         k = 0
@@ -324,7 +322,7 @@ class Reference:
                    ka: float | None) -> float | None:
         """Exact length (mm) of a segment of the velocity or acceleration plan of position
         k built by graphplan at the student's scales (``None`` without that scale)."""
-        from ..constructions import acceleration_plan, velocity_plan
+        from ..plans import acceleration_plan, velocity_plan
         from ..units import Scale
 
         key = (k, kl, kv, ka)

@@ -1,7 +1,7 @@
-"""PNG previews of SVG sheets (the engine of :mod:`graphplan.exports.png`).
+"""PNG previews of SVG sheets (the engine of :mod:`graphplan.render.png`).
 
 resvg (a wheel, no system library) letters each text in the first family of its
-font-family list from the bundled fonts; :mod:`graphplan.fonts` puts a family that
+font-family list from the bundled fonts; :mod:`graphplan.drawing.fonts` puts a family that
 draws the whole text first.
 """
 
@@ -14,7 +14,7 @@ from ..files import write_atomic
 
 def svg_to_png_bytes(svg_text: str, dpi: float = 50) -> bytes:
     """PNG bytes of an SVG whose size is given in mm, at ``dpi`` dots per inch."""
-    from ..exports.png import svg_to_png_bytes as to_png
+    from .png import svg_to_png_bytes as to_png
 
     return to_png(svg_text, dpi)
 

@@ -1,4 +1,4 @@
-"""SVG output of a :class:`graphplan.sheet.Sheet`. The ONLY module importing svgwrite.
+"""SVG output of a :class:`graphplan.drawing.sheet.Sheet`. The ONLY module importing svgwrite.
 
 The root is ``width="841mm" height="594mm" viewBox="0 0 841 594"`` (for A1), so one
 user unit is one millimetre: coordinates, stroke widths and font sizes are written as
@@ -19,10 +19,7 @@ from pathlib import Path
 
 import svgwrite
 
-from .. import fonts
-from ..errors import LayoutError
-from ..files import write_atomic
-from ..sheet import (
+from ..drawing import (
     LAYERS,
     SLANT_DEG,
     Arc,
@@ -39,9 +36,12 @@ from ..sheet import (
     Text,
     arc_point,
     arrow_parts,
+    fonts,
     hatch_segments,
     iter_leaves,
 )
+from ..errors import LayoutError
+from ..files import write_atomic
 
 _INKSCAPE = "http://www.inkscape.org/namespaces/inkscape"
 

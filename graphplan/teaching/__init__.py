@@ -6,8 +6,8 @@
 slides (:func:`frame_svg`). In a notebook a :class:`Lesson` shows itself (the page in a
 sandboxed frame), and so do the plans and sheets (their ``_repr_svg_``).
 
->>> from graphplan.analysis import analyze            # doctest: +SKIP
->>> from graphplan.loader import load
+>>> from graphplan.project.analysis import analyze            # doctest: +SKIP
+>>> from graphplan.model.loader import load
 >>> les = lesson(analyze(load("examples/press.toml")), "velocity", "2")
 >>> [s.kind for s in les.steps]
 ['pole', 'lay', 'intersect', 'read', 'similar', 'similar']

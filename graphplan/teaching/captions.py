@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from ..constructions import ZERO_MM
+from ..plans import ZERO_MM
 from ..units import UNITS_RU, fmt, unit_text
 from .model import Result
 

@@ -41,10 +41,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the pages; print one line per page; return 0 (errors raise GraphplanError)."""
-    from ..analysis import analyze
     from ..errors import InputError
     from ..files import bundled_example
-    from ..loader import load
+    from ..model import load
+    from ..project import analyze
     from . import POSITION_PLANS, lesson, position_index, write_lesson
 
     path = Path(args.variant) if args.variant else bundled_example("press")

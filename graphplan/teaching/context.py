@@ -26,9 +26,8 @@ def context(analysis) -> Context:
     hit = _CACHE.get(id(analysis))
     if hit is not None and hit[0] is analysis:
         return hit[1]
-    from ..applied_loads import compute_loads
-    from ..kinetostatics import solve_forces
-    from ..scales import sheet2_scales, sheet_scales
+    from ..forces import compute_loads, solve_forces
+    from ..project import sheet2_scales, sheet_scales
 
     mech, kin = analysis.mech, analysis.kin
     loads = compute_loads(mech, kin, analysis.cycle)

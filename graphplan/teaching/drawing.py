@@ -2,10 +2,10 @@
 lines of the steps before it.
 
 A panel's marks (:class:`graphplan.teaching.model.Mark`, mm with y up) become the
-sheets' own drawing items (:mod:`graphplan.sheet`: arrows with filled heads, thin
+sheets' own drawing items (:mod:`graphplan.drawing.sheet`: arrows with filled heads, thin
 construction lines, lettering sized by its capital height) on paper with **y down**,
 ``(x, y) → (x, −y)``, the one flip of the module; the letters of the points are placed
-once per panel with the sheets' label placer (:func:`graphplan.labels.place_labels`),
+once per panel with the sheets' label placer (:func:`graphplan.drawing.labels.place_labels`),
 so a letter never moves from one frame to the next, and every item is written by the
 sheets' SVG renderer (:mod:`graphplan.render.svg`). The frame's ``viewBox`` is the
 panel's extent plus a margin, and its ``width``/``height`` are that extent in mm: printed,
@@ -24,20 +24,22 @@ from functools import lru_cache
 
 import svgwrite
 
-from ..labels import LabelRequest, merge_coincident, place_labels
-from ..render import svg as svg_render
-from ..sheet import (
+from ..drawing import (
     TEXT_HEIGHTS,
     Arrow,
     Circle,
     Item,
+    LabelRequest,
     Line,
     Polyline,
     Style,
     Text,
     item_geometry,
+    merge_coincident,
+    place_labels,
     text_box,
 )
+from ..render import svg as svg_render
 from .captions import localise
 from .model import Lesson, Mark
 

@@ -1,10 +1,10 @@
 """The lesson of the flywheel: work diagrams by graphical integration, then the
-energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics`).
+energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics.reduction`).
 
-Only the public results of :func:`graphplan.dynamics.flywheel` (and its
-:class:`~graphplan.dynamics.WorkDiagrams`) and of :func:`graphplan.dynamics.dynamic_model`
+Only the public results of :func:`graphplan.dynamics.reduction.flywheel` (and its
+:class:`~graphplan.dynamics.reduction.WorkDiagrams`) and of :func:`graphplan.dynamics.reduction.dynamic_model`
 are drawn; nothing is solved again. Sign conventions are those of
-:mod:`graphplan.dynamics`: moments positive in the sense of rotation, so the resisting
+:mod:`graphplan.dynamics.reduction`: moments positive in the sense of rotation, so the resisting
 moment Mс is negative where it resists and ``Aс`` falls; the abscissa is the crank
 travel from the first position, ``x = τ/Kφ`` mm.
 
@@ -63,7 +63,7 @@ def flywheel_lesson(analysis) -> Lesson:
     Raises
     ------
     InputError, DynamicsError, LayoutError
-        As :func:`graphplan.dynamics.flywheel` (no δ in the variant, no work of the
+        As :func:`graphplan.dynamics.reduction.flywheel` (no δ in the variant, no work of the
         resistance, a pole distance under 1 mm).
     """
     mech = analysis.mech

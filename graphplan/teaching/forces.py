@@ -1,12 +1,12 @@
 """The lesson of the force plans of one position: every Assur group from the last to
-the first, then the crank (:func:`graphplan.force_plans.force_plans`, as on sheet 2).
+the first, then the crank (:func:`graphplan.plans.forces.force_plans`, as on sheet 2).
 
 Each plan has two panels: the **scheme** of the group (its links on the position plan
 at Kl, with the known forces and their arms) for the moment equations, and the
 **force plan** at Kp for the polygon. A moment equation ``ΣM_B(link 2): Rτ12·AB +
 G2·h_G2 + … = 0`` draws each known force (direction only, a fixed length: its size is
 in the caption), its line of action and the arm ``h`` from the moment centre, read by
-the construction (:attr:`graphplan.force_plans.ForcePlan.arms_mm`); the caption
+the construction (:attr:`graphplan.plans.forces.ForcePlan.arms_mm`); the caption
 converts each arm into the force's moment, ``M = F·h`` (N·mm of the drawing, as the
 equation is written). The unknown's line is drawn too: a tangential component is
 perpendicular to the line from the centre to its joint, so its arm is that distance.
@@ -22,9 +22,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..constructions import Step, position_mm, unit_vector
-from ..force_plans import ForcePlan, force_plans
-from ..kinetostatics import reaction_name
+from ..forces import reaction_name
+from ..plans import ForcePlan, Step, force_plans, position_mm, unit_vector
 from .captions import WORDS, num, shown
 from .context import context
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term

@@ -1,6 +1,6 @@
 """Lessons of the velocity and acceleration plans, from the constructions' ordered steps.
 
-Each :class:`graphplan.constructions.Step` becomes one lesson step; its elements are
+Each :class:`graphplan.plans.constructions.Step` becomes one lesson step; its elements are
 drawn as they are (segments as vectors, lines, points) and its readings become the
 caption's results. The known and unknown parts of a dyad's equation are read off the
 equation and the two lines that close it: the equation ``v_B = v_A + v_BA = v_B4 +
@@ -12,7 +12,7 @@ acceleration equation the unknown terms are the tangential and relative ones (``
 
 After a reading of a relative (tangential) segment the caption adds the angular
 velocity (acceleration) of the link, ``ω2 = v_BA/l_AB``, with the sense the
-construction found (:attr:`graphplan.constructions.Plan.rates`, CCW positive).
+construction found (:attr:`graphplan.plans.constructions.Plan.rates`, CCW positive).
 """
 
 from __future__ import annotations
@@ -21,8 +21,8 @@ import re
 
 import numpy as np
 
-from ..constructions import Plan, Step, acceleration_plan, velocity_plan
-from ..scales import sheet_scales
+from ..plans import Plan, Step, acceleration_plan, velocity_plan
+from ..project import sheet_scales
 from .captions import WORDS, ZERO_MM, num, shown, unit
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -32,7 +32,7 @@ _POINT = re.compile(r"[A-Z][a-z]*\d*")
 def plan_lesson(analysis, k: int, kind: str) -> Lesson:
     """The lesson of the velocity (``kind="velocity"``) or acceleration plan of position k.
 
-    The scales are those of sheet 1 (:func:`graphplan.scales.sheet_scales`) and the
+    The scales are those of sheet 1 (:func:`graphplan.project.scales.sheet_scales`) and the
     construction is exact, as on the sheet.
     """
     mech, kin = analysis.mech, analysis.kin

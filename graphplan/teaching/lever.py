@@ -1,11 +1,11 @@
-"""The lesson of Zhukovsky's lever of one position (:func:`graphplan.zhukovsky.zhukovsky_lever`).
+"""The lesson of Zhukovsky's lever of one position (:func:`graphplan.plans.zhukovsky.zhukovsky_lever`).
 
 Steps as the construction orders them: the velocity plan turned by 90°, each couple
 replaced by two forces, each force applied at the image of its point with its arm
 ``h`` about the pole (the caption converts the arm into the force's moment about p,
 ``M_p = F·h``, N·mm of the lever), and the balancing force ``F_ур = |Σ M_p|/pa`` with
 ``M_ур(Ж) = F_ур·l_OA``, compared with the force plans' Mур. The lever is drawn at the
-Kv of sheet 2's lever (:meth:`graphplan.scales.Sheet2Scales.lever_kv`), so its arms are
+Kv of sheet 2's lever (:meth:`graphplan.project.scales.Sheet2Scales.lever_kv`), so its arms are
 the sheet's and the tables'; the force arrows are at the display scale Kf (nothing is
 read at it).
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..zhukovsky import Lever, zhukovsky_lever
+from ..plans import Lever, zhukovsky_lever
 from .captions import WORDS, num, unit
 from .context import context
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term

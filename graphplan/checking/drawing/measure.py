@@ -1,7 +1,7 @@
 """A plan found on the drawing laid against graphplan's construction of the same plan.
 
-graphplan builds the plan of the position (:func:`graphplan.constructions.velocity_plan`,
-:func:`~graphplan.constructions.acceleration_plan`) at the **student's** scale; each
+graphplan builds the plan of the position (:func:`graphplan.plans.constructions.velocity_plan`,
+:func:`~graphplan.plans.constructions.acceleration_plan`) at the **student's** scale; each
 letter of the student's plan is matched to a point of the construction by name
 (``nBA`` = ``n_BA``; a bare ``n`` or ``k`` to the nearest component's end of that
 letter); every segment of the construction whose two ends the student lettered is
@@ -72,7 +72,7 @@ def norm(name: str) -> str:
 
 def construction(ref, kind: str, k: int, scales: dict[str, float]):
     """graphplan's plan of position k at the student's scales (``None`` without one)."""
-    from ...constructions import acceleration_plan, velocity_plan
+    from ...plans import acceleration_plan, velocity_plan
     from ...units import Scale
 
     kl = Scale("Kl", scales.get("Kl", 1e-3), "m/mm")

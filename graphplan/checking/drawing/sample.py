@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ...constructions import acceleration_plan, plan_scales, velocity_plan
+from ...plans import acceleration_plan, plan_scales, velocity_plan
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,0 +1,142 @@
+"""Placing the letters of points on a drawing so that they clear each other and the lines.
+
+A draftsman writes a point's letter next to the point, on the side where there is
+room, and writes coincident points together (``p, b``). :func:`place_labels` does
+the same: labels whose anchors lie within ``merge_mm`` of each other (and share a
+``group``) become one text; each text then takes the first free spot of a ring of
+candidates around its anchor, nearest first, that overlaps no placed text and
+crosses as few lines as possible.
+
+Paper coordinates, mm, y down (see :mod:`graphplan.drawing.sheet`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+from shapely.geometry.base import BaseGeometry
+
+from .sheet import Pt, Text, text_at_centre, text_box
+
+#: Directions tried around an anchor (degrees, counter-clockwise as seen), best first.
+_DIRECTIONS = (45, 135, -45, -135, 0, 180, 90, -90, 22.5, 157.5, -22.5, -157.5,
+               67.5, 112.5, -67.5, -112.5)
+
+
+@dataclass(frozen=True, slots=True)
+class LabelRequest:
+    """A letter to write next to a point.
+
+    ``prefer_deg`` (as seen, CCW from +x) is tried first, e.g. away from the
+    centre of the figure; ``group`` limits merging to labels of one figure.
+    """
+
+    anchor: Pt
+    text: str
+    height: float = 3.5
+    group: str = ""
+    prefer_deg: float | None = None
+
+
+def merge_coincident(requests: Sequence[LabelRequest], merge_mm: float) -> list[LabelRequest]:
+    """Join labels of one group whose anchors are closer than ``merge_mm``: ``p, b``."""
+    out: list[LabelRequest] = []
+    used = [False] * len(requests)
+    for i, r in enumerate(requests):
+        if used[i]:
+            continue
+        names = [r.text]
+        for j in range(i + 1, len(requests)):
+            q = requests[j]
+            if not used[j] and q.group == r.group and math.dist(q.anchor, r.anchor) < merge_mm:
+                used[j] = True
+                if q.text not in names:
+                    names.append(q.text)
+        out.append(LabelRequest(r.anchor, ", ".join(names), r.height, r.group, r.prefer_deg))
+    return out
+
+
+def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeometry], *,
+                 layer: str, id_prefix: str, merge_mm: float = 1.0, gap: float = 0.8,
+                 max_radius: float = 14.0, keep_out: Sequence[BaseGeometry] = ()) -> list[Text]:
+    """Texts for ``requests``, clear of each other and, where possible, of the lines.
+
+    Parameters
+    ----------
+    requests : sequence of LabelRequest
+        In order of priority (earlier labels get the better spots).
+    obstacles : sequence of shapely geometries
+        Lines the texts should not cross (crossing one costs a penalty).
+    layer, id_prefix : str
+        Layer of the texts and prefix of their ids (``{id_prefix}-{i}``).
+    merge_mm : float
+        Anchors closer than this (same group) are written as one label.
+    gap : float
+        Clearance between a text's box and its anchor, mm.
+    max_radius : float
+        Farthest ring tried before the least bad spot is taken.
+    keep_out : sequence of shapely geometries
+        Areas a text must not enter at all (other figures, the title block).
+
+    Returns
+    -------
+    list of Text
+    """
+    reqs = merge_coincident(requests, merge_mm)
+    obst_tree = shapely.STRtree(list(obstacles)) if obstacles else None
+    keep_tree = shapely.STRtree(list(keep_out)) if keep_out else None
+    placed: list[BaseGeometry] = []
+    texts: list[Text] = []
+    for n, r in enumerate(reqs):
+        probe = text_at_centre((0.0, 0.0), r.text, r.height, layer=layer)
+        b0 = text_box(probe)
+        x0, y0, x1, y1 = b0.bounds
+        half = np.array([(x1 - x0) / 2, (y1 - y0) / 2])
+        dirs = list(_DIRECTIONS)
+        if r.prefer_deg is not None:
+            dirs = [r.prefer_deg, r.prefer_deg + 30, r.prefer_deg - 30] + dirs
+        best = None
+        ring = gap
+        while ring <= max_radius + 1e-9:
+            for d in dirs:
+                u = np.array([math.cos(math.radians(d)), -math.sin(math.radians(d))])
+                # distance from the anchor to the box's edge along u, plus the ring
+                reach = min(half[0] / abs(u[0]) if abs(u[0]) > 1e-9 else math.inf,
+                            half[1] / abs(u[1]) if abs(u[1]) > 1e-9 else math.inf)
+                c = np.asarray(r.anchor) + u * (reach + ring)
+                t = text_at_centre((float(c[0]), float(c[1])), r.text, r.height, layer=layer,
+                                   id=f"{id_prefix}-{n + 1}")
+                box = text_box(t).buffer(0.3)
+                if any(box.intersects(p) for p in placed):
+                    continue
+                if keep_tree is not None and len(keep_tree.query(box, predicate="intersects")):
+                    continue
+                hits = 0
+                if obst_tree is not None:
+                    hits = len(obst_tree.query(box, predicate="intersects"))
+                score = hits * 10.0 + ring
+                if best is None or score < best[0]:
+                    best = (score, t, box)
+                if hits == 0:
+                    break
+            if best is not None and best[0] < 10.0:
+                break
+            ring += 1.5
+        if best is None:  # everything near is taken: go outwards until free
+            ring = max_radius
+            while best is None:
+                ring += 2.0
+                u = np.array([math.cos(math.radians(dirs[0])), -math.sin(math.radians(dirs[0]))])
+                c = np.asarray(r.anchor) + u * (ring + float(half.max()))
+                t = text_at_centre((float(c[0]), float(c[1])), r.text, r.height, layer=layer,
+                                   id=f"{id_prefix}-{n + 1}")
+                box = text_box(t).buffer(0.3)
+                if not any(box.intersects(p) for p in placed):
+                    best = (0.0, t, box)
+        placed.append(best[2])
+        texts.append(best[1])
+    return texts

@@ -1,0 +1,557 @@
+"""Sheet 1, kinematic analysis: the plan of positions, the velocity and acceleration
+plans of every position, the kinematic diagrams and the table of the plans.
+
+Everything is drawn from the constructions (:mod:`graphplan.plans.constructions`): the
+plan points are the intersections the draftsman gets, placed on paper by a pure
+translation and the flip of y (the plans are built with y up, paper is y down).
+Styles (GOST 2.303): the first position in main line, the other positions thin,
+the extreme (dead-centre) positions dash-dot-dot, trajectories and axes dash-dot,
+vectors of the plans 0.5 mm with filled arrowheads, construction lines thin.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from shapely.geometry import Polygon
+
+from ..kinematics import output_coordinate
+from ..plans import Plan, Reader, acceleration_plan, velocity_plan
+from ..project import CAPTION, PLAN_MARGIN, SLOT_OVER, Sheet1Scales, sheet_scales, titled_table
+from .labels import LabelRequest, place_labels
+from .sheet import (
+    DASHDOT,
+    DASHDOTDOT,
+    MAIN,
+    MEDIUM,
+    THIN,
+    Arc,
+    Arrow,
+    Circle,
+    Hatch,
+    Item,
+    Line,
+    Page,
+    Polyline,
+    Pt,
+    Rect,
+    Sheet,
+    Style,
+    Text,
+    TitleBlock,
+    arc_point,
+    item_geometry,
+    iter_leaves,
+    signatures,
+    text_at_centre,
+    text_box,
+)
+
+WHITE_FILL = Style(0.5, fill="white")
+JOINT_R = 1.5  #: radius of a revolute joint's circle, mm
+SLIDER = (14.0, 7.0)  #: slider block, length along the guide × width, mm
+
+WORDS = {
+    "ru": {"positions": "План положений", "velocity": "План скоростей",
+           "acceleration": "План ускорений", "pos": "пол.", "scales": "Масштабные коэффициенты",
+           "table": "Таблица планов", "sheet": "Кинематический анализ"},
+    "en": {"positions": "Plan of positions", "velocity": "Velocity plan",
+           "acceleration": "Acceleration plan", "pos": "pos.", "scales": "Scale factors",
+           "table": "Table of the plans", "sheet": "Kinematic analysis"},
+}
+
+
+class _Paper:
+    """Model metres (y up, about the crank pivot) → paper mm (y down)."""
+
+    def __init__(self, origin: Pt, kl: float, pivot: np.ndarray):
+        self.ox, self.oy = origin
+        self.kl = kl
+        self.pivot = pivot
+
+    def __call__(self, xy) -> Pt:
+        x, y = (np.asarray(xy, float) - self.pivot) / self.kl
+        return (self.ox + float(x), self.oy - float(y))
+
+
+def _label(name: str) -> str:
+    return name.replace("_", "")
+
+
+# ------------------------------------------------------------------ plan of positions
+
+
+def _position_styles(analysis) -> list[Style]:
+    """Main line for the first position, dash-dot-dot at a dead centre, thin otherwise."""
+    dead = [d % (2 * math.pi) for d in analysis.cycle.dead_centres]
+    styles = []
+    for k, phi in enumerate(analysis.kin.phi):
+        at_dead = any(abs((phi - d + math.pi) % (2 * math.pi) - math.pi) < 1e-6 for d in dead)
+        styles.append(MAIN if k == 0 else DASHDOTDOT if at_dead else THIN)
+    return styles
+
+
+def _structural(mech) -> set[str]:
+    """Points that shape the links: the pivots, pins and joints, the points guides pass
+    through or point to, and the origins of other points (not a bare centre of mass)."""
+    pts = set(mech.frame_points) | {mech.crank.pivot, mech.crank.pin}
+    for d in mech.dyads:
+        pts |= set(d.joints)
+        pts |= {x for g in d.guides for x in (g.through, g.toward) if x}
+    for q in mech.points:
+        pts |= {x for x in (q.origin, q.toward) if x}
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    pts |= {q.name for q in mech.points if q.name not in centres}
+    return pts
+
+
+def _link_outline(mech, link: str, centres: set[str]) -> tuple[str, ...]:
+    """The points a link is drawn through: all of its points but a bare centre of mass (a
+    crank balanced at its pivot keeps the pivot, it is a joint too)."""
+    keep = _structural(mech)
+    return tuple(p for p in mech.points_of(link)
+                 if p not in centres or p in keep or link == mech.frame_link)
+
+
+def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
+    """The plan of positions: all positions, trajectories, guides, frame supports, letters."""
+    mech, kin = analysis.mech, analysis.kin
+    box = sc.layout.plan_box
+    ext = sc.extent_m
+    kl = sc.kl.per_mm
+    origin = (box.x0 + PLAN_MARGIN - ext[0] / kl, box.y0 + PLAN_MARGIN + ext[3] / kl)
+    pivot = kin.pos.points[mech.crank.pivot][0]
+    P = _Paper(origin, kl, pivot)
+    L = "position_plan"
+    items: list[Item] = []
+    labels: list[LabelRequest] = []
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    styles = _position_styles(analysis)
+    paths = sc.paths
+    out_point = output_coordinate(mech, kin.pos)[3]
+
+    # trajectories of the centres of mass (closed curves) and of the crank pin
+    for name in sorted(centres | {mech.crank.pin}):
+        if name not in paths or name in mech.frame_points:
+            continue
+        pts = [P(q) for q in paths[name][:-1]]
+        if max(math.dist(pts[0], q) for q in pts) < 0.5:
+            continue
+        items.append(Polyline(tuple(pts), DASHDOT, True, layer=L, id=f"pp-path-{name}"))
+
+    # guides on the frame: the axis over the slider's travel and a hatched strip
+    for key, (G, u) in kin.pos.guides.items():
+        slider, carrier = key.split("/")
+        if carrier != mech.frame_link:
+            continue
+        d = np.asarray(u[0], float)
+        base = np.asarray(G[0], float)
+        s = [float(np.dot(paths[p] - base, d).min()) for p in mech.points_of(slider)]
+        e = [float(np.dot(paths[p] - base, d).max()) for p in mech.points_of(slider)]
+        t0, t1 = min(s) - 12 * kl, max(e) + 12 * kl
+        a, b = P(base + t0 * d), P(base + t1 * d)
+        items.append(Line(a, b, DASHDOT, layer=L, id=f"pp-guide-{slider}"))
+        n = np.array([-(b[1] - a[1]), b[0] - a[0]]) / math.dist(a, b)
+        off1, off2 = n * (SLIDER[1] / 2 + 0.5), n * (SLIDER[1] / 2 + 3.0)
+        strip = (tuple(np.add(a, off1)), tuple(np.add(b, off1)), tuple(np.add(b, off2)),
+                 tuple(np.add(a, off2)))
+        items.append(Line(strip[0], strip[1], MAIN, layer=L, id=f"pp-guide-{slider}-edge"))
+        items.append(Hatch(strip, 2.0, 45.0, layer=L, id=f"pp-guide-{slider}-hatch"))
+
+    # the links in every position; the main position (0) last, on top of the others
+    for k in [*range(1, kin.n), 0]:
+        st = styles[k]
+        items += link_items(mech, kin, k, P, st, f"pp-{k}", L, sc.slots)
+        for key, (G, u) in kin.pos.guides.items():
+            slider = key.split("/")[0]
+            corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
+            if corners:
+                items.append(Polyline(corners, Style(st.width, st.dasharray, fill="white"), True,
+                                      layer=L, id=f"pp-{k}-slider-{key.replace('/', '-')}"))
+        for p in _joints(mech):
+            items.append(Circle(P(kin.pos.points[p][k]), JOINT_R,
+                                Style(0.35 if st is not MAIN else 0.5, fill="white"),
+                                layer=L, id=f"pp-{k}-joint-{p}"))
+        for c in sorted(centres):
+            if c in kin.pos.points:
+                items.append(Circle(P(kin.pos.points[c][k]), 0.8, Style(0.25, fill="black"),
+                                    layer=L, id=f"pp-{k}-centre-{c}"))
+        # position numbers at the crank pin and at the output point
+        for p in (mech.crank.pin, out_point):
+            q = P(kin.pos.points[p][k])
+            centre = P(pivot)
+            away = math.degrees(math.atan2(-(q[1] - centre[1]), q[0] - centre[0]))
+            labels.append(LabelRequest(q, f"{p}{kin.labels[k]}" if p != mech.crank.pin
+                                       else kin.labels[k], 3.5, group=f"num-{p}",
+                                       prefer_deg=away))
+
+    for fp in mech.frame_points:
+        items += _support(P(mech.frame_points[fp]), f"pp-support-{fp}")
+    items += _rotation_arrow(P(pivot), mech.crank, float(kin.phi[0]), kl)
+    labels.insert(0, LabelRequest(_rotation_label_anchor(P(pivot), mech.crank, float(kin.phi[0]),
+                                                         kl), "ω1", 5.0, group="omega"))
+    # letters of the first position
+    first = 0
+    pc = P(pivot)
+    for p in mech.frame_points:
+        labels.insert(0, LabelRequest(P(mech.frame_points[p]), p, 5.0, group="letters"))
+    for link in mech.moving_links:
+        for p in mech.points_of(link):
+            if p in mech.frame_points:
+                continue
+            q = P(kin.pos.points[p][first])
+            away = math.degrees(math.atan2(-(q[1] - pc[1]), q[0] - pc[0]))
+            labels.insert(len(mech.frame_points), LabelRequest(q, p, 5.0, group="letters",
+                                                               prefer_deg=away))
+    labels = _dedupe(labels)
+    obstacles = [g for it in iter_leaves(items) if (g := item_geometry(it)) is not None
+                 and not isinstance(it, Hatch)]
+    w = WORDS[lang]
+    caption = Text((box.x0, box.y0 + 2.0), f"{w['positions']}   {_units(sc.kl.basis, lang)}",
+                   5.0, layer="text", id="pp-caption")
+    page = sc.layout.page
+    margin = page.trim.polygon().difference(page.frame.polygon().buffer(-1.0))
+    keep = [text_box(caption).buffer(1.0), page.graph26_rect.polygon(), margin]
+    items += place_labels(labels, obstacles, layer=L, id_prefix="pp-label", merge_mm=1.2,
+                          keep_out=keep)
+    items.append(caption)
+    return items
+
+
+def _dedupe(reqs: list[LabelRequest]) -> list[LabelRequest]:
+    seen, out = set(), []
+    for r in reqs:
+        key = (r.text, r.group, round(r.anchor[0], 1), round(r.anchor[1], 1))
+        if key not in seen:
+            seen.add(key)
+            out.append(r)
+    return out
+
+
+def _joints(mech) -> list[str]:
+    """Revolute joints of the moving links (crank pin, dyad joints on pins)."""
+    out = []
+    for d in mech.dyads:
+        kinds = d.kind
+        for letter, name in zip(kinds, _pair_points(d), strict=False):
+            if letter == "R" and name and name not in out and name not in mech.frame_points:
+                out.append(name)
+    if mech.crank.pin not in out:
+        out.insert(0, mech.crank.pin)
+    return out
+
+
+def _pair_points(d) -> tuple[str | None, ...]:
+    """The point of each of a dyad's three pairs (outer, inner, outer); None for a slide."""
+    j = d.joints
+    pattern = {"RRR": (0, 1, 2), "RRP": (0, 1, None), "RPR": (0, None, 1),
+               "PRP": (None, 0, None), "RPP": (0, None, None)}[d.kind]
+    return tuple(None if i is None else j[i] for i in pattern)
+
+
+def _collinear(pts) -> bool:
+    a = np.asarray(pts[0])
+    far = max(pts, key=lambda q: math.dist(pts[0], q))
+    u = np.asarray(far) - a
+    n = float(np.hypot(*u))
+    if n == 0:
+        return True
+    return all(abs(float(np.cross(u, np.asarray(q) - a))) / n < 0.05 for q in pts)
+
+
+def _span(pts) -> tuple[Pt, Pt]:
+    best = max(((p, q) for p in pts for q in pts), key=lambda pq: math.dist(*pq))
+    return best
+
+
+def slider_point(mech, kin, k: int, slider: str, G, u) -> str | None:
+    """The point of ``slider`` nearest its guide (G, u) at position k: where its block sits."""
+    names = [p for p in mech.points_of(slider) if p in kin.pos.points]
+    if not names:
+        return None
+    n = np.array([-u[1], u[0]], float)
+    return min(names, key=lambda p: abs(float(np.dot(kin.pos.points[p][k] - G, n))))
+
+
+def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
+    """Corners of the block of ``slider`` on its guide at position k (paper mm)."""
+    name = slider_point(mech, kin, k, slider, G, u)
+    if name is None:
+        return None
+    u = np.asarray(u, float)
+    c = np.asarray(P(kin.pos.points[name][k]))
+    du = np.array([u[0], -u[1]])  # paper direction (y flipped)
+    dn = np.array([-du[1], du[0]])
+    hl, hw = SLIDER[0] / 2, SLIDER[1] / 2
+    return tuple(tuple(map(float, c + sx * hl * du + sy * hw * dn))
+                 for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1)))
+
+
+
+
+def link_items(mech, kin, k: int, P, style: Style, ident: str, layer: str,
+               slots: dict[str, tuple[float, float]] | None = None) -> list[Item]:
+    """The moving links at position k: a line per two-point (or straight) link, a closed
+    outline for a link with more points; centres of mass are not corners.
+
+    A link carrying a slide (a rocker, a yoke: ``slots`` from
+    :func:`graphplan.project.scales.slot_ranges`) is drawn with its slot: the slot's axis over the
+    block's travel and the link's own points, and a tie from a point off the axis (a
+    pivot offset from the slot) to it. A slider is drawn as its block (:func:`_slider_block`).
+    """
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+    items: list[Item] = []
+    slots = slots or {}
+    for link in mech.moving_links:
+        names = _link_outline(mech, link, centres)
+        ident_link = f"{ident}-link-{link}"
+        if len(names) >= 2:
+            pts = [P(kin.pos.points[p][k]) for p in names]
+            if len(pts) == 2 or _collinear(pts):
+                a, b = _span(pts)
+                items.append(Line(a, b, style, layer=layer, id=ident_link))
+            else:
+                items.append(Polyline(tuple(pts), style, True, layer=layer, id=ident_link))
+            ident_link += "-slot"
+        for key, (t0, t1) in slots.items():
+            if key.split("/")[1] != link:
+                continue
+            G = np.asarray(kin.pos.guides[key][0][k], float)
+            u = np.asarray(kin.pos.guides[key][1][k], float)
+            own = [float(np.dot(kin.pos.points[p][k] - G, u)) for p in mech.points_of(link)]
+            kl = P.kl
+            lo = min([t0 - SLOT_OVER * kl, *own])
+            hi = max([t1 + SLOT_OVER * kl, *own])
+            items.append(Line(P(G + lo * u), P(G + hi * u), style, layer=layer,
+                              id=f"{ident_link}-{key.split('/')[0]}"))
+            for p in mech.points_of(link):
+                q = kin.pos.points[p][k]
+                foot = G + float(np.dot(q - G, u)) * u
+                if p not in centres and math.dist(P(q), P(foot)) > 0.5:
+                    items.append(Line(P(q), P(foot), style, layer=layer,
+                                      id=f"{ident_link}-{key.split('/')[0]}-{p}"))
+    return items
+
+
+def _rotation_radius(crank, kl: float) -> float:
+    return max(6.0, min(12.0, 0.4 * crank.length / kl))
+
+
+def turning_arrow(c: Pt, r: float, start_deg: float, sweep_deg: float, ccw: bool,
+                  head_deg: float, *, layer: str, ident: str) -> list[Item]:
+    """A turning arrow: an arc about ``c`` from ``start_deg`` over ``sweep_deg`` (as seen)
+    with its head at the counter-clockwise end when ``ccw``, else at the start.
+
+    Model angles are sheet angles (the plans are only flipped in y, so counter-clockwise
+    stays counter-clockwise). Ids ``{ident}-arc`` and ``{ident}-head``.
+    """
+    a0, a1 = start_deg, start_deg + sweep_deg
+    tip_deg, back = (a1, -1.0) if ccw else (a0, 1.0)
+    return [Arc(c, r, a0, a1, THIN, layer=layer, id=f"{ident}-arc"),
+            Arrow(arc_point(c, r, tip_deg + back * head_deg), arc_point(c, r, tip_deg), THIN,
+                  3.0, 1.0, layer=layer, id=f"{ident}-head")]
+
+
+def _rotation_arrow(c: Pt, crank, phi0: float, kl: float) -> list[Item]:
+    """The sense of rotation of the crank: a 70° arc opposite its first position."""
+    return turning_arrow(c, _rotation_radius(crank, kl), math.degrees(phi0) + 145.0, 70.0,
+                         crank.omega > 0, 25.0, layer="position_plan", ident="pp-omega")
+
+
+def _rotation_label_anchor(c: Pt, crank, phi0: float, kl: float) -> Pt:
+    return arc_point(c, _rotation_radius(crank, kl) + 1.0, math.degrees(phi0) + 180.0)
+
+
+def _support(c: Pt, ident: str) -> list[Item]:
+    """Fixed pivot of the frame: a triangle under the joint and a hatched base."""
+    x, y = c
+    tri = ((x, y), (x - 5.0, y + 8.0), (x + 5.0, y + 8.0))
+    base = ((x - 8.0, y + 8.0), (x + 8.0, y + 8.0), (x + 8.0, y + 11.0), (x - 8.0, y + 11.0))
+    return [Polyline(tri, THIN, True, layer="position_plan", id=f"{ident}-tri"),
+            Line(base[0], base[1], MAIN, layer="position_plan", id=f"{ident}-base"),
+            Hatch(base, 2.0, 45.0, layer="position_plan", id=f"{ident}-hatch"),
+            Circle(c, JOINT_R, WHITE_FILL, layer="position_plan", id=f"{ident}-joint")]
+
+
+# ------------------------------------------------------------------------- plans
+
+
+PLAN_LAYERS = {"velocity": "velocity_plan", "acceleration": "acceleration_plan",
+               "force": "force_plan", "lever": "force_plan"}
+
+
+def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
+               segment_labels: bool = False) -> list[Item]:
+    """A plan centred in its cell, with its caption and letters.
+
+    Any construction with ``kind``, ``points`` and ``steps`` is drawn: velocity and
+    acceleration plans, force plans, Zhukovsky's lever. With ``segment_labels`` every
+    vector is also named at its middle (a force plan names its forces, not only its
+    vertices).
+    """
+    layer = PLAN_LAYERS[getattr(plan, "kind", "lever")]
+    pts = np.array(list(plan.points.values()))
+    elems = [e for s in plan.steps for e in s.elements]
+    ends = np.array([q for e in elems if e.kind != "point" for q in (e.start, e.end)] or pts)
+    allp = np.vstack([pts, ends])
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    cx = (cell.x0 + cell.x1) / 2
+    cy = (cell.y0 + CAPTION + cell.y1) / 2
+    mid = (lo + hi) / 2
+
+    def to(q) -> Pt:
+        return (cx + float(q[0] - mid[0]), cy - float(q[1] - mid[1]))
+
+    items: list[Item] = []
+    drawn: set[str] = set()
+    for n, e in enumerate(elems):
+        if e.kind == "line":
+            items.append(Line(to(e.start), to(e.end), THIN, layer="construction",
+                              id=f"{ident}-l{n}"))
+        elif e.kind == "segment":
+            key = e.name
+            if key in drawn or math.dist(e.start, e.end) < 1e-9:
+                continue
+            drawn.add(key)
+            style = MEDIUM if e.role in ("absolute", "relative", "load", "reaction",
+                                         "force") else THIN
+            items.append(Arrow(to(e.start), to(e.end), style, 3.0, 1.0,
+                               layer="dimensions" if e.role == "arm" else layer,
+                               id=f"{ident}-{e.name}"))
+    reqs = [LabelRequest(to(q), _label(name), 3.5, group=ident) for name, q in plan.points.items()]
+    if segment_labels:
+        named = {e.name: e for e in elems if e.kind == "segment"
+                 and e.role not in ("absolute", "arm") and math.dist(e.start, e.end) > 1e-9}
+        reqs += [LabelRequest(to(((e.start[0] + e.end[0]) / 2, (e.start[1] + e.end[1]) / 2)),
+                              _label(name), 3.5, group=f"{ident}-seg")
+                 for name, e in named.items()]
+    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),
+                     (cell.x0, cell.y1)]).exterior.buffer(0.5)]
+    items += place_labels(reqs, obstacles, layer=layer, id_prefix=f"{ident}-t", merge_mm=1.0,
+                          keep_out=keep)
+    items.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
+                                layer="text", id=f"{ident}-caption"))
+    return items
+
+
+def ill_mark_items(plan, cell: Rect, ident: str, lang: str) -> list[Item]:
+    """The draftsman's mark of an ill-conditioned plan, under its caption.
+
+    A plan whose lines meet at less than :data:`graphplan.plans.conditioning.ILL_ANGLE_DEG` is
+    marked ``lines meet at 1.3°, reading ±11 mm`` (:meth:`Intersection.note`); a
+    well-conditioned plan gets nothing.
+    """
+    from ..plans import ill_conditioned
+
+    ill = ill_conditioned(plan)
+    if not ill:
+        return []
+    return [text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION + 1.0), ill[0].note(lang),
+                           2.5, layer="text", id=f"{ident}-ill")]
+
+
+# ------------------------------------------------------------------------ the sheet
+
+
+def title_block(mech, lang: str, sheet_no: int, what: str) -> TitleBlock:
+    """Form 1 filled from the variant's ``[title_block]``."""
+    tb = mech.settings.get("title_block", {})
+    title = " ".join(s for s in (tb.get("title", mech.name), ".", what) if s).replace(" .", ".")
+    org = " ".join(s for s in (tb.get("school", ""), tb.get("group", "")) if s)
+    return TitleBlock(
+        designation=str(tb.get("designation", "")), title=title,
+        litera=str(tb.get("litera", "У")), scale=str(tb.get("scale", "")),
+        sheet=int(tb.get("sheet", sheet_no)), sheets=tb.get("sheets"),
+        organisation=org, mass=str(tb.get("mass", "")),
+        signatures=signatures(str(tb.get("author", "")), str(tb.get("checker", "")),
+                              date=str(tb.get("date", ""))),
+    )
+
+
+def scales_items(sc: Sheet1Scales, lang: str) -> list[Item]:
+    r = sc.layout.scales
+    items: list[Item] = [Text((r.x0, r.y0 + 5.0), WORDS[lang]["scales"], 5.0, layer="text",
+                              id="scales-title")]
+    for i, s in enumerate((sc.kl, sc.kv, sc.ka)):
+        text = _units(s.basis, lang)
+        items.append(Text((r.x0, r.y0 + 12.0 + 6.5 * i), text, 3.5, layer="text",
+                          id=f"scales-{s.symbol}"))
+    return items
+
+
+def _units(s: str, lang: str) -> str:
+    """Units as lettered on a Russian sheet (м/мм, (м/с)/мм, …)."""
+    if lang != "ru":
+        return s
+    return (s.replace("(m/s²)/mm", "(м/с²)/мм").replace("(m/s)/mm", "(м/с)/мм")
+            .replace("m/mm", "м/мм"))
+
+
+def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
+                     diagrams: bool = True, page: Page | None = None) -> Sheet:
+    """Sheet 1 of the project for ``analysis`` (see the module docstring).
+
+    Parameters
+    ----------
+    analysis : Analysis
+    lang : {"ru", "en"}
+        Language of the lettering (the title block's printed labels stay Russian).
+    precision : float
+        Reading precision of the plans, mm (0: exact constructions).
+    diagrams : bool
+        Draw the kinematic diagrams (matplotlib).
+    page : Page, optional
+        A1 by default, or the variant's ``drawing.format``.
+    """
+    mech, kin = analysis.mech, analysis.kin
+    sc = sheet_scales(mech, kin, page)
+    w = WORDS[lang]
+    items: list[Item] = []
+    items += position_plan_items(analysis, sc, lang)
+    reader = Reader(precision)
+    n = len(sc.plans)
+    for c, k in enumerate(sc.plans):
+        vp = velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
+        ap = acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp, reader)
+        lab = kin.labels[k]
+        items += plan_items(vp, sc.layout.cells[c], f"{w['velocity']}, {w['pos']} {lab}",
+                            f"vp{k}")
+        items += plan_items(ap, sc.layout.cells[n + c], f"{w['acceleration']}, {w['pos']} {lab}",
+                            f"ap{k}")
+        items += ill_mark_items(vp, sc.layout.cells[c], f"vp{k}", lang)
+        items += ill_mark_items(ap, sc.layout.cells[n + c], f"ap{k}", lang)
+    items += scales_items(sc, lang)
+    items += table_block(analysis, sc, lang)
+    if diagrams:
+        items += diagram_block(analysis, sc, lang)
+    return Sheet(sc.layout.page, tuple(items), title_block(mech, lang, 1, w["sheet"]))
+
+
+def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
+    """The table of the plans (main values of every position) in the bottom strip."""
+    from ..reports import summary_rows
+
+    def notes(n, m):
+        if lang == "ru":
+            return [f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)"]
+        return [f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)"]
+
+    header, rows = summary_rows(analysis, lang)
+    r = sc.layout.table
+    return titled_table(r.x0, r.y0, r.width, WORDS[lang]["table"], header, rows,
+                        ident="plans-table", title_id="table-title", notes=notes)
+
+
+def diagram_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
+    """The kinematic diagrams s(φ), v(φ), a(φ) (matplotlib, embedded as vector graphics)."""
+    from .figures import diagrams_items, fit_diagrams
+
+    r = sc.layout.diagrams
+    d = fit_diagrams(analysis.mech, analysis.cycle, r.width, r.height)
+    return [diagrams_items(d, (r.x0, r.y0), r.width, r.height, lang, id="kin-diagrams")]
+
+
+__all__ = ["kinematics_sheet", "plan_items", "position_plan_items", "title_block"]
+

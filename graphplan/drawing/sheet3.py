@@ -1,0 +1,364 @@
+"""Sheet 3, dynamics of the machine unit, laid out as a ТММ sheet shows it (method B.4):
+
+* on the left, one under the other at one Kφ: Mс(φ) with the mean ordinates, the pole P
+  and its rays, the line Mд; Aс(φ) by chords and Aд(φ); ΔT(φ) = Aд + Aс;
+* beside ΔT(φ) and level with it, Wittenbauer's energy–mass diagram ΔT(JII) with its
+  tangents at ψmax, ψmin (tens of degrees: KT and KJ are chosen for it, see
+  :func:`graphplan.dynamics.machine.energy_mass_scales`), k, l and kl; above it JII(φ)
+  turned 90°;
+* on the right: the check ω(φ), the flywheel (front view and section, dimensioned after
+  GOST 2.307: outer and inner diameters and the width in whole mm, the axis drawn), the
+  results in the order of the calculation, and the table of values at the positions.
+
+One notation, the method's: J for moments of inertia (Jпр reduced, JI its constant
+part, JII the variable one, Jм the flywheel, Jкр the crank, Jрот·u² the rotor reduced
+to the crank); Pс = Mд·ω1 the mean power of the resistance, Pдв.тр = Pс/η the power
+the motor must give. Sheet 3 is A1 whatever ``drawing.format`` says for sheets 1 and 2.
+The diagrams are the sheet's own items (:mod:`graphplan.drawing.dynamics_figures`); the
+numbers come from :func:`graphplan.dynamics.machine.machine_unit`, the same as in
+``dynamics.*.md`` and the JSON report.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..dynamics import MachineUnit, machine_unit
+from ..errors import LayoutError
+from ..project import CAPTION, GAP, fit_columns, titled_table
+from ..reports import T as TABLE_WORDS
+from ..reports import position_rows
+from ..units import fmt
+from .mpl_items import decimal_comma
+from .sheet import (
+    MAIN,
+    THIN,
+    Arrow,
+    Circle,
+    Hatch,
+    Item,
+    Line,
+    Page,
+    Polyline,
+    Rect,
+    Sheet,
+    Style,
+    Text,
+    table_items,
+)
+from .sheet1 import title_block
+
+WORDS = {
+    "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",
+           "disc": "диск", "results": "Результаты", "table": "Значения в положениях",
+           "mass": "масса", "speed": "окружная скорость", "section": "А–А"},
+    "en": {"sheet": "Dynamics", "flywheel": "Flywheel", "rim": "rim", "disc": "disc",
+           "results": "Results", "table": "Values at the positions", "mass": "mass",
+           "speed": "rim speed", "section": "A–A"},
+}
+RESULT_H = 3.5  #: lettering of the results, mm
+LINE = 6.0  #: line pitch of the results, mm
+AXIS = Style(0.25, (15.0, 3.0, 1.0, 3.0))  #: thin dash-dot: axes and centre lines
+DIM = THIN  #: dimension and extension lines
+ARROW_L, ARROW_W = 3.5, 1.0  #: dimension arrows, mm (GOST 2.307: 2.5…4 long)
+
+
+def results_lines(u: MachineUnit, lang: str) -> list[str]:
+    """The results of sheet 3, one line each, in the order of the calculation."""
+    fw, mc = u.flywheel, u.motor
+    ru = lang == "ru"
+    if mc is None:  # driven by its loads (an engine): the constant moment is the consumer's
+        lines = _engine_lines(u, lang)
+        return [decimal_comma(s) for s in lines] if ru else lines
+    mo = mc.motor
+    kg_m2 = "кг·м²" if ru else "kg·m²"
+    rot = ("Jрот нет в каталоге" if ru else "Jрот not in the catalogue") \
+        if mo.inertia_kg_m2 is None else f"Jрот·u² = {fmt(fw.I_rotor, 4)} {kg_m2}"
+    kw = "кВт" if ru else "kW"
+    lines = [
+        f"ω1 = {fmt(fw.omega, 4)} {'рад/с' if ru else 'rad/s'},  δ = {fw.delta:g},  "
+        f"η = {u.efficiency:g}",
+        f"Mд = {fmt(fw.M_d, 5)} {'Н·м' if ru else 'N·m'} "
+        f"({'графически' if ru else 'graphical'} {fmt(fw.work.M_d_graph, 5)}, "
+        f"{(fw.work.M_d_graph / fw.M_d - 1) * 100:+.2f} %)",
+        f"Pс = Mд·ω1 = {fmt(fw.P_c / 1000, 4)} {kw};  "
+        + (f"Pдв.тр = Pс/η = {fmt(u.power_W / 1000, 4)} {kw}" if ru
+           else f"Preq = Pс/η = {fmt(u.power_W / 1000, 4)} {kw}"),
+        f"{'Двигатель' if ru else 'Motor'} {mo.type}: {fmt(mo.power_kw)} {kw}, "
+        f"{fmt(mo.rated_rpm)} {'об/мин' if ru else 'rpm'}"
+        + (f", Mп/Mн = {fmt(mo.start_torque_ratio)}" if mo.start_torque_ratio else "")
+        + (f", Mmax/Mн = {fmt(mo.max_torque_ratio)}" if mo.max_torque_ratio else ""),
+        f"u = nдв/n1 = {fmt(mo.rated_rpm)}/{fmt(mc.crank_rpm, 4)} = {mc.u:.2f};  {rot}",
+        f"ΔTmax − ΔTmin = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
+        f"JI = kl·KT/(ω1²·δ) = {fw.segment_mm:.1f}·{fmt(fw.KT, 4)}/({fmt(fw.omega, 4)}²·"
+        f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
+        f"Jм = JI − Jкр − Jрот·u² = {fmt(fw.I_m, 5)} {kg_m2} "
+        f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
+        f"{fw.difference_pct:+.2f} %)",
+        f"δ {'при моделировании' if ru else 'simulated'} = {u.simulation.delta_actual:.4f} "
+        f"({u.delta_error_pct:+.2f} %)",
+    ]
+    return [decimal_comma(s) for s in lines] if ru else lines
+
+
+def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
+    """Sheet 3's results of a machine its loads drive (an engine): Mс constant, no motor."""
+    fw, ru = u.flywheel, lang == "ru"
+    kg_m2 = "кг·м²" if ru else "kg·m²"
+    cyc = f"{math.degrees(u.model.period):.0f}°"
+    return [
+        f"ω1 = {fmt(fw.omega, 4)} {'рад/с' if ru else 'rad/s'},  δ = {fw.delta:g}",
+        f"Mс = −Aд({cyc})/{'4π' if u.model.period > 7 else '2π'} = {fmt(fw.M_d, 5)} "
+        f"{'Н·м' if ru else 'N·m'} ({'графически' if ru else 'graphical'} "
+        f"{fmt(fw.work.M_d_graph, 5)}, {(fw.work.M_d_graph / fw.M_d - 1) * 100:+.2f} %)",
+        f"P = |Mс|·ω1·η = {fmt(u.power_W / 1000, 4)} {'кВт' if ru else 'kW'}",
+        f"ΔTmax − ΔTmin = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
+        f"JI = kl·KT/(ω1²·δ) = {fw.segment_mm:.1f}·{fmt(fw.KT, 4)}/({fmt(fw.omega, 4)}²·"
+        f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
+        f"Jм = JI − Jкр = {fmt(fw.I_m, 5)} {kg_m2} "
+        f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
+        f"{fw.difference_pct:+.2f} %)",
+        f"δ {'при моделировании' if ru else 'simulated'} = {u.simulation.delta_actual:.4f} "
+        f"({u.delta_error_pct:+.2f} %)",
+    ]
+
+
+def _scale_ratio(need: float) -> float:
+    """The smallest GOST 2.302 reduction 1:n with n ≥ need."""
+    for n in (1, 2, 2.5, 4, 5, 10, 15, 20, 25, 40, 50, 75, 100, 200, 400, 500, 800, 1000):
+        if n >= need:
+            return float(n)
+    return float(math.ceil(need / 1000.0) * 1000)
+
+
+def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]:
+    """A linear dimension between the ends p0, p1 of its dimension line (GOST 2.307).
+
+    The arrows' tips touch the extension lines at p0 and p1; the number stands above the
+    line (``side`` = +1: on the left of p0→p1, as read), parallel to it. Between ends
+    closer than two arrows the arrows are drawn outside, pointing in.
+    """
+    (x0, y0), (x1, y1) = p0, p1
+    length = math.hypot(x1 - x0, y1 - y0)
+    ux, uy = (x1 - x0) / length, (y1 - y0) / length
+    items: list[Item] = []
+    if length >= 2.5 * ARROW_L:
+        mx, my = (x0 + x1) / 2, (y0 + y1) / 2
+        items += [Arrow((mx, my), (x0, y0), DIM, ARROW_L, ARROW_W, layer="dimensions",
+                        id=f"{ident}-a"),
+                  Arrow((mx, my), (x1, y1), DIM, ARROW_L, ARROW_W, layer="dimensions",
+                        id=f"{ident}-b")]
+    else:
+        out = ARROW_L + 2.0
+        items += [Arrow((x0 - ux * out, y0 - uy * out), (x0, y0), DIM, ARROW_L, ARROW_W,
+                        layer="dimensions", id=f"{ident}-a"),
+                  Arrow((x1 + ux * out, y1 + uy * out), (x1, y1), DIM, ARROW_L, ARROW_W,
+                        layer="dimensions", id=f"{ident}-b"),
+                  Line((x0, y0), (x1, y1), DIM, layer="dimensions", id=f"{ident}-l")]
+    angle = math.degrees(math.atan2(-(y1 - y0), x1 - x0))
+    if angle <= -90.0 or angle > 90.0:  # numbers read from the bottom or the right
+        angle = (angle + 180.0) % 360.0
+        ux, uy = -ux, -uy
+    nx, ny = uy, -ux  # "above" the line as read
+    mx, my = (x0 + x1) / 2, (y0 + y1) / 2
+    gap = 0.3 * 3.5 + 0.8  # the number's descenders clear of the line
+    items.append(Text((mx + nx * gap * side, my + ny * gap * side), text, 3.5, "middle",
+                      angle % 360.0, layer="dimensions", id=f"{ident}-t"))
+    return items
+
+
+FW_ABOVE, FW_BELOW = CAPTION + 24.0, 14.0  #: the flywheel block above and below its views
+
+
+def _flywheel_scale(u: MachineUnit, width: float, height: float) -> float:
+    """GOST reduction 1:n of the flywheel's views in a box ``width`` × ``height`` mm: the
+    front view (⌀ outer) and the section (b) with its dimensions side by side."""
+    s = u.mounted
+    D_out = s.D + (s.h if s.shape == "rim" else 0.0)
+    need = max(D_out * 1000.0 / (height - FW_ABOVE - FW_BELOW),
+               (D_out + s.b) * 1000.0 / (width - 70.0))
+    return _scale_ratio(need)
+
+
+def flywheel_height(u: MachineUnit, width: float, height: float) -> float:
+    """Height the flywheel block takes at the scale it gets in a box of that size, mm."""
+    s = u.mounted
+    D_out = s.D + (s.h if s.shape == "rim" else 0.0)
+    return FW_ABOVE + D_out * 1000.0 / _flywheel_scale(u, width, height) + FW_BELOW
+
+
+def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
+    """The flywheel: front view and section А–А at a GOST scale; ⌀ outer, ⌀ inner (rim)
+    and the width b in whole mm with extension lines from the outline; the axis of
+    rotation and the centre lines dash-dot."""
+    w = WORDS[lang]
+    ru = lang == "ru"
+    s = u.mounted
+    shaft = TABLE_WORDS[lang]["shaft_" + u.shaft]
+    title = (f"{w['flywheel']} ({w[s.shape]}, {shaft}), {w['mass']} "
+             f"{fmt(s.mass, 4)} {'кг' if ru else 'kg'}")
+    items: list[Item] = [Text((box.x0, box.y0 + 5.0), decimal_comma(title) if ru else title,
+                              5.0, layer="text", id="s3-fw-title")]
+    D_out = s.D + (s.h if s.shape == "rim" else 0.0)
+    D_in = s.D - s.h if s.shape == "rim" else 0.0
+    n = _flywheel_scale(u, box.width, box.height)
+    k = 1000.0 / n  # mm of paper per m
+    R_out, R_in = D_out / 2 * k, D_in / 2 * k
+    hub, bore = 0.2 * R_out, 0.1 * R_out
+    b = s.b * k
+    cy = box.y0 + FW_ABOVE + R_out
+    cx = box.x0 + 6.0 + R_out
+    lay = "diagrams"
+    items.append(Circle((cx, cy), R_out, MAIN, layer=lay, id="s3-fw-outer"))
+    if s.shape == "rim":
+        items.append(Circle((cx, cy), R_in, MAIN, layer=lay, id="s3-fw-inner"))
+    items.append(Circle((cx, cy), hub, MAIN, layer=lay, id="s3-fw-hub"))
+    items.append(Circle((cx, cy), bore, MAIN, layer=lay, id="s3-fw-bore"))
+    items.append(Line((cx - R_out - 4, cy), (cx + R_out + 4, cy), AXIS, layer=lay,
+                      id="s3-fw-axis-h"))
+    items.append(Line((cx, cy - R_out - 4), (cx, cy + R_out + 4), AXIS, layer=lay,
+                      id="s3-fw-axis-v"))
+    # section А–А: the rim (or the disc), the web and the hub cut, hatched
+    sx = cx + R_out + 22.0
+    web = max(0.3 * b, 1.0)
+    hb = max(0.8 * b, 4.0)
+    xm = sx + b / 2
+    if s.shape == "rim":
+        outline = [(sx, cy - R_out), (sx + b, cy - R_out), (sx + b, cy - R_in),
+                   (xm + web / 2, cy - R_in), (xm + web / 2, cy - hub),
+                   (xm + hb / 2, cy - hub), (xm + hb / 2, cy - bore),
+                   (xm - hb / 2, cy - bore), (xm - hb / 2, cy - hub),
+                   (xm - web / 2, cy - hub), (xm - web / 2, cy - R_in), (sx, cy - R_in)]
+    else:
+        outline = [(sx, cy - R_out), (sx + b, cy - R_out), (sx + b, cy - hub),
+                   (xm + hb / 2, cy - hub), (xm + hb / 2, cy - bore),
+                   (xm - hb / 2, cy - bore), (xm - hb / 2, cy - hub), (sx, cy - hub)]
+    lower = [(x, 2 * cy - y) for x, y in outline]
+    for i, poly in enumerate((outline, lower)):
+        items.append(Polyline(tuple(poly), MAIN, True, layer=lay, id=f"s3-fw-sec{i}"))
+        items.append(Hatch(tuple(poly), 2.0, 45.0, layer=lay, id=f"s3-fw-hatch{i}"))
+    right = sx + max(b, xm - sx + hb / 2)
+    items.append(Line((sx - 6.0, cy), (right + 3.0, cy), AXIS, layer=lay,
+                      id="s3-fw-sec-axis"))
+    items.append(Text((xm, cy - R_out - 19.0), w["section"], 3.5, "middle", layer="text",
+                      id="s3-fw-section"))
+    # dimensions, whole mm: ⌀ inner nearer the section, ⌀ outer outside it, b on top
+    dims = [(R_out, D_out, "out")] + ([(R_in, D_in, "in")] if s.shape == "rim" else [])
+    dims.sort()
+    for i, (R, D, name) in enumerate(dims):
+        xd = right + 10.0 + 9.0 * i
+        items.append(Line((sx + b, cy - R), (xd + 2.0, cy - R), DIM, layer="dimensions",
+                          id=f"s3-fw-ext-{name}-t"))
+        items.append(Line((sx + b, cy + R), (xd + 2.0, cy + R), DIM, layer="dimensions",
+                          id=f"s3-fw-ext-{name}-b"))
+        items += dimension((xd, cy + R), (xd, cy - R), f"⌀{round(D * 1000)}",
+                           f"s3-fw-dim-{name}")
+    yd = cy - R_out - 7.0
+    items.append(Line((sx, cy - R_out), (sx, yd - 2.0), DIM, layer="dimensions",
+                      id="s3-fw-ext-b0"))
+    items.append(Line((sx + b, cy - R_out), (sx + b, yd - 2.0), DIM,
+                      layer="dimensions", id="s3-fw-ext-b1"))
+    items += dimension((sx, yd), (sx + b, yd), f"{round(s.b * 1000)}", "s3-fw-dim-b")
+    note = (f"М 1:{fmt(n)};  {w['speed']} v = ω·D/2 = {fmt(s.speed, 3)} м/с"
+            + ("" if s.speed_ok else " > 40 м/с!"))
+    items.append(Text((box.x0, cy + R_out + 9.0), decimal_comma(note) if ru else note, 3.5,
+                      layer="text", id="s3-fw-note"))
+    # the flywheel's data beside its views, where there is room
+    kg, mm_ = ("кг", "мм") if ru else ("kg", "mm")
+    data = [f"Jм = {fmt(s.inertia, 5)} {'кг·м²' if ru else 'kg·m²'}",
+            f"Dср = {round(s.D * 1000)} {mm_}" if s.shape == "rim" else
+            f"D = {round(s.D * 1000)} {mm_}",
+            f"b = {round(s.b * 1000)} {mm_},  h = {round(s.h * 1000)} {mm_}"
+            if s.shape == "rim" else f"b = {round(s.b * 1000)} {mm_}",
+            f"m = {fmt(s.mass, 4)} {kg},  ρ = {fmt(u_density(u))} {kg}/м³",
+            f"{'материал: сталь' if ru else 'material: steel'}"
+            if u_density(u) == 7800.0 else ""]
+    x_data = right + 10.0 + 9.0 * len(dims) + 6.0
+    if box.x1 - x_data >= 60.0:
+        for i, line in enumerate(d for d in data if d):
+            items.append(Text((x_data, cy - 3.0 * LINE + i * 2 * LINE),
+                              decimal_comma(line) if ru else line, 3.5, layer="text",
+                              id=f"s3-fw-data-{i}"))
+    return items
+
+
+def u_density(u: MachineUnit) -> float:
+    """Density of the flywheel's material, kg/m³, from its mass and size: a rim
+    ``m = ρ·π·D·b·h``, a disc ``m = ρ·π·D²·b/4``."""
+    s = u.mounted
+    vol = math.pi * s.D * s.b * s.h if s.shape == "rim" else math.pi * s.D**2 * s.b / 4
+    return round(s.mass / vol, 6) if vol > 0 else 0.0
+
+
+def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
+                   unit: MachineUnit | None = None) -> Sheet:
+    """Sheet 3 of the project for ``analysis`` (see the module docstring).
+
+    Raises
+    ------
+    LayoutError
+        When the diagrams at their scales do not fit the page.
+    """
+    from .dynamics_figures import (
+        energy_mass_items,
+        energy_mass_width,
+        omega_items,
+        work_items,
+    )
+
+    mech = analysis.mech
+    page = page or Page("A1")
+    u = unit or machine_unit(analysis)
+    w = WORDS[lang]
+    f = page.frame
+    tb = page.title_block_rect
+    x0, y0 = f.x0 + 4.0, f.y0 + 18.0
+    items: list[Item] = []
+    work, geo = work_items(u, x0, y0, lang)
+    xB = geo["right"] + 4.0
+    wB = energy_mass_width(u)
+    xC = xB + wB + GAP
+    if geo["bottom"] > f.y1 - 2.0 or f.x1 - 4.0 - xC < 200.0:
+        raise LayoutError(f"sheet 3: the diagrams at their scales need {xC - x0:.0f}×"
+                          f"{geo['bottom'] - y0:.0f} mm; the {page.format} sheet has no room "
+                          "(choose fewer dynamics.intervals)")
+    items += work
+    top = f.y0 + 4.0  # right of graph 26 the columns start at the frame
+    items += energy_mass_items(u, xB, top, geo, lang)
+    right = Rect(xC, top, f.x1 - 4.0, tb.y0 - GAP)
+    rows = position_rows(u, lang)
+    header = list(TABLE_WORDS[lang]["cols"])
+    table_h = CAPTION + 7.0 * (len(rows) + 1)
+    lines = results_lines(u, lang)
+    results_h = CAPTION + 3.0 + len(lines) * LINE
+    free = right.height - table_h - results_h - 3 * GAP
+    if free < 150.0:
+        raise LayoutError("sheet 3: no room for ω(φ) and the flywheel beside the diagrams")
+    fw_h = flywheel_height(u, right.width, free - 80.0)
+    om_h = min(free - fw_h, 170.0)
+    items += omega_items(u, Rect(right.x0, right.y0, right.x1, right.y0 + om_h), lang)
+    fw_box = Rect(right.x0, right.y0 + om_h + GAP, right.x1, right.y0 + om_h + GAP + fw_h)
+    items += _flywheel_items(u, fw_box, lang)
+    ty = right.y1 - table_h  # the table on the title block, the results above it
+    ry = ty - GAP - results_h
+    items.append(Text((right.x0, ry + 5.0), w["results"], 5.0, layer="text",
+                      id="s3-results-title"))
+    for i, line in enumerate(lines):
+        items.append(Text((right.x0, ry + CAPTION + 5.0 + i * LINE), line, RESULT_H,
+                          layer="text", id=f"s3-result-{i}"))
+    fit = fit_columns(header, rows, right.width)
+    if fit.shown == fit.total:  # the columns share the whole width of the place
+        stretch = right.width / sum(fit.widths)
+        items.append(Text((right.x0, ty + 5.0), w["table"], 5.0, layer="text",
+                          id="s3-table-title"))
+        items += table_items((right.x0, ty + CAPTION), [c * stretch for c in fit.widths],
+                             fit.rows, fit.header, 3.5, id="s3-table")
+    else:
+        items += titled_table(
+            right.x0, ty, right.width, w["table"], header, rows,
+            ident="s3-table", title_id="s3-table-title",
+            notes=lambda n, m: [f" ({n}/{m}, dynamics.{lang}.md)"])
+    return Sheet(page, tuple(items), title_block(mech, lang, 3, w["sheet"]))
+
+
+__all__ = ["dimension", "dynamics_sheet", "results_lines"]

@@ -1,0 +1,975 @@
+"""Read a variant file (TOML) into a validated :class:`~graphplan.model.mechanism.Mechanism`.
+
+Every error is an :class:`~graphplan.errors.InputError` whose one-line message
+names the file, the key path and what was expected, e.g.
+``examples/press.toml: dyads[0].length: must be > 0 (got -200)``.
+Units are converted here, at the edge: lengths by ``variant.length_unit``
+(``"m"`` or ``"mm"``), angles from degrees to radians. The key reference is
+``docs/variant-format.md``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from ..files import decode_text
+from .mechanism import (
+    DYAD_KINDS,
+    JOINT_COUNT,
+    NEW_JOINTS,
+    Crank,
+    Dyad,
+    ExtraPosition,
+    Guide,
+    LinkProps,
+    Mechanism,
+    Output,
+    PointOnLink,
+    Positions,
+    Resistance,
+)
+
+LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
+MAX_LENGTH_M = 1000.0
+"""No machine of a TMM project is a kilometre across; larger numbers are typos."""
+MAX_RPM = 1e5
+MAX_LOAD = 1e12
+"""No load of a TMM variant reaches 10¹² N or N·m; larger numbers are typos."""
+PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "atm": 101325.0,
+                  "kgf/cm2": 98066.5}
+"""Units of the pressures of an indicator diagram, in Pa (kgf/cm2: кгс/см², the old at)."""
+LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense", "over",
+             "stroke", "strokes", "travel", "angle", "travel_link", "working", "phase",
+             "bore", "p_max", "p_ambient", "pressure_unit"}
+STROKE_SETS = ("working", "idle", "both")
+NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_']*")  # used with fullmatch: no trailing newline
+LINK_RE = re.compile(r"[0-9]{1,3}")
+
+# Sections and keys each section accepts. Later stages (drawing, kinetostatics,
+# dynamics, title block) keep their settings here so that a typo is caught at load.
+SECTIONS: dict[str, set[str] | None] = {
+    "variant": {"name", "length_unit", "description"},
+    "frame": {"link", "points"},
+    "crank": {"link", "joints", "length", "rpm", "omega", "direction", "mass", "weight",
+              "inertia", "centre"},
+    "dyads": None,
+    "points": None,
+    "links": None,
+    "gravity": {"enabled", "g", "angle"},
+    "loads": None,
+    "positions": {"count", "first", "number_from", "extra", "cycle"},
+    "output": {"link", "working"},
+    "kinetostatics": {"neglect_below", "inertia", "shift_inertia_force", "positions"},
+    "dynamics": {
+        "delta",
+        "efficiency",
+        "crank_inertia",
+        "flywheel",
+        "grid",
+        "intervals",
+        "motor_series",
+        "motor_speed",
+    },
+    "drawing": {"format", "Kl", "Kv", "Ka", "Kp", "reading_mm", "language", "positions"},
+    "title_block": {
+        "title",
+        "designation",
+        "author",
+        "checker",
+        "teacher",
+        "group",
+        "school",
+        "sheet",
+        "sheets",
+        "date",
+        "litera",
+        "mass",
+        "scale",
+    },
+}
+
+
+class _Reader:
+    """Typed access to a TOML table that reports errors with the file and key path."""
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, path: str, message: str) -> InputError:
+        return InputError(one_line(f"{self.source}: {path}: {message}"))
+
+    def table(self, value: Any, path: str) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(path, f"expected a table (got {_typename(value)})")
+        return value
+
+    def keys(self, table: dict, path: str, allowed: set[str], required: set[str] = frozenset()):
+        for k in table:
+            if k not in allowed:
+                hint = ", ".join(sorted(allowed))
+                raise self.fail(_join(path, k), f"unknown key (expected one of: {hint})")
+        for k in sorted(required):
+            if k not in table:
+                raise self.fail(_join(path, k), "missing required key")
+
+    def number(self, value: Any, path: str, *, positive=False, nonneg=False, lo=None, hi=None):
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise self.fail(path, f"expected a number (got {_typename(value)} {value!r})")
+        try:
+            x = float(value)
+        except OverflowError:
+            raise self.fail(path, f"expected a finite number (got an integer of "
+                                  f"{len(str(abs(value)))} digits)") from None
+        if not math.isfinite(x):
+            raise self.fail(path, f"expected a finite number (got {value!r})")
+        if positive and not x > 0:
+            raise self.fail(path, f"must be > 0 (got {value!r})")
+        if nonneg and x < 0:
+            raise self.fail(path, f"must be >= 0 (got {value!r})")
+        if lo is not None and x < lo:
+            raise self.fail(path, f"must be >= {lo} (got {value!r})")
+        if hi is not None and x > hi:
+            raise self.fail(path, f"must be <= {hi} (got {value!r})")
+        return x
+
+    def integer(self, value: Any, path: str, lo: int, hi: int) -> int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise self.fail(path, f"expected a whole number (got {_typename(value)} {value!r})")
+        if not lo <= value <= hi:
+            raise self.fail(path, f"must be from {lo} to {hi} (got {value!r})")
+        return int(value)
+
+    def string(self, value: Any, path: str, choices=None) -> str:
+        if not isinstance(value, str):
+            raise self.fail(path, f"expected a string (got {_typename(value)} {value!r})")
+        if choices is not None and value not in choices:
+            raise self.fail(path, f"expected one of {', '.join(map(repr, choices))} (got {value!r})")
+        return value
+
+    def name(self, value: Any, path: str) -> str:
+        s = self.string(value, path)
+        if not NAME_RE.fullmatch(s):
+            raise self.fail(path, f"expected a point name like 'A', 'S2', 'O3' (got {s!r})")
+        return s
+
+    def link(self, value: Any, path: str) -> str:
+        if isinstance(value, int) and not isinstance(value, bool):
+            value = str(value)
+        s = self.string(value, path)
+        if not LINK_RE.fullmatch(s):
+            raise self.fail(path, f"expected a link number like \"2\" (got {s!r})")
+        return s
+
+    def boolean(self, value: Any, path: str) -> bool:
+        if not isinstance(value, bool):
+            raise self.fail(path, f"expected true or false (got {_typename(value)} {value!r})")
+        return value
+
+    def array(self, value: Any, path: str, length: int | None = None, minlen: int = 0) -> list:
+        if not isinstance(value, list):
+            raise self.fail(path, f"expected an array (got {_typename(value)})")
+        if length is not None and len(value) != length:
+            raise self.fail(path, f"expected {length} items (got {len(value)})")
+        if len(value) < minlen:
+            raise self.fail(path, f"expected at least {minlen} items (got {len(value)})")
+        return value
+
+    def xy(self, value: Any, path: str, unit: float) -> tuple[float, float]:
+        items = self.array(value, path, 2)
+        lim = MAX_LENGTH_M / unit
+        return (
+            self.number(items[0], f"{path}[0]", lo=-lim, hi=lim) * unit,
+            self.number(items[1], f"{path}[1]", lo=-lim, hi=lim) * unit,
+        )
+
+    def length(self, value: Any, path: str, unit: float, *, signed: bool = False) -> float:
+        """A length in the variant's unit, converted to metres, at most 1 km."""
+        lim = MAX_LENGTH_M / unit
+        if signed:
+            return self.number(value, path, lo=-lim, hi=lim) * unit
+        return self.number(value, path, positive=True, hi=lim) * unit
+
+
+_CONTROL = re.compile(r"[\x00-\x1f\x7f\u2028\u2029\x85]")
+
+
+def one_line(text: str) -> str:
+    """Escape control characters (a quoted TOML key may hold a newline) to keep one line."""
+    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
+
+
+def _typename(value: Any) -> str:
+    return {dict: "table", list: "array", str: "string", bool: "boolean"}.get(
+        type(value), type(value).__name__
+    )
+
+
+def _join(path: str, key: str) -> str:
+    return f"{path}.{key}" if path else key
+
+
+def load(path: str | Path) -> Mechanism:
+    """Load and validate a variant file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML file.
+
+    Returns
+    -------
+    Mechanism
+        In SI units (m, kg, N, rad, rad/s).
+
+    Raises
+    ------
+    InputError
+        For any problem with the file, naming the file and the key.
+    """
+    path = Path(path)
+    source = str(path)
+    from ..files import read_input
+
+    raw = read_input(path)  # a regular file, bounded in size (no FIFO, no /dev/zero)
+    return loads(decode_text(raw, source), source=source)  # BOM, CRLF, "save as UTF-8"
+
+
+def loads(text: str, source: str = "<string>") -> Mechanism:
+    """Validate a variant given as TOML text (see :func:`load`)."""
+    try:
+        data = tomllib.loads(text)
+    except (tomllib.TOMLDecodeError, ValueError) as exc:  # ValueError: e.g. a 5000-digit integer
+        raise InputError(one_line(f"{source}: not valid TOML ({exc})")) from None
+    except RecursionError:
+        raise InputError(f"{source}: not valid TOML (nested too deeply)") from None
+    mech = _build(data, _Reader(source))
+    _refuse_control_characters(data, source)
+    return mech
+
+
+def _refuse_control_characters(data, source: str, key: str = "") -> None:
+    """Every text of a variant reaches the sheets (XML), the tables and the terminal: a
+    control character (an escape sequence, U+0008 …) is refused at load, naming the key."""
+    from ..safe_text import control_character
+
+    items = data.items() if isinstance(data, dict) else enumerate(data)
+    for k, v in items:
+        where = f"{key}.{k}" if isinstance(k, str) and key else (k if isinstance(k, str)
+                                                                   else f"{key}[{k}]")
+        for text in ((k, v) if isinstance(k, str) else (v,)):
+            if isinstance(text, str):
+                bad = control_character(text)
+                if bad is not None:
+                    raise InputError(f"{source}: {where}: a control character ({bad}) in "
+                                     "the text: not allowed")
+        if isinstance(v, dict | list):
+            _refuse_control_characters(v, source, where)
+
+
+def _build(data: dict, r: _Reader) -> Mechanism:
+    r.keys(data, "", set(SECTIONS), {"frame", "crank", "dyads"})
+    for sec, allowed in SECTIONS.items():
+        if sec in data and allowed is not None:
+            r.keys(r.table(data[sec], sec), sec, allowed)
+
+    variant = r.table(data.get("variant", {}), "variant")
+    unit_name = r.string(variant.get("length_unit", "m"), "variant.length_unit", tuple(LENGTH_UNITS))
+    unit = LENGTH_UNITS[unit_name]
+    name = r.string(variant.get("name", Path(r.source).stem), "variant.name")
+
+    # -- frame
+    frame = r.table(data["frame"], "frame")
+    r.keys(frame, "frame", SECTIONS["frame"], {"link", "points"})
+    frame_link = r.link(frame["link"], "frame.link")
+    fpts = r.table(frame["points"], "frame.points")
+    frame_points: dict[str, tuple[float, float]] = {}
+    for k, v in fpts.items():
+        r.name(k, f"frame.points.{k}")
+        frame_points[k] = r.xy(v, f"frame.points.{k}", unit)
+    if not frame_points:
+        raise r.fail("frame.points", "expected at least one fixed point (the crank pivot)")
+
+    known_points: dict[str, str] = {p: frame_link for p in frame_points}  # point -> home link
+    link_points: dict[str, list[str]] = {frame_link: list(frame_points)}
+    link_order: list[str] = [frame_link]
+
+    def need_point(value: Any, path: str, *, known: bool) -> str:
+        p = r.name(value, path)
+        if known and p not in known_points:
+            have = ", ".join(known_points) or "none"
+            raise r.fail(path, f"point {p!r} is not defined before this (known: {have})")
+        if not known and p in known_points:
+            raise r.fail(path, f"point {p!r} is already defined; a new joint needs a new name")
+        return p
+
+    def need_link(value: Any, path: str, *, known: bool) -> str:
+        ln = r.link(value, path)
+        if known and ln not in link_points:
+            have = ", ".join(link_order)
+            raise r.fail(path, f"link {ln!r} is not defined before this (known: {have})")
+        return ln
+
+    # -- crank
+    crank_t = data["crank"]
+    r.keys(crank_t, "crank", SECTIONS["crank"], {"link", "joints", "length"})
+    crank_link = r.link(crank_t["link"], "crank.link")
+    if crank_link == frame_link:
+        raise r.fail("crank.link", f"the crank cannot be the frame link {frame_link!r}")
+    cj = r.array(crank_t["joints"], "crank.joints", 2)
+    pivot = need_point(cj[0], "crank.joints[0]", known=True)
+    if known_points[pivot] != frame_link:
+        raise r.fail("crank.joints[0]", f"the crank pivot {pivot!r} must be a frame point")
+    pin = need_point(cj[1], "crank.joints[1]", known=False)
+    length = r.length(crank_t["length"], "crank.length", unit)
+    if "rpm" not in crank_t and "omega" not in crank_t:
+        raise r.fail("crank.rpm", "missing required key: the crank speed, 'rpm' (n1, rpm) "
+                     "or 'omega' (ω1, rad/s)")
+    if "rpm" in crank_t and "omega" in crank_t:
+        raise r.fail("crank.omega", "give the crank speed once: either 'rpm' (n1, rpm) or "
+                     "'omega' (ω1, rad/s), not both")
+    if "rpm" in crank_t:
+        rpm = r.number(crank_t["rpm"], "crank.rpm", positive=True, hi=MAX_RPM)
+    else:  # ω1 in rad/s, as many assignment books give it; n1 = 30·ω1/π
+        w1 = r.number(crank_t["omega"], "crank.omega", positive=True,
+                      hi=MAX_RPM * math.pi / 30.0)
+        rpm = w1 * 30.0 / math.pi
+    direction = r.string(crank_t.get("direction", "ccw"), "crank.direction", ("ccw", "cw"))
+    omega = math.pi * rpm / 30.0 * (1.0 if direction == "ccw" else -1.0)
+    if "omega" in crank_t:
+        omega = math.copysign(float(crank_t["omega"]), omega)  # exactly as given
+    crank = Crank(crank_link, pivot, pin, length, rpm, omega)
+    known_points[pin] = crank_link
+    link_points[crank_link] = [pivot, pin]
+    link_order.append(crank_link)
+
+    # -- extra points: defined in [[points]], placed as soon as their link is known
+    raw_points = data.get("points", [])
+    r.array(raw_points, "points")
+    pending: list[tuple[int, dict]] = []
+    for n, pt in enumerate(raw_points):
+        path = f"points[{n}]"
+        r.table(pt, path)
+        r.keys(pt, path, {"name", "link", "from", "toward", "along", "across", "fraction"},
+               {"name", "link", "from"})
+        pending.append((n, pt))
+    points: list[PointOnLink] = []
+
+    def place_points() -> None:
+        progress = True
+        while progress:
+            progress = False
+            for item in list(pending):
+                n, pt = item
+                path = f"points[{n}]"
+                ln = r.link(pt["link"], f"{path}.link")
+                if ln not in link_points:
+                    continue
+                nm = need_point(pt["name"], f"{path}.name", known=False)
+                origin = r.name(pt["from"], f"{path}.from")
+                if origin not in link_points[ln]:
+                    raise r.fail(f"{path}.from", f"point {origin!r} is not on link {ln!r} "
+                                 f"(its points: {', '.join(link_points[ln])})")
+                toward = None
+                if "toward" in pt:
+                    toward = r.name(pt["toward"], f"{path}.toward")
+                    if toward not in link_points[ln]:
+                        raise r.fail(f"{path}.toward", f"point {toward!r} is not on link {ln!r} "
+                                     f"(its points: {', '.join(link_points[ln])})")
+                    if toward == origin:
+                        raise r.fail(f"{path}.toward", "must differ from 'from'")
+                fraction = None
+                if "fraction" in pt:
+                    if toward is None:
+                        raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
+                    if "along" in pt:
+                        raise r.fail(f"{path}.fraction", "give either 'fraction' or 'along', not both")
+                    fraction = r.number(pt["fraction"], f"{path}.fraction", lo=-100, hi=100)
+                along = r.length(pt.get("along", 0.0), f"{path}.along", unit, signed=True)
+                across = r.length(pt.get("across", 0.0), f"{path}.across", unit, signed=True)
+                points.append(PointOnLink(nm, ln, origin, toward, along, across, fraction))
+                known_points[nm] = ln
+                link_points[ln].append(nm)
+                pending.remove(item)
+                progress = True
+
+    if frame_link in link_points:
+        place_points()
+
+    # -- dyads
+    raw_dyads = r.array(data["dyads"], "dyads", minlen=1)
+    dyads: list[Dyad] = []
+    for n, dt in enumerate(raw_dyads):
+        path = f"dyads[{n}]"
+        r.table(dt, path)
+        kind = r.string(dt.get("kind"), f"{path}.kind", DYAD_KINDS) if "kind" in dt else None
+        if kind is None:
+            raise r.fail(f"{path}.kind", "missing required key")
+        allowed = {"kind", "links", "joints", "branch"}
+        required = {"kind", "links", "joints"}
+        extra = {
+            "RRR": ({"lengths"}, {"lengths"}),
+            "RRP": ({"length", "guide"}, {"length", "guide"}),
+            "RPR": ({"offset"}, set()),
+            "PRP": ({"guides"}, {"guides"}),
+            "RPP": ({"guide", "slot_angle"}, {"guide"}),
+        }[kind]
+        r.keys(dt, path, allowed | extra[0], required | extra[1])
+        lk = r.array(dt["links"], f"{path}.links", 2)
+        li = need_link(lk[0], f"{path}.links[0]", known=False)
+        lj = need_link(lk[1], f"{path}.links[1]", known=False)
+        jt = r.array(dt["joints"], f"{path}.joints", JOINT_COUNT[kind])
+        new_idx = NEW_JOINTS[kind]
+        joints = tuple(
+            need_point(v, f"{path}.joints[{m}]", known=m not in new_idx) for m, v in enumerate(jt)
+        )
+        if len(set(joints)) != len(joints):
+            raise r.fail(f"{path}.joints", f"joints must be distinct (got {list(joints)})")
+        branch_raw = dt.get("branch", "+")
+        branch_s = r.string(branch_raw, f"{path}.branch", ("+", "-"))
+        branch = 1 if branch_s == "+" else -1
+        lengths: tuple[float, ...] = ()
+        guides: tuple[Guide, ...] = ()
+        offset = 0.0
+        slot_angle = 0.0
+        if kind == "RRR":
+            ls = r.array(dt["lengths"], f"{path}.lengths", 2)
+            lengths = tuple(r.length(v, f"{path}.lengths[{m}]", unit) for m, v in enumerate(ls))
+        elif kind == "RRP":
+            lengths = (r.length(dt["length"], f"{path}.length", unit),)
+            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
+        elif kind == "RPR":
+            offset = r.length(dt.get("offset", 0.0), f"{path}.offset", unit, signed=True)
+        elif kind == "PRP":
+            gs = r.array(dt["guides"], f"{path}.guides", 2)
+            guides = tuple(
+                _guide(r, g, f"{path}.guides[{m}]", link_points, frame_link, unit)
+                for m, g in enumerate(gs)
+            )
+        elif kind == "RPP":
+            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
+            slot_angle = math.radians(
+                r.number(dt.get("slot_angle", 90.0), f"{path}.slot_angle")
+            )
+            if abs(math.sin(slot_angle)) < 1e-6:
+                raise r.fail(f"{path}.slot_angle",
+                             "the slot must not be parallel to the guide (got "
+                             f"{dt.get('slot_angle', 90.0)!r}°)")
+        dyad = Dyad(kind, (li, lj), joints, lengths, guides, offset, slot_angle, branch)
+        dyads.append(dyad)
+        for p in dyad.new_points:
+            known_points[p] = li if kind != "RPP" else lj
+        for ln in (li, lj):
+            if ln not in link_points:
+                link_points[ln] = []
+                link_order.append(ln)
+        for ln, ps in zip((li, lj), dyad.points_on_links, strict=True):
+            for p in ps:
+                if p not in link_points[ln]:
+                    link_points[ln].append(p)
+        place_points()
+
+    if pending:
+        n, pt = pending[0]
+        raise r.fail(f"points[{n}].link", f"link {pt['link']!r} is not a link of this mechanism "
+                     f"(links: {', '.join(link_order)})")
+
+    # -- gravity (its g also turns weights G into masses m = G/g)
+    grav = r.table(data.get("gravity", {}), "gravity")
+    g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
+    g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
+    g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
+    gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
+    gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
+
+    # -- link properties
+    links: dict[str, LinkProps] = {}
+    raw_links = r.table(data.get("links", {}), "links")
+    crank_props = {k: crank_t[k] for k in ("mass", "weight", "inertia", "centre")
+                   if k in crank_t}
+    if crank_props:
+        raw_links = {**raw_links}
+        if crank_link in raw_links:
+            raise r.fail(f"links.{crank_link}", "crank mass given twice (in [crank] and [links])")
+        raw_links[crank_link] = crank_props
+    for ln, props in raw_links.items():
+        path = f"links.{ln}"
+        r.link(ln, path)
+        if ln not in link_points or ln == frame_link:
+            raise r.fail(path, f"not a moving link of this mechanism (moving links: "
+                         f"{', '.join(x for x in link_order if x != frame_link)})")
+        r.table(props, path)
+        r.keys(props, path, {"mass", "weight", "inertia", "centre"})
+        if "weight" in props:  # G in N, as assignment books often give it: m = G/g
+            if "mass" in props:
+                raise r.fail(f"{path}.weight", "give either 'mass' (kg) or 'weight' (N), "
+                             "not both")
+            if g <= 0:
+                raise r.fail(f"{path}.weight", "a weight needs gravity.g > 0 to give the mass")
+            mass = r.number(props["weight"], f"{path}.weight", nonneg=True, hi=1e10) / g
+        else:
+            mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
+        inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True, hi=1e12)
+        centre = None
+        if "centre" in props:
+            centre = r.name(props["centre"], f"{path}.centre")
+            if centre not in link_points[ln]:
+                raise r.fail(f"{path}.centre", f"point {centre!r} is not on link {ln!r} "
+                             f"(its points: {', '.join(link_points[ln])})")
+        elif mass > 0:
+            raise r.fail(f"{path}.centre", "a link with mass needs its centre of mass point")
+        links[ln] = LinkProps(mass, inertia, centre)
+
+    # -- output
+    last = dyads[-1]
+    out_t = r.table(data.get("output", {}), "output")
+    out_link = last.links[1]
+    if "link" in out_t:
+        out_link = need_link(out_t["link"], "output.link", known=True)
+        if out_link in (frame_link,):
+            raise r.fail("output.link", "the output cannot be the frame")
+    working = 1 if r.string(out_t.get("working", "+"), "output.working", ("+", "-")) == "+" else -1
+    output = Output(out_link, working)
+
+    # -- positions
+    pos_t = r.table(data.get("positions", {}), "positions")
+    count = r.integer(pos_t.get("count", 8), "positions.count", 1, 3600)
+    first_raw = pos_t.get("first", "start")
+    if isinstance(first_raw, str):
+        first: str | float = r.string(first_raw, "positions.first", ("start", "end"))
+    else:
+        first = math.radians(r.number(first_raw, "positions.first"))
+    number_from = r.integer(pos_t.get("number_from", 1), "positions.number_from", 0, 1)
+    extras: list[ExtraPosition] = []
+    labels = {str(number_from + k) for k in range(count)}
+    for n, et in enumerate(r.array(pos_t.get("extra", []), "positions.extra")):
+        path = f"positions.extra[{n}]"
+        r.table(et, path)
+        r.keys(et, path, {"label", "phi", "from", "turn", "stroke"}, {"label"})
+        label = r.string(et["label"], f"{path}.label")
+        if not label.strip():
+            raise r.fail(f"{path}.label", "must not be empty")
+        if _CONTROL.search(label):
+            raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
+        if label in labels:
+            raise r.fail(f"{path}.label", f"label {label!r} is already used")
+        labels.add(label)
+        ways = [k for k in ("phi", "from", "stroke") if k in et]
+        if len(ways) != 1:
+            raise r.fail(path, "give exactly one of 'phi' (crank angle, °), 'from' (dead centre "
+                         "with 'turn'), 'stroke' (travel fraction of the working stroke)")
+        if "turn" in et and "from" not in et:
+            raise r.fail(f"{path}.turn", "goes with 'from'")
+        if "phi" in et:
+            extras.append(ExtraPosition(label, phi=math.radians(r.number(et["phi"], f"{path}.phi"))))
+        elif "from" in et:
+            extras.append(ExtraPosition(
+                label,
+                from_dead_centre=r.string(et["from"], f"{path}.from", ("start", "end")),
+                turn=math.radians(r.number(et.get("turn", 0.0), f"{path}.turn", lo=-360, hi=360)),
+            ))
+        else:
+            extras.append(ExtraPosition(
+                label, stroke=r.number(et["stroke"], f"{path}.stroke", lo=0.0, hi=1.0)))
+    cycle_deg = r.integer(pos_t.get("cycle", 360), "positions.cycle", 360, 720)
+    if cycle_deg not in (360, 720):
+        raise r.fail("positions.cycle", f"expected 360 (one turn) or 720 (two turns: a "
+                     f"four-stroke process) (got {cycle_deg})")
+    positions = Positions(count, first, number_from, tuple(extras), cycle_deg)
+
+    # -- loads
+    resistances = _loads(r, data, dict(
+        frame_link=frame_link, link_points=link_points, link_order=link_order,
+        known_points=known_points, dyads=dyads, crank=crank, output=output, unit=unit,
+        cycle=cycle_deg))
+
+
+    settings = {
+        sec: data[sec]
+        for sec in ("kinetostatics", "dynamics", "drawing", "title_block", "variant")
+        if sec in data
+    }
+    _check_settings(r, settings)
+
+    return Mechanism(
+        name=name,
+        source=r.source,
+        frame_link=frame_link,
+        frame_points=frame_points,
+        crank=crank,
+        dyads=tuple(dyads),
+        points=tuple(points),
+        links=links,
+        gravity=gravity,
+        resistances=tuple(resistances),
+        positions=positions,
+        output=output,
+        length_unit=unit_name,
+        settings=settings,
+    )
+
+
+def _guide(r: _Reader, value: Any, path: str, link_points, frame_link: str, unit: float) -> Guide:
+    g = r.table(value, path)
+    r.keys(g, path, {"link", "through", "angle", "toward"}, {"link", "through"})
+    ln = r.link(g["link"], f"{path}.link")
+    if ln not in link_points:
+        raise r.fail(f"{path}.link", f"link {ln!r} is not defined before this dyad "
+                     f"(known: {', '.join(link_points)})")
+    through = None
+    xy = None
+    if isinstance(g["through"], list):
+        if ln != frame_link:
+            raise r.fail(f"{path}.through", "coordinates are allowed for a frame guide only; "
+                         "on a moving link name a point of it")
+        xy = r.xy(g["through"], f"{path}.through", unit)
+    else:
+        through = r.name(g["through"], f"{path}.through")
+        if through not in link_points[ln]:
+            raise r.fail(f"{path}.through", f"point {through!r} is not on link {ln!r} "
+                         f"(its points: {', '.join(link_points[ln])})")
+    if "angle" in g and "toward" in g:
+        raise r.fail(path, "give either 'angle' or 'toward', not both")
+    toward = None
+    if "toward" in g:
+        toward = r.name(g["toward"], f"{path}.toward")
+        if toward not in link_points[ln] or toward == through:
+            raise r.fail(f"{path}.toward", f"expected another point of link {ln!r} "
+                         f"(its points: {', '.join(link_points[ln])})")
+    angle = math.radians(r.number(g.get("angle", 0.0), f"{path}.angle"))
+    return Guide(ln, through, xy, angle, toward)
+
+
+def _translates_on_frame(link: str, dyads: list[Dyad], frame_link: str) -> bool:
+    for d in dyads:
+        if d.kind in ("RRP", "RPP") and d.links[1] == link:
+            return d.guides[0].link == frame_link
+        if d.kind == "PRP" and link in d.links:
+            return d.guides[d.links.index(link)].link == frame_link
+    return False
+
+
+def _rotates_about_frame(link, dyads, crank, known_points, frame_link) -> bool:
+    if link == crank.link:
+        return True
+    for d in dyads:
+        if d.kind in ("RRR", "RPR") and d.links[1] == link:
+            pivot = d.joints[-1]
+            return known_points.get(pivot) == frame_link
+    return False
+
+
+def _check_settings(r: _Reader, settings: dict) -> None:
+    """Validate the values of the settings that later stages read."""
+    kin = settings.get("kinetostatics", {})
+    if "neglect_below" in kin:
+        r.number(kin["neglect_below"], "kinetostatics.neglect_below", lo=0.0, hi=1.0)
+    if "inertia" in kin:
+        r.boolean(kin["inertia"], "kinetostatics.inertia")
+    if "shift_inertia_force" in kin:
+        r.boolean(kin["shift_inertia_force"], "kinetostatics.shift_inertia_force")
+    dyn = settings.get("dynamics", {})
+    if "delta" in dyn:
+        r.number(dyn["delta"], "dynamics.delta", positive=True, hi=1.0)
+    if "efficiency" in dyn:
+        r.number(dyn["efficiency"], "dynamics.efficiency", positive=True, hi=1.0)
+    if "crank_inertia" in dyn:
+        r.number(dyn["crank_inertia"], "dynamics.crank_inertia", nonneg=True)
+    if "grid" in dyn:
+        r.integer(dyn["grid"], "dynamics.grid", 12, 100000)
+    if "intervals" in dyn:
+        r.integer(dyn["intervals"], "dynamics.intervals", 4, 720)
+    if "motor_series" in dyn:
+        from ..dynamics import series_names
+
+        s = r.string(dyn["motor_series"], "dynamics.motor_series")
+        if s.strip().upper() not in series_names():
+            raise r.fail("dynamics.motor_series", "expected a bundled motor series, one of "
+                         f"{', '.join(series_names())} (got {s!r})")
+    if "motor_speed" in dyn:
+        from ..dynamics import SYNC_SPEEDS
+
+        speed = r.integer(dyn["motor_speed"], "dynamics.motor_speed", 1, 100000)
+        if speed not in SYNC_SPEEDS:
+            raise r.fail("dynamics.motor_speed", "expected a synchronous speed at 50 Hz, one "
+                         f"of {', '.join(map(str, SYNC_SPEEDS))} rpm (got {speed})")
+    if "flywheel" in dyn:
+        fw = r.table(dyn["flywheel"], "dynamics.flywheel")
+        r.keys(fw, "dynamics.flywheel", {"shape", "shaft", "b_ratio", "h_ratio", "density"})
+        if "shape" in fw:
+            r.string(fw["shape"], "dynamics.flywheel.shape", ("rim", "disc"))
+        if "shaft" in fw:
+            r.string(fw["shaft"], "dynamics.flywheel.shaft", ("crank", "motor"))
+        for key, hi in (("b_ratio", 1.0), ("h_ratio", 0.5), ("density", 30000.0)):
+            if key in fw:
+                r.number(fw[key], f"dynamics.flywheel.{key}", positive=True, hi=hi)
+    drw = settings.get("drawing", {})
+    for key in ("Kl", "Kv", "Ka", "Kp"):
+        if key in drw:
+            r.number(drw[key], f"drawing.{key}", positive=True)
+    if "reading_mm" in drw:
+        r.number(drw["reading_mm"], "drawing.reading_mm", nonneg=True, hi=5.0)
+    if "format" in drw:
+        r.string(drw["format"], "drawing.format", ("A1", "A2", "A3"))
+    if "language" in drw:
+        r.string(drw["language"], "drawing.language", ("ru", "en"))
+    for sec, table in (("kinetostatics", settings.get("kinetostatics", {})), ("drawing", drw)):
+        if "positions" not in table:
+            continue
+        labels = r.array(table["positions"], f"{sec}.positions", minlen=1)
+        for i, lab in enumerate(labels):
+            r.string(lab, f"{sec}.positions[{i}]")
+        if len(set(labels)) != len(labels):
+            raise r.fail(f"{sec}.positions", "expected each position label once")
+    tb = settings.get("title_block", {})
+    for key, value in tb.items():
+        if key in ("sheet", "sheets"):
+            r.integer(value, f"title_block.{key}", 1, 99)
+        else:
+            r.string(value, f"title_block.{key}")
+    var = settings.get("variant", {})
+    if "description" in var:
+        r.string(var["description"], "variant.description")
+
+
+def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
+    """The ``[[loads]]``: forces and couples on any moving link (docs/variant-format.md §6.2).
+
+    Each load's diagram is stored per stroke of the cycle (``Resistance.strokes``) or over
+    the crank's travel in radians; a bare ``diagram`` keeps the classical meaning: the
+    output's working stroke, resisting.
+    """
+    frame_link, link_points = ctx["frame_link"], ctx["link_points"]
+    dyads, crank, output, unit = ctx["dyads"], ctx["crank"], ctx["output"], ctx["unit"]
+    cycle = ctx["cycle"]
+    n_strokes = 2 * cycle // 360
+    moving = [x for x in ctx["link_order"] if x != frame_link]
+    out: list[Resistance] = []
+    raw_loads = r.array(data.get("loads", []), "loads")
+    names: set[str] = set()
+    needs_two_turns = False
+    for n, lt in enumerate(raw_loads):
+        path = f"loads[{n}]"
+        r.table(lt, path)
+        r.keys(lt, path, LOAD_KEYS, {"link"})
+        gas = "bore" in lt
+        if "kind" in lt:
+            kind = r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
+        elif gas:
+            kind = "force"
+        else:
+            raise r.fail(f"{path}.kind", "missing required key ('force' or 'moment')")
+        ln = r.link(lt["link"], f"{path}.link")
+        if ln == frame_link:
+            raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
+        if ln not in link_points:
+            raise r.fail(f"{path}.link", f"link {ln!r} is not a link of this mechanism "
+                         f"(moving links: {', '.join(moving)})")
+        name = None
+        if "name" in lt:
+            name = r.string(lt["name"], f"{path}.name").strip()
+            if not name or _CONTROL.search(name) or len(name) > 12:
+                raise r.fail(f"{path}.name", f"expected a short one-line name like 'Fг' "
+                             f"(got {lt['name']!r})")
+            if name in names:
+                raise r.fail(f"{path}.name", f"name {name!r} is already used by another load")
+            names.add(name)
+        point = None
+        if kind == "force":
+            if "point" not in lt:
+                raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
+            point = r.name(lt["point"], f"{path}.point")
+            if point not in link_points[ln]:
+                raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
+                             f"(its points: {', '.join(link_points[ln])})")
+        elif "point" in lt:
+            raise r.fail(f"{path}.point", "a moment load has no point")
+        elif _translates_on_frame(ln, dyads, frame_link):
+            raise r.fail(f"{path}.link", f"a couple on link {ln!r}, which only translates on a "
+                         "frame guide, does no work (put a force on it)")
+        if gas and kind != "force":
+            raise r.fail(f"{path}.bore", "a pressure (bore) gives a force on a piston, "
+                         "not a moment")
+        slider = _translates_on_frame(ln, dyads, frame_link)
+        rocker = _rotates_about_frame(ln, dyads, crank, ctx["known_points"], frame_link)
+        if gas and not slider:
+            raise r.fail(f"{path}.link", f"a gas force (bore) acts on a piston sliding in a "
+                         f"frame guide (cylinder); link {ln!r} is not one")
+        sense = r.string(lt.get("sense", "diagram" if gas else "resists"), f"{path}.sense",
+                         ("resists", "drives", "diagram"))
+        angle = None
+        if "angle" in lt:
+            if kind != "force" or sense != "diagram":
+                raise r.fail(f"{path}.angle", "the direction 'angle' goes with a force of "
+                             "sense = \"diagram\"; a resisting or driving load follows the motion")
+            angle = math.radians(r.number(lt["angle"], f"{path}.angle"))
+        elif kind == "force" and sense == "diagram" and not slider:
+            raise r.fail(f"{path}.angle", f"missing: the direction of the force (degrees) — "
+                         f"link {ln!r} does not slide on a frame guide to give one")
+        over = r.string(lt.get("over", "stroke"), f"{path}.over", ("stroke", "crank"))
+        # the link whose travel is the abscissa
+        if "travel_link" in lt:
+            tl = r.link(lt["travel_link"], f"{path}.travel_link")
+            if tl not in link_points or tl == frame_link:
+                raise r.fail(f"{path}.travel_link", f"link {tl!r} is not a moving link of this "
+                             f"mechanism (moving links: {', '.join(moving)})")
+        else:
+            tl = ln if (slider or (rocker and ln != crank.link)) else output.link
+        working = output.working
+        if "working" in lt:
+            working = 1 if r.string(lt["working"], f"{path}.working", ("+", "-")) == "+" else -1
+        phase = math.radians(r.number(lt.get("phase", 0.0), f"{path}.phase", lo=0.0,
+                                      hi=float(cycle)))
+        # the scale of the values
+        offset = 0.0
+        if gas:
+            for k in ("max", "value"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
+                                 "(diagram/strokes, p_max) and the bore, not the force")
+            D = r.length(lt["bore"], f"{path}.bore", unit)
+            area = math.pi * D * D / 4.0
+            pu = r.string(lt.get("pressure_unit", "MPa"), f"{path}.pressure_unit",
+                          tuple(PRESSURE_UNITS))
+            pmax = r.number(lt.get("p_max", 1.0), f"{path}.p_max", positive=True, hi=1e9)
+            pamb = r.number(lt.get("p_ambient", 0.0), f"{path}.p_ambient", nonneg=True, hi=1e9)
+            maximum = pmax * PRESSURE_UNITS[pu] * area
+            offset = pamb * PRESSURE_UNITS[pu] * area
+            if maximum > MAX_LOAD:
+                raise r.fail(f"{path}.p_max", f"p_max·πD²/4 = {maximum:.3g} N is beyond "
+                             f"{MAX_LOAD:g} N (check pressure_unit and bore)")
+        else:
+            for k in ("p_max", "p_ambient", "pressure_unit"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
+            if "value" in lt:
+                for k in ("max", "diagram", "strokes", "travel"):
+                    if k in lt:
+                        raise r.fail(f"{path}.{k}", "a constant load is given by 'value' alone")
+                lo = -MAX_LOAD if sense == "diagram" else 0.0
+                maximum = 1.0
+                const = r.number(lt["value"], f"{path}.value", lo=lo, hi=MAX_LOAD)
+            elif "max" not in lt:
+                raise r.fail(f"{path}.max", "missing required key (the scale of the diagram, "
+                             "N or N·m; or give 'value' for a constant load)")
+            else:
+                maximum = r.number(lt["max"], f"{path}.max", nonneg=True, hi=MAX_LOAD)
+        signed = sense == "diagram"
+        strokes: tuple = ()
+        if "value" in lt:  # constant: the whole cycle, or the strokes named
+            if "stroke" in lt:
+                which = r.string(lt["stroke"], f"{path}.stroke", STROKE_SETS)
+                d = ((0.0, const), (1.0, const))
+                strokes = _stroke_set(which, d, n_strokes)
+            else:
+                over = "crank"
+                strokes = (((0.0, const), (math.radians(cycle), const)),)
+        elif over == "crank":
+            for k in ("stroke", "strokes", "travel"):
+                if k in lt:
+                    raise r.fail(f"{path}.{k}", "a diagram over the crank angle has no strokes")
+            if "diagram" not in lt:
+                raise r.fail(f"{path}.diagram", "missing required key (pairs [φ°, value])")
+            d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=float(cycle))
+            _covers(r, d, f"{path}.diagram", float(cycle), "the cycle (crank angle 0 … "
+                    f"{cycle}°)")
+            strokes = (tuple((math.radians(x), v) for x, v in d),)
+            if cycle == 720:
+                needs_two_turns = True
+        else:
+            if "diagram" not in lt and "strokes" not in lt:
+                raise r.fail(f"{path}.diagram", "missing required key: 'diagram' (one "
+                             "stroke's diagram) or 'strokes' (one diagram per stroke)")
+            if "diagram" in lt and "strokes" in lt:
+                raise r.fail(f"{path}.diagram", "give either 'diagram' (one stroke's diagram) "
+                             "or 'strokes' (one diagram per stroke of the cycle), not both")
+            travel = None
+            if "travel" in lt:
+                if "strokes" not in lt:
+                    raise r.fail(f"{path}.travel", "goes with 'strokes' (a table: the travel "
+                                 "column and one column of values per stroke)")
+                tv = r.array(lt["travel"], f"{path}.travel", minlen=2)
+                travel = [r.number(x, f"{path}.travel[{m}]", lo=0.0, hi=1.0)
+                          for m, x in enumerate(tv)]
+                for m in range(1, len(travel)):
+                    if travel[m] < travel[m - 1]:
+                        raise r.fail(f"{path}.travel[{m}]", "travel fractions must not "
+                                     f"decrease (got {travel[m]} after {travel[m - 1]})")
+            if "diagram" in lt:
+                d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=1.0)
+                _covers(r, d, f"{path}.diagram", 1.0, "the stroke (travel 0 … 1)")
+                which = r.string(lt.get("stroke", "working"), f"{path}.stroke", STROKE_SETS)
+                strokes = _stroke_set(which, d, n_strokes)
+            else:
+                if "stroke" in lt:
+                    raise r.fail(f"{path}.stroke", "goes with 'diagram'; 'strokes' lists "
+                                 "every stroke")
+                ss = r.array(lt["strokes"], f"{path}.strokes", minlen=1)
+                if len(ss) != n_strokes:
+                    hint = (" (4 strokes: a four-stroke cycle needs positions.cycle = 720)"
+                            if len(ss) == 4 and cycle == 360 else "")
+                    raise r.fail(f"{path}.strokes", f"expected {n_strokes} diagrams, one per "
+                                 f"stroke of the {cycle}° cycle (got {len(ss)}){hint}")
+                items = []
+                for m, sd in enumerate(ss):
+                    sp = f"{path}.strokes[{m}]"
+                    sd = r.array(sd, sp)
+                    if not sd:
+                        items.append(None)
+                        continue
+                    if travel is not None:
+                        if len(sd) != len(travel):
+                            raise r.fail(sp, f"expected {len(travel)} values, one per 'travel' "
+                                         f"(got {len(sd)})")
+                        lo = -MAX_LOAD if signed else 0.0
+                        vals = [r.number(v, f"{sp}[{k}]", lo=lo, hi=MAX_LOAD)
+                                for k, v in enumerate(sd)]
+                        d = tuple(zip(travel, vals, strict=True))
+                    else:
+                        d = _pairs(r, sd, sp, signed, hi_x=1.0)
+                    _covers(r, d, sp, 1.0, "the stroke (travel 0 … 1)")
+                    items.append(d)
+                if all(x is None for x in items):
+                    raise r.fail(f"{path}.strokes", "every stroke is empty: no load")
+                strokes = tuple(items)
+                if cycle == 720 and strokes[:2] != strokes[2:]:
+                    needs_two_turns = True
+        first = next((d for d in strokes if d is not None), ())
+        out.append(Resistance(kind, ln, point, maximum, tuple(first), name, sense, over,
+                              strokes, angle, tl, working, phase, offset))
+    if cycle == 720 and not needs_two_turns:
+        raise r.fail("positions.cycle", "a 720° cycle needs a process over two turns — a load "
+                     "with 4 different strokes (a four-stroke indicator diagram) or a diagram "
+                     "over the crank angle to 720°; no load has one (use 360)")
+    return out
+
+
+def _stroke_set(which: str, d, n_strokes: int) -> tuple:
+    """The diagram on the working (0→1), idle (1→0) or both strokes of every turn."""
+    return tuple(d if (which == "both" or (k % 2 == 0) == (which == "working")) else None
+                 for k in range(n_strokes))
+
+
+def _pairs(r: _Reader, value: Any, path: str, signed: bool, hi_x: float):
+    """Pairs ``[x, value]`` with x not decreasing in [0, hi_x]; values ≥ 0 unless signed."""
+    diag = r.array(value, path, minlen=2)
+    pairs: list[tuple[float, float]] = []
+    for m, pr in enumerate(diag):
+        pp = r.array(pr, f"{path}[{m}]", 2)
+        x = r.number(pp[0], f"{path}[{m}][0]", lo=0.0, hi=hi_x)
+        v = r.number(pp[1], f"{path}[{m}][1]", lo=-MAX_LOAD if signed else 0.0, hi=MAX_LOAD)
+        if pairs and x < pairs[-1][0]:
+            raise r.fail(f"{path}[{m}][0]",
+                         f"the abscissae must not decrease (got {x} after {pairs[-1][0]})")
+        pairs.append((x, v))
+    return tuple(pairs)
+
+
+def _covers(r: _Reader, d, path: str, end: float, what: str) -> None:
+    if d[0][0] != 0.0 or abs(d[-1][0] - end) > 1e-12 * max(end, 1.0):
+        raise r.fail(path, f"the diagram does not cover {what}: it runs from {d[0][0]:g} to "
+                     f"{d[-1][0]:g}")

@@ -1,0 +1,248 @@
+"""The scales of the sheets. Sheet 1: Kl so the plan of positions fits its column, Kv
+and Ka so every plan fits its cell of the grid (see :mod:`graphplan.project.layout`). Sheet 2:
+the positions it analyses, the room of its force plans (which fixes each Kp) and the Kv
+of Zhukovsky's lever.
+
+:func:`sheet_scales` and :func:`sheet2_scales` decide them; the JSON report, the tables
+and the sheets all use them, so a segment in the tables is the segment on the sheet.
+A scale fixed in the variant's ``[drawing]`` section is used as given.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..drawing import GRAPH26_SIZE, Page
+from ..errors import InputError, LayoutError
+from ..kinematics import in_working_stroke
+from ..model import Mechanism
+from ..plans import plan_name
+from ..units import Scale, fit_scale, nice_ceil
+from .layout import (
+    CAPTION,
+    GAP,
+    Rect,
+    Sheet1Layout,
+    diagram_min,
+    plan_room,
+    sheet1_layout,
+    sheet2_cells,
+)
+
+PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
+SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
+LINE_OVERSHOOT = 8.0  #: construction lines run this far past their intersection, mm
+TRAJECTORY_POINTS = 360
+SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
+
+
+@dataclass(frozen=True, slots=True)
+class Sheet1Scales:
+    """Kl, Kv, Ka of sheet 1, the layout they were chosen for and the plan's extent."""
+
+    kl: Scale
+    kv: Scale
+    ka: Scale
+    layout: Sheet1Layout
+    extent_m: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax of the positions, m
+    plans: tuple[int, ...] = ()  # positions whose plans are drawn, in cell order
+    paths: dict[str, np.ndarray] | None = None  # the trajectories the extent was taken from
+    slots: dict[str, tuple[float, float]] | None = None  # see :func:`slot_ranges`
+
+
+def slot_ranges(mech: Mechanism, fine) -> dict[str, tuple[float, float]]:
+    """How far each slide on a moving link (a slot of a rocker or a yoke) reaches, m.
+
+    For every guide ``slider/carrier`` carried by a moving link: the least and the greatest
+    coordinate, along the guide from its base point, of the slider's point on the guide
+    over one turn (``fine``: the kinematics of :func:`one_turn`). The slot is fixed on its
+    link, so drawn over this range in every position it is the same slot, long enough for
+    the block everywhere.
+    """
+    out: dict[str, tuple[float, float]] = {}
+    for key, (G, u) in fine.pos.guides.items():
+        slider, carrier = key.split("/")
+        if carrier == mech.frame_link:
+            continue
+        G, u = np.asarray(G, float), np.asarray(u, float)
+        n = np.stack([-u[:, 1], u[:, 0]], axis=1)
+        best = None
+        for p in mech.points_of(slider):
+            if p not in fine.pos.points:
+                continue
+            r = fine.pos.points[p] - G
+            off = float(np.median(np.abs(np.einsum("ij,ij->i", r, n))))
+            if best is None or off < best[0]:
+                best = (off, np.einsum("ij,ij->i", r, u))
+        if best is not None:
+            out[key] = (float(best[1].min()), float(best[1].max()))
+    return out
+
+
+def one_turn(mech: Mechanism, kin):
+    """The kinematics over one turn from the first position, TRAJECTORY_POINTS steps."""
+    from ..kinematics import solve
+
+    phi = kin.phi[0] + np.linspace(0.0, 2 * math.pi, TRAJECTORY_POINTS + 1)
+    return solve(mech, phi)
+
+
+def trajectories(mech: Mechanism, kin, fine=None) -> dict[str, np.ndarray]:
+    """Paths of the centres of mass and of every joint over one turn (m), closed."""
+    fine = one_turn(mech, kin) if fine is None else fine
+    return {name: p for name, p in fine.pos.points.items()}
+
+
+def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple[float, ...]:
+    """Bounding box (m) of everything the plan of positions draws, about the crank pivot."""
+    o = kin.pos.points[mech.crank.pivot][0]
+    pts = [p for p in paths.values()] + [p for p in kin.pos.points.values()]
+    allp = np.concatenate(pts) - o
+    (x0, y0), (x1, y1) = allp.min(axis=0), allp.max(axis=0)
+    return float(x0), float(y0), float(x1), float(y1)
+
+
+def positions_by_label(mech: Mechanism, kin, section: str) -> tuple[int, ...] | None:
+    """Indices of the positions a section's ``positions`` names (None if it names none)."""
+    wanted = mech.settings.get(section, {}).get("positions")
+    if wanted is None:
+        return None
+    for lab in wanted:
+        if lab not in kin.labels:
+            raise InputError(f"{mech.source}: {section}.positions: expected a position label "
+                             f"({', '.join(kin.labels)}), got {lab!r}")
+    return tuple(kin.labels.index(lab) for lab in wanted)
+
+
+def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
+    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or all)."""
+    which = positions_by_label(mech, kin, "drawing")
+    return tuple(range(kin.n)) if which is None else which
+
+
+def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale,
+                    which: tuple[int, ...]) -> tuple[float, float, float, float]:
+    """Largest width and height (mm) of the velocity and of the acceleration plans."""
+    from ..plans import acceleration_plan, velocity_plan
+
+    vw = vh = aw = ah = 0.0
+    for k in which:
+        vp = velocity_plan(mech, kin, k, kl, kv)
+        ap = acceleration_plan(mech, kin, k, kl, ka, vp)
+        for plan, is_v in ((vp, True), (ap, False)):
+            pts = np.array(list(plan.points.values()))
+            w, h = np.ptp(pts, axis=0)
+            if is_v:
+                vw, vh = max(vw, w), max(vh, h)
+            else:
+                aw, ah = max(aw, w), max(ah, h)
+    return vw, vh, aw, ah
+
+
+def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales:
+    """Choose Kl, Kv, Ka for sheet 1 from the usual series (1, 2, 2.5, 4, 5 × 10^k).
+
+    Kl: the plan of positions (all positions, the trajectories) fits the left column,
+    at most 42 % of the frame's width and the height left above the diagrams.
+    Kv, Ka: the largest velocity (acceleration) plan of all positions fits the
+    room of one grid cell, construction lines included.
+    """
+    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    fixed = mech.settings.get("drawing", {})
+    fine = one_turn(mech, kin)
+    paths = trajectories(mech, kin, fine)
+    slots = slot_ranges(mech, fine)
+    f = page.frame
+    room_w = 0.42 * f.width - 2 * PLAN_MARGIN
+    room_h = f.height - GRAPH26_SIZE[1] - 8.0 - GAP - diagram_min(page)[1] - 2 * PLAN_MARGIN
+    cr = mech.crank
+    kl_m = 0.0  # the slots run SLOT_OVER mm past their blocks' travel: at the scale found
+    for _ in range(3):
+        ends = {f"slot {key} {i}": fine.pos.guides[key][0] + t * fine.pos.guides[key][1]
+                for key, (t0, t1) in slots.items()
+                for i, t in enumerate((t0 - SLOT_OVER * kl_m, t1 + SLOT_OVER * kl_m))}
+        ext = position_extent(mech, kin, {**paths, **ends})
+        need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
+        kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}",
+                       defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+        if kl.per_mm == kl_m:
+            break
+        kl_m = kl.per_mm
+    plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
+    plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
+    which = plan_positions(mech, kin)
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which))
+    iw, ih = layout.cell_inner
+    iw, ih = iw - 2 * LINE_OVERSHOOT, ih - 2 * LINE_OVERSHOOT
+    va = abs(cr.omega) * cr.length
+    aa = cr.omega**2 * cr.length
+    trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
+    trial_a = Scale("Ka", aa / 50.0, "(m/s²)/mm")
+    vw, vh, aw, ah = _plan_extent_mm(mech, kin, kl, trial_v, trial_a, which)
+    need_v = trial_v.per_mm * max(vw / iw, vh / ih, 1e-9)
+    need_a = trial_a.per_mm * max(aw / iw, ah / ih, 1e-9)
+    kv = fit_scale("Kv", "(m/s)/mm", need_v, 1.0, quantity=f"v{cr.pin}", defining=va,
+                   segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"))
+    ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
+                   segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"))
+    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots)
+
+
+def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
+    """The working positions and the idle position of the largest |Mур| (module docstring)."""
+    at_dead_centre = {ex.label for ex in mech.positions.extra
+                      if ex.from_dead_centre is not None and ex.turn == 0.0}
+    working = in_working_stroke(mech, cycle, kin.phi)
+    extra = {ex.label for ex in mech.positions.extra} - at_dead_centre
+    chosen = [k for k, lab in enumerate(kin.labels) if lab in extra][:SHEET2_MAX_ROWS - 1]
+    m = np.abs(forces.M_bal)
+    idle = [k for k in range(len(kin.phi)) if not working[k] and k not in chosen
+            and kin.labels[k] not in at_dead_centre]
+    if not chosen:
+        chosen = [int(np.argmax(m))]
+        idle = [k for k in idle if k != chosen[0]]
+    if idle:
+        chosen.append(max(idle, key=lambda k: m[k]))
+    return tuple(chosen)
+
+
+def sheet2_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
+    """Indices of the positions sheet 2 analyses in full (see the module docstring)."""
+    which = positions_by_label(mech, kin, "kinetostatics")
+    if which is None:
+        which = default_positions(mech, kin, forces, cycle)
+    if len(which) > SHEET2_MAX_ROWS:
+        raise LayoutError(f"{mech.source}: sheet 2 draws at most {SHEET2_MAX_ROWS} positions "
+                          f"in full (got {len(which)}): choose them in kinetostatics.positions")
+    return which
+
+
+@dataclass(frozen=True, slots=True)
+class Sheet2Scales:
+    """What sheet 2 is drawn at: its positions, its cells, the room of a force plan (each
+    Kp is the series value that fits the plan into it) and the lever's cell."""
+
+    positions: tuple[int, ...]
+    cells: tuple[tuple[Rect, ...], ...]
+    room_mm: float
+
+    def lever_kv(self, kin, k: int) -> Scale:
+        """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
+        (any Kv gives the same Mур; the arms in mm are read at this one)."""
+        cell = self.cells[0][-1]
+        v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
+        ext = float(np.max(np.ptp(v, axis=0)))
+        room = min(cell.width, cell.height - CAPTION) - 40.0
+        return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
+
+
+def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None
+                  ) -> Sheet2Scales:
+    """Positions, cells and plan room of sheet 2 (see :mod:`graphplan.drawing.sheet2`)."""
+    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    rows = sheet2_positions(mech, kin, forces, cycle)
+    cells = sheet2_cells(page, len(mech.dyads), len(rows))
+    return Sheet2Scales(rows, cells, plan_room(cells[0][1]))

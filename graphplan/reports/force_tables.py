@@ -1,0 +1,873 @@
+"""Tables of the force analysis, laid out as the seed's hand calculation (issue 4).
+
+Position by position: the loads acting on the links (G2, G3, Pи2, Pи3, Mи…, Q, in N),
+what the variant's neglect rule dropped and how much that changes Mур against the full
+model (every load kept), the moment equations of the force plans with their arms in
+millimetres of the position plan, the force scale Kp with its basis, the segments of the
+force polygons in mm and their values (N and kN), the reactions, the arm h21, Mур from
+the force plans, Mур from Zhukovsky's lever and their discrepancy. Every quantity is
+given as an exact construction and as a drafted one (segments and arms read to the
+variant's ``drawing.reading_mm``, default 0.5 mm), side by side, with the drafting error
+and the bound :mod:`graphplan.plans.conditioning` states for that precision (``±``). A position
+whose force plans close at less than ``ILL_ANGLE_DEG`` is marked as a draftsman marks it
+(``lines meet at 1.3°, reading ±11 mm``).
+
+Sign convention (stated once): moments are **counter-clockwise positive** in the
+variant's axes, as in :mod:`graphplan.forces.kinetostatics`. **Mур** (``M_bal``) is the
+balancing moment the motor applies to the crank so that it turns at constant ω1. The
+moment of the resisting forces reduced to the crank (приведённый момент сил
+сопротивления) is ``Mс = −Mур``. The seed plots Mур ("кривая моментов сил
+сопротивления" built "по полученным значениям Мур"), and so does :func:`moment_curve`.
+
+:func:`forces_markdown` is for people (ru/en), :func:`forces_csv` for scripts,
+:func:`moment_curve` the exact Mур(φ) over one turn, and
+:func:`seed_comparison_markdown` the document ``examples/press.md``: the seed's figures
+beside graphplan's.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..forces import Loads, compute_loads, solve_forces
+from ..kinematics import solve
+from ..plans import (
+    EXACT,
+    Conditioning,
+    ForcePlan,
+    Lever,
+    Reader,
+    force_conditioning,
+    force_plans,
+    zhukovsky_lever,
+)
+from ..project import Analysis, sheet2_scales, sheet_scales
+from ..units import Scale, fmt
+
+CURVE_POINTS = 360
+"""Points of :func:`moment_curve`'s uniform grid over one turn of the crank."""
+
+TINY = 1e-9
+"""Relative size below which a value is zero (solver noise) in the tables."""
+
+WORDS = {
+    "en": {
+        "title": "Force analysis (kinetostatics) by force plans",
+        "position": "Position", "phi": "φ, °", "mode": "Mode", "plan": "Plan",
+        "load": "Load", "link": "Link", "kind": "Kind", "value": "Value", "taken": "Taken",
+        "yes": "yes", "neglected": "neglected",
+        "gravity": "weight", "inertia": "inertia", "resistance": "resistance",
+        "external": "external",
+        "section": "Position {label}, φ = {phi:.2f}°",
+        "loads": "Loads acting on the links",
+        "rule": ("Neglected by the variant's rule (a load under {pct} % of the largest load "
+                 "of its group): {names}."),
+        "rule_none": "Nothing is neglected at this position (rule: {pct} %).",
+        "rule_change": ("Mур with every load kept: {full} N·m; the rule changes Mур by "
+                        "{d} N·m ({p} %)."),
+        "equations": "Moment equations (arms measured on the position plan, mm)",
+        "arm": "Arm", "exact_mm": "Exact, mm", "draft_mm": "Drafted, mm",
+        "scales": "Force scales",
+        "segments": "Force polygons",
+        "quantity": "Quantity", "segment": "Segment",
+        "exact": "Exact", "drafted": "Drafted", "error": "Error, %",
+        "results": "Reactions and the balancing moment",
+        "mbal_plans": "Mур (force plans), N·m", "mbal_lever": "Mур (Zhukovsky's lever), N·m",
+        "discrepancy": "Discrepancy Δ, %", "h21": "h{n}, mm",
+        "curve": "Curve of Mур at the positions",
+        "curve_note": ("Mур: the balancing moment on the crank, N·m, counter-clockwise positive; "
+                       "the moment of the resisting forces reduced to the crank is Mс = −Mур. "
+                       "Exact, with the variant's neglect rule; travel from position {first} in "
+                       "the direction of rotation."),
+        "travel": "Travel, °", "mc": "Mс = −Mур, N·m",
+        "note": ("Exact: the plans built exactly (lengths to 0.01 mm). Drafted: every segment "
+                 "and arm read to {p} mm, the groups taking the reactions as read off the plans "
+                 "before them. Error = (drafted − exact)/exact. Moments counter-clockwise "
+                 "positive."),
+        "N": "N", "kN": "kN", "N·m": "N·m", "mm": "mm", "m": "m",
+        "bound": "±", "ill": "Ill-conditioned", "step": "step",
+    },
+    "ru": {
+        "title": "Силовой расчёт (кинетостатика) методом планов сил",
+        "position": "Положение", "phi": "φ, °", "mode": "Режим", "plan": "План",
+        "load": "Нагрузка", "link": "Звено", "kind": "Вид", "value": "Значение",
+        "taken": "Учтена", "yes": "да", "neglected": "пренебрегаем",
+        "gravity": "сила тяжести", "inertia": "сила инерции",
+        "resistance": "сила сопротивления", "external": "внешняя",
+        "section": "Положение {label}, φ = {phi:.2f}°",
+        "loads": "Силы, действующие на звенья",
+        "rule": ("Пренебрегаем по правилу варианта (нагрузка меньше {pct} % наибольшей "
+                 "нагрузки группы): {names}."),
+        "rule_none": "В этом положении ничем не пренебрегаем (правило: {pct} %).",
+        "rule_change": ("Мур с учётом всех нагрузок: {full} Н·м; правило изменяет Мур на "
+                        "{d} Н·м ({p} %)."),
+        "equations": "Уравнения моментов (плечи измерены на плане положений, мм)",
+        "arm": "Плечо", "exact_mm": "Точно, мм", "draft_mm": "Чертёж, мм",
+        "scales": "Масштабы планов сил",
+        "segments": "Планы сил",
+        "quantity": "Величина", "segment": "Отрезок",
+        "exact": "Точно", "drafted": "Чертёж", "error": "Погрешность, %",
+        "results": "Реакции и уравновешивающий момент",
+        "mbal_plans": "Мур (планы сил), Н·м", "mbal_lever": "Мур (рычаг Жуковского), Н·м",
+        "discrepancy": "Расхождение Δ, %", "h21": "h{n}, мм",
+        "curve": "Мур в положениях (кривая моментов)",
+        "curve_note": ("Мур — уравновешивающий момент на кривошипе, Н·м, против часовой "
+                       "стрелки — плюс; приведённый момент сил сопротивления Мс = −Мур. Точно, "
+                       "с правилом пренебрежения варианта; угол поворота от положения {first} "
+                       "по направлению вращения."),
+        "travel": "Поворот, °", "mc": "Мс = −Мур, Н·м",
+        "note": ("Точно: планы построены точно (длины до 0.01 мм). Чертёж: каждый отрезок и "
+                 "плечо прочитаны с точностью {p} мм, группы берут реакции, прочитанные на "
+                 "предыдущих планах. Погрешность = (чертёж − точно)/точно. Моменты против "
+                 "часовой стрелки — плюс."),
+        "N": "Н", "kN": "кН", "N·m": "Н·м", "mm": "мм", "m": "м",
+        "bound": "±", "ill": "Плохо обусловлено", "step": "шаг",
+    },
+}
+
+
+# --- the data ------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class LoadRow:
+    """One load of the full model at one position.
+
+    ``value`` is |F| (N) for a force, M (N·m, CCW +) for a couple; ``neglected`` says
+    whether the variant's rule dropped it there.
+    """
+
+    name: str
+    link: str
+    kind: str
+    value: float
+    unit: str
+    neglected: bool
+
+
+@dataclass(frozen=True, slots=True)
+class PositionForces:
+    """The force analysis of one position, built exactly and drafted.
+
+    Attributes
+    ----------
+    label : str
+    phi_deg : float
+        Crank angle φ, degrees in [0, 360).
+    index : int
+        Index of the position in ``analysis.kin``.
+    precision : float
+        The drafting reading precision, mm.
+    exact, drafted : tuple[ForcePlan, ...]
+        :func:`graphplan.plans.forces.force_plans` with the exact and the drafting reader
+        (the groups from the last to the first, then the crank).
+    lever_exact, lever_drafted : Lever
+        Zhukovsky's lever in both modes, each with the discrepancy against the plans' Mур
+        of the same mode.
+    M_bal : float
+        Mур of the exact kinetostatics (the variant's rule), N·m.
+    M_full : float
+        Mур with every load kept (``neglect_below = 0``), N·m.
+    loads : tuple[LoadRow, ...]
+        Every non-zero load of the full model.
+    rule : float
+        The variant's ``neglect_below``.
+    kl : Scale
+        Kl of the position plan the arms are measured on.
+    M_scale : float
+        The largest |Mур| of all positions (N·m): a moment below ``TINY`` of it is zero.
+    conditioning : Conditioning or None
+        The force plans' intersections (their marks) and the bound of every drafted
+        figure (:func:`graphplan.plans.conditioning.force_conditioning`).
+    """
+
+    label: str
+    phi_deg: float
+    index: int
+    precision: float
+    exact: tuple[ForcePlan, ...]
+    drafted: tuple[ForcePlan, ...]
+    lever_exact: Lever
+    lever_drafted: Lever
+    M_bal: float
+    M_full: float
+    loads: tuple[LoadRow, ...]
+    rule: float
+    kl: Scale
+    M_scale: float = 0.0
+    conditioning: Conditioning | None = None
+
+    def bound(self, plan: str, name: str) -> float | None:
+        """± of a drafted figure (``("force", "R12")``, ``("lever", "Mур")``), or None."""
+        c = self.conditioning
+        return None if c is None else c.bound(plan, name)
+
+    @property
+    def neglected(self) -> tuple[str, ...]:
+        """Names of the loads the rule dropped here."""
+        return tuple(r.name for r in self.loads if r.neglected)
+
+    def plans(self, mode: str) -> tuple[ForcePlan, ...]:
+        """The plans of ``mode`` (``"exact"`` or ``"drafted"``)."""
+        return self.exact if mode == "exact" else self.drafted
+
+    def lever(self, mode: str) -> Lever:
+        """Zhukovsky's lever of ``mode``."""
+        return self.lever_exact if mode == "exact" else self.lever_drafted
+
+
+def _precision(analysis: Analysis, precision: float | None) -> float:
+    if precision is None:
+        precision = float(analysis.mech.settings.get("drawing", {}).get("reading_mm", 0.5))
+    if not (math.isfinite(precision) and precision >= 0):
+        raise ValueError(f"the drafting precision must be finite and >= 0 mm (got {precision!r})")
+    return float(precision)  # 0: exact readings (the drafted plans are the exact ones)
+
+
+def _load_rows(loads: Loads, full: Loads, k: int) -> tuple[LoadRow, ...]:
+    rows = []
+    for f in full.all_forces():
+        mag = float(np.hypot(*f.vector[k]))
+        if mag > 0:
+            dropped = bool(loads.neglected[f.name][k]) if f.name in loads.neglected else False
+            rows.append(LoadRow(f.name, f.link, f.kind, mag, "N", dropped))
+    for m in full.all_moments():
+        val = float(m.moment[k])
+        if val != 0:
+            dropped = bool(loads.neglected[m.name][k]) if m.name in loads.neglected else False
+            rows.append(LoadRow(m.name, m.link, m.kind, val, "N·m", dropped))
+    return tuple(rows)
+
+
+def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[PositionForces]:
+    """Build the force plans and Zhukovsky's lever of every position, exact and drafted.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    precision : float or None
+        Drafting reading precision, mm (> 0); ``None`` takes the variant's
+        ``drawing.reading_mm`` (default 0.5).
+
+    Returns
+    -------
+    list[PositionForces]
+        In the order of ``analysis.kin``.
+    """
+    prec = _precision(analysis, precision)
+    key = (id(analysis), prec)
+    if _LAST.get("key") == key and _LAST.get("analysis") is analysis:
+        return list(_LAST["positions"])
+    mech, kin = analysis.mech, analysis.kin
+    sc = sheet_scales(mech, kin)
+    loads = compute_loads(mech, kin, analysis.cycle)
+    full = compute_loads(mech, kin, analysis.cycle, neglect_below=0.0)
+    forces = solve_forces(mech, kin, loads)
+    m_full = solve_forces(mech, kin, full).M_bal
+    draft = Reader(prec)
+    s2 = sheet2_scales(mech, kin, forces, analysis.cycle)
+    out = []
+    for k in range(kin.n):
+        ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm)
+        dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft, s2.room_mm)
+        kv = s2.lever_kv(kin, k)
+        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal)
+        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
+        cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
+                if prec > 0 else None)  # exact readings: no reading error to bound
+        out.append(PositionForces(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, k, prec,
+                                  ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
+                                  _load_rows(loads, full, k), loads.neglect_below,
+                                  sc.kl, float(np.max(np.abs(forces.M_bal))), cond))
+    _LAST.update(key=key, analysis=analysis, positions=tuple(out))
+    return out
+
+
+_LAST: dict = {}
+"""The last :func:`force_readings` (the Markdown in two languages and the CSV read it thrice)."""
+
+
+# --- the curve of moments ------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class MomentCurve:
+    """Exact Mур over one turn of the crank, and at the positions.
+
+    Unpacks as ``travel_deg, M = moment_curve(analysis)``.
+
+    Attributes
+    ----------
+    travel_deg : ndarray (N,)
+        Crank travel from the first position in the direction of rotation, degrees,
+        increasing in [0, 360): the uniform grid with the positions' travels merged in.
+    phi_deg : ndarray (N,)
+        The absolute crank angle φ of each point, degrees in [0, 360).
+    M : ndarray (N,)
+        Mур, N·m, counter-clockwise positive (``Mс = −Mур`` is the moment of the resisting
+        forces reduced to the crank).
+    labels : tuple[str, ...]
+        The positions' labels, in the order of ``analysis.kin``.
+    position_travel_deg, position_phi_deg, M_positions : ndarray
+        The travel, φ and Mур of each position (the same values as in ``M`` at
+        ``index``).
+    index : ndarray of int
+        Index of each position in the grid.
+    """
+
+    travel_deg: np.ndarray
+    phi_deg: np.ndarray
+    M: np.ndarray
+    labels: tuple[str, ...]
+    position_travel_deg: np.ndarray
+    position_phi_deg: np.ndarray
+    M_positions: np.ndarray
+    index: np.ndarray
+
+    def __iter__(self):
+        return iter((self.travel_deg, self.M))
+
+
+def moment_curve(analysis: Analysis, points: int = CURVE_POINTS, *,
+                 neglect_below: float | None = None) -> MomentCurve:
+    """Exact Mур(φ) on a fine grid over one turn, vectorised (one kinetostatics sweep).
+
+    The kinematics of ``points`` equally spaced crank angles from the first position
+    (:func:`graphplan.kinematics.exact.solve`), with the positions' own angles merged in, the
+    loads of :func:`graphplan.forces.loads.compute_loads` (the variant's rules unless
+    ``neglect_below`` is given) and :func:`graphplan.forces.kinetostatics.solve_forces`.
+
+    Sign: Mур is the balancing moment on the crank, CCW positive; the seed plots it as
+    the curve of the moments of the resisting forces (their reduced moment is −Mур).
+    Where the neglect rule switches a load on or off the curve jumps (at the press, where
+    Q grows past ten times G3 the weight and inertia of the ram are dropped).
+
+    Returns
+    -------
+    MomentCurve
+    """
+    if points < 2:
+        raise ValueError("moment_curve needs at least 2 points")
+    mech, kin = analysis.mech, analysis.kin
+    sense = 1.0 if mech.crank.omega >= 0 else -1.0
+    phi0 = float(kin.phi[0])
+    pos_travel = np.degrees(sense * (kin.phi - phi0)) % 360.0
+    grid = np.linspace(0.0, 360.0, points, endpoint=False)
+    keep = np.all(np.abs(grid[:, None] - pos_travel[None, :]) > 1e-9, axis=1)
+    travel = np.concatenate([grid[keep], pos_travel])
+    order = np.argsort(travel, kind="stable")
+    travel = travel[order]
+    index = np.argsort(order)[len(travel) - len(pos_travel):]
+    phi = phi0 + sense * np.radians(travel)
+    phi[index] = kin.phi  # the positions at exactly their own angles
+    fine = solve(mech, phi)
+    loads = compute_loads(mech, fine, analysis.cycle, neglect_below=neglect_below)
+    M = solve_forces(mech, fine, loads).M_bal
+    return MomentCurve(travel, np.degrees(phi) % 360.0, M, kin.labels, pos_travel,
+                       np.degrees(kin.phi) % 360.0, M[index].copy(), index)
+
+
+# --- formatting ----------------------------------------------------------------------------
+
+
+def _finite(x: float) -> float:
+    x = float(x)
+    if not math.isfinite(x):
+        raise ValueError(f"a non-finite number ({x!r}) reached a force table")
+    return x
+
+
+def _f(x: float, d: int = 2) -> str:
+    """Fixed decimals, no ``-0.00``."""
+    s = f"{_finite(x):.{d}f}"
+    return s[1:] if re.fullmatch(r"-0\.?0*", s) else s
+
+
+def _pct(err: float | None) -> str:
+    return "—" if err is None else _f(err * 100)
+
+
+def _rel(value: float, exact: float, big: float) -> float | None:
+    """Relative error, None where the exact value is (relatively) zero."""
+    if abs(exact) <= TINY * max(big, 1e-300):
+        return None
+    return (value - exact) / exact
+
+
+def _words(lang: str) -> dict[str, str]:
+    if lang not in WORDS:
+        raise ValueError(f"unknown language {lang!r} (expected one of {', '.join(WORDS)})")
+    return WORDS[lang]
+
+
+def _group(name: str, lang: str) -> str:
+    return name.replace("crank", "кривошип") if lang == "ru" else name
+
+
+def _eq(text: str, lang: str) -> str:
+    return text.replace("(link ", "(звено ") if lang == "ru" else text
+
+
+def _basis(sc: Scale, lang: str) -> str:
+    b = sc.basis
+    return b.replace("N/mm", "Н/мм") if lang == "ru" else b
+
+
+def _md_table(header: list[str], rows: list[list[str]], right: set[int]) -> list[str]:
+    rule = ["---:" if c in right else "---" for c in range(len(header))]
+    return ["| " + " | ".join(r) + " |" for r in (header, rule, *rows)]
+
+
+def _decimals(precision: float) -> int:
+    return next((d for d in range(6) if abs(round(precision, d) - precision) <= 1e-9), 6)
+
+
+def _crank_arm(plan: ForcePlan) -> tuple[str, float] | None:
+    """The crank's h21 (``"h21"`` and its mm)."""
+    for key, mm in plan.arms_mm.items():
+        if not key.startswith("h_"):
+            return key, mm
+    return None
+
+
+def _reactions(pf: PositionForces) -> list[str]:
+    """Reaction names in the order of the plans (each once)."""
+    names: list[str] = []
+    for p in pf.exact:
+        for n in p.reactions:
+            if n not in names:
+                names.append(n)
+    return names
+
+
+def _reaction_value(plans: tuple[ForcePlan, ...], name: str) -> float:
+    for p in plans:
+        if name in p.reactions:
+            return p.reactions[name].magnitude
+    raise KeyError(name)
+
+
+# --- Markdown ------------------------------------------------------------------------------
+
+
+def _pm(bound: float | None) -> str:
+    return "—" if bound is None else "±" + _f(bound)
+
+
+def _marks(pf: PositionForces, lang: str) -> list[str]:
+    """The draftsman's mark of a position whose force plans are ill-conditioned."""
+    c = pf.conditioning
+    if c is None or not c.marks:
+        return []
+    w = _words(lang)
+    return [f"**{w['ill']}:** {x.note(lang)} ({_group(x.plan, lang)}, {w['step']} {x.step}: "
+            f"`{_eq(x.equation, lang)}`)." for x in c.marks] + [""]
+
+
+def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
+    w = _words(lang)
+    d = _decimals(pf.precision)
+    out = ["", f"## {w['section'].format(label=pf.label, phi=pf.phi_deg)}", "",
+           *_marks(pf, lang), f"### {w['loads']}", ""]
+    rows = [[r.name, r.link, w.get(r.kind, r.kind), f"{_f(r.value)} {w[r.unit]}",
+             w["neglected"] if r.neglected else w["yes"]] for r in pf.loads]
+    out += _md_table([w["load"], w["link"], w["kind"], w["value"], w["taken"]], rows, {3})
+    pct = fmt(pf.rule * 100, 4)
+    out.append("")
+    if pf.neglected:
+        out.append(w["rule"].format(pct=pct, names=", ".join(pf.neglected)))
+        dm = pf.M_bal - pf.M_full
+        p = _rel(pf.M_bal, pf.M_full, abs(pf.M_full))
+        out.append(w["rule_change"].format(full=_f(pf.M_full), d=("+" if dm >= 0 else "")
+                                           + _f(dm), p="—" if p is None else
+                                           ("+" if p >= 0 else "") + _f(p * 100)))
+    else:
+        out.append(w["rule_none"].format(pct=pct))
+
+    out += ["", f"### {w['equations']}", ""]
+    arm_rows = []
+    for pe, pd in zip(pf.exact, pf.drafted, strict=True):
+        for eq in pe.equations:
+            out.append(f"- {_group(pe.group, lang)}: `{_eq(eq, lang)}`")
+        # the crank's h21 is also stored as h_R21@O: show it once
+        alias = {f"h_R{k[1:]}@" for k in pe.arms_mm if not k.startswith("h_")}
+        for key, mm in pe.arms_mm.items():
+            if any(key.startswith(a) for a in alias):
+                continue
+            arm_rows.append([_group(pe.group, lang), key, _f(mm),
+                             _f(pd.arms_mm.get(key, math.nan), d) if key in pd.arms_mm else "—"])
+    out += ["", *_md_table([w["plan"], w["arm"], w["exact_mm"],
+                            f"{w['draft_mm']} ({fmt(pf.precision)})"], arm_rows, {2, 3})]
+
+    out += ["", f"### {w['scales']}", ""]
+    for pe, pd in zip(pf.exact, pf.drafted, strict=True):
+        line = f"- {_group(pe.group, lang)}: {w['exact']} `{_basis(pe.scale, lang)}`"
+        if pd.scale.basis != pe.scale.basis:
+            line += f"; {w['drafted']} `{_basis(pd.scale, lang)}`"
+        out.append(line)
+
+    out += ["", f"### {w['segments']}", ""]
+    rows = []
+    for pe, pd in zip(pf.exact, pf.drafted, strict=True):
+        big = max((r.value for r in pe.readings.values()), default=0.0)
+        for q, r in pe.readings.items():
+            rd = pd.readings.get(q)
+            cells = [_group(pe.group, lang), q, f"`{r.name}`", _f(r.mm), _f(r.value),
+                     _f(r.value / 1000, 3)]
+            if rd is None:
+                cells += ["—", "—", "—", "—"]
+            else:
+                cells += [_f(rd.mm, d), _f(rd.value), _pm(pf.bound("force", q)),
+                          _pct(_rel(rd.value, r.value, big))]
+            rows.append(cells)
+    head = [w["plan"], w["quantity"], w["segment"], f"{w['exact']}, {w['mm']}",
+            f"{w['exact']}, {w['N']}", f"{w['exact']}, {w['kN']}",
+            f"{w['drafted']}, {w['mm']}", f"{w['drafted']}, {w['N']}", f"{w['bound']}, {w['N']}",
+            w["error"]]
+    out += _md_table(head, rows, {3, 4, 5, 6, 7, 8, 9})
+
+    out += ["", f"### {w['results']}", ""]
+    rows = []
+    big = max((_reaction_value(pf.exact, n) for n in _reactions(pf)), default=0.0)
+    for n in _reactions(pf):
+        e, r = _reaction_value(pf.exact, n), _reaction_value(pf.drafted, n)
+        rows.append([n, _f(e), _f(e / 1000, 3), _f(r), _f(r / 1000, 3),
+                     _pm(pf.bound("force", f"vector {n}")), _pct(_rel(r, e, big))])
+    head = [w["quantity"], f"{w['exact']}, {w['N']}", f"{w['exact']}, {w['kN']}",
+            f"{w['drafted']}, {w['N']}", f"{w['drafted']}, {w['kN']}", f"{w['bound']}, {w['N']}",
+            w["error"]]
+    out += [*_md_table(head, rows, {1, 2, 3, 4, 5, 6}), ""]
+    rows = []
+    he, hd = _crank_arm(pf.exact[-1]), _crank_arm(pf.drafted[-1])
+    if he is not None:
+        hdv = hd[1] if hd is not None else math.nan
+        rows.append([w["h21"].format(n=he[0][1:]), _f(he[1]), _f(hdv, d) if hd else "—",
+                     _pm(pf.precision / 2) if hd else "—",
+                     _pct(_rel(hdv, he[1], 1.0)) if hd else "—"])
+    me, md = float(pf.exact[-1].M_bal), float(pf.drafted[-1].M_bal)
+    mbig = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
+    rows.append([w["mbal_plans"], _f(me), _f(md), _pm(pf.bound("force", "Mур")),
+                 _pct(_rel(md, me, mbig))])
+    le, ld = pf.lever_exact.M_bal, pf.lever_drafted.M_bal
+    rows.append([w["mbal_lever"], _f(le), _f(ld), _pm(pf.bound("lever", "Mур")),
+                 _pct(_rel(ld, le, mbig))])
+    rows.append([w["discrepancy"], _f(pf.lever_exact.discrepancy_pct or 0.0),
+                 _f(pf.lever_drafted.discrepancy_pct or 0.0), "—", "—"])
+    out += _md_table([w["quantity"], w["exact"], f"{w['drafted']} ({fmt(pf.precision)} "
+                      f"{w['mm']})", w["bound"], w["error"]], rows, {1, 2, 3, 4})
+    return out
+
+
+def forces_markdown(analysis: Analysis, lang: str = "ru", precision: float | None = 0.5) -> str:
+    """The force analysis of every position as a Markdown document (ru or en).
+
+    Per position: the loads acting (value, whether the neglect rule dropped them, and the
+    change of Mур against the full model), the moment equations and their arms (mm),
+    Kp with its basis, the segments of the force polygons (mm, N, kN), the reactions,
+    h21, Mур from the plans and from Zhukovsky's lever and their discrepancy — exact and
+    drafted side by side; at the end, the curve of Mур at the positions.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    lang : str
+        ``"ru"`` or ``"en"``.
+    precision : float or None
+        Drafting reading precision, mm; ``None``: the variant's ``drawing.reading_mm``.
+    """
+    w = _words(lang)
+    positions = force_readings(analysis, precision)
+    prec = positions[0].precision
+    out = [f"# {w['title']} — {analysis.mech.name}", "", w["note"].format(p=fmt(prec))]
+    for pf in positions:
+        out += _position_markdown(pf, lang)
+    out += ["", *curve_markdown(analysis, lang)]
+    text = "\n".join(out) + "\n"
+    if re.search(r"\b(nan|inf)\b", text, re.IGNORECASE):
+        raise ValueError("NaN or infinity in the force tables' Markdown")
+    return text
+
+
+def curve_markdown(analysis: Analysis, lang: str = "ru",
+                   curve: MomentCurve | None = None) -> list[str]:
+    """Lines of the Markdown table of the curve of Mур at the positions."""
+    w = _words(lang)
+    c = curve if curve is not None else moment_curve(analysis)
+    rows = [[lab, _f(t), _f(p), _f(m), _f(-m)] for lab, t, p, m in
+            zip(c.labels, c.position_travel_deg, c.position_phi_deg, c.M_positions,
+                strict=True)]
+    rows.sort(key=lambda r: float(r[1]))
+    return [f"## {w['curve']}", "", w["curve_note"].format(first=c.labels[0]), "",
+            *_md_table([w["position"], w["travel"], w["phi"], f"Мур, {w['N·m']}"
+                        if lang == "ru" else "Mур, N·m", w["mc"]], rows, {1, 2, 3, 4})]
+
+
+# --- CSV -----------------------------------------------------------------------------------
+
+
+CSV_COLUMNS = ("position", "phi_deg", "mode", "precision_mm", "plan", "kind", "quantity",
+               "segment", "mm", "scale", "scale_per_mm", "value", "unit", "exact_value",
+               "error_pct", "bound", "ill_conditioned")
+"""Columns of :func:`forces_csv`.
+
+``kind`` is ``segment`` (a force polygon's segment: ``value = mm·scale_per_mm``, N),
+``arm`` (an arm on the position plan: ``value = mm·Kl``, m), ``moment`` (``Mур`` of the
+crank's plan, ``Mур(Ж)`` of the lever, N·m; ``Mур(full)``, the exact Mур with every load
+kept), ``discrepancy`` (Δ between the plans and the lever, %) or ``neglected`` (a load
+the rule dropped, its full-model value). ``mode`` is ``exact`` or ``drafted``;
+``exact_value`` is the exact mode's value of the same quantity, ``error_pct`` the
+relative drafting error (empty where the exact value is zero). ``bound`` is ± of a
+drafted value for the reading precision (:mod:`graphplan.plans.conditioning`; an arm's is its own
+reading, p/2), empty in exact mode; ``ill_conditioned`` the draftsman's mark of the
+position (``lines meet at 1.3°, reading ±11 mm``), empty where its plans are well
+conditioned."""
+
+
+def _r(x: float | None) -> str:
+    return "" if x is None else repr(_finite(x) + 0.0)
+
+
+def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:
+    """Every reading of every force plan, exact and drafted, in one flat CSV.
+
+    One row per reading (:data:`CSV_COLUMNS`), in SI units, dot decimals, full precision;
+    exact rows first, then the drafted rows of the same position.
+    """
+    buf = io.StringIO()
+    wr = csv.writer(buf, lineterminator="\n")
+    wr.writerow(CSV_COLUMNS)
+    for pf in force_readings(analysis, precision):
+        kl = pf.kl.per_mm
+        mark = pf.conditioning.note("en") if pf.conditioning is not None else ""
+        for mode in ("exact", "drafted"):
+            where = [pf.label, _r(pf.phi_deg), mode, _r(0.0 if mode == "exact" else pf.precision)]
+
+            def bound(plan, name, mode=mode, pf=pf):
+                return _r(pf.bound(plan, name)) if mode == "drafted" else ""
+
+            for p, pe in zip(pf.plans(mode), pf.exact, strict=True):
+                big = max((r.value for r in pe.readings.values()), default=0.0)
+                for q, r in p.readings.items():
+                    ex = pe.readings[q].value if q in pe.readings else None
+                    err = None if ex is None else _rel(r.value, ex, big)
+                    wr.writerow([*where, p.group, "segment", q, r.name, _r(r.mm),
+                                 p.scale.symbol, _r(p.scale.per_mm), _r(r.value), "N", _r(ex),
+                                 _r(None if err is None else err * 100), bound("force", q), mark])
+                for key, mm in p.arms_mm.items():
+                    ex = pe.arms_mm.get(key)
+                    err = None if ex is None else _rel(mm, ex, 1.0)
+                    wr.writerow([*where, p.group, "arm", key, "", _r(mm), "Kl", _r(kl),
+                                 _r(mm * kl), "m", _r(None if ex is None else ex * kl),
+                                 _r(None if err is None else err * 100),
+                                 _r(pf.precision / 2 * kl) if mode == "drafted" else "", mark])
+            crank = pf.plans(mode)[-1]
+            me = float(pf.exact[-1].M_bal)
+            big = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
+            lev, lex = pf.lever(mode), pf.lever_exact
+            for q, v, e, src in (("Mур", float(crank.M_bal), me, "force"),
+                                 ("Mур(Ж)", lev.M_bal, lex.M_bal, "lever")):
+                err = _rel(v, e, big)
+                wr.writerow([*where, crank.group, "moment", q, "", "", "", "", _r(v), "N·m",
+                             _r(e), _r(None if err is None else err * 100), bound(src, "Mур"),
+                             mark])
+            wr.writerow([*where, "", "moment", "Mур(full)", "", "", "", "", _r(pf.M_full),
+                         "N·m", _r(pf.M_full), "", "", mark])
+            wr.writerow([*where, "lever", "discrepancy", "Δ", "", "", "", "",
+                         _r(lev.discrepancy_pct or 0.0), "%", _r(lex.discrepancy_pct or 0.0),
+                         "", "", mark])
+            for r in pf.loads:
+                if r.neglected:
+                    wr.writerow([*where, f"link {r.link}", "neglected", r.name, "", "", "", "",
+                                 _r(r.value), r.unit, _r(r.value), "", "", mark])
+    return buf.getvalue()
+
+
+
+# --- the seed beside graphplan ---------------------------------------------------------------
+
+SEED_NAME = "000_27302160a71cc747.txt"
+"""The seed: a student's force analysis of the crank press (Russian), ``shared/seed``."""
+
+# (quantity, unit, the seed's value, how the seed has it). "stated": the figure is
+# written in the seed; "derived": computed here from figures the seed states.
+SEED: dict[str, tuple[tuple[str, str, float, str], ...]] = {
+    "(2)": (
+        ("Q", "N", 420000.0, "stated: `0,7Q0 = 0.7∙600000 = 420000 H`"),
+        ("Kp", "N/mm", 10000.0, "stated: `Кр=420/42=10 кН/мм`"),
+        ("R12", "N", 424000.0, "stated: `R12=42,4∙10=424 кН`"),
+        ("h21", "mm", 37.39, "stated: `h21=37.39 мм`"),
+        ("Mур", "N·m", 15850.0, "stated: `Мур=424∙37,39∙0,001=15,85кНм`"),
+    ),
+    "(3)": (
+        ("Q", "N", 600000.0, "stated: `Q0 = 600000 H`"),
+        ("Kp", "N/mm", 10000.0, "stated: `Кр=600/60=10 кН/мм`"),
+        ("R12", "N", 601500.0, "stated: `R12=60,15∙10=601,5 кН`"),
+        ("h21", "mm", 19.33, "stated: `h21=19,33 мм`"),
+        ("Mур", "N·m", 11627.0, "stated: `Мур=601,5∙19,33∙0,001=11,627 кНм`"),
+    ),
+    "2": (
+        ("G2", "N", 1265.49, "stated: `G2=129∙9.81=1265.49 H`"),
+        ("G3", "N", 12262.5, "stated: `G3=1250∙9.81=12262.5 H`"),
+        ("Pи2", "N", 299.7414, "stated: `Pи2=129∙(87,55∙0.02654)=299,7414H`"),
+        ("Pи3", "N", 2457.604, "stated: `Pи3=1250∙(74,08∙0.02654)=2457,604H`"),
+        ("R43", "N", 8145.71, "stated: `R43=…/191,3=8145,71 H`"),
+        ("Kp", "N/mm", 200.0, "stated: `Кр=8145,71/40,79=200 Н/мм`"),
+        ("R12", "N", 90.47 * 200.0, "derived: `R12=90,47мм` × 200 N/mm"),
+        ("h21", "mm", 37.86, "stated: `37,86` in the equation of Mур"),
+        ("Mур", "N·m", 1370.1, "stated: `Мур=90,47∙200∙37,86∙0,002=1370,1Нм`"),
+    ),
+    "3": (
+        ("G2", "N", 1265.49, "stated (as for position 2)"),
+        ("G3", "N", 12262.5, "stated (as for position 2)"),
+        ("Pи2", "N", 236.609, "stated: `Pи2=129∙(69,11∙0.02654)=236,609H`"),
+        ("Pи3", "N", 1498.51, "stated: `Pи3=1250∙(45,17∙0.02654)=1498,51H`"),
+        ("R43", "N", 6229.37, "stated: `R43=…/28=6229,37 H`"),
+        ("Kp", "N/mm", 200.0, "stated: `Кр=6229,37/31,15=200 Н/мм`"),
+        ("R12", "N", 80.65 * 200.0, "derived: `R12=80,65мм` × 200 N/mm"),
+        ("h21", "mm", 37.13, "stated: `h21=37,13 мм`"),
+        ("Mур", "N·m", 1197.8, "stated: `Мур=80,65∙200∙37,13∙0,002=1197,8Нм`"),
+    ),
+    "4": (
+        ("G2", "N", 1265.49, "stated (as for position 2)"),
+        ("G3", "N", 12262.5, "stated (as for position 2)"),
+        ("Pи3", "N", 1206.0, "stated: `Pи3=900∙(67∙0.02)=1206H`"),
+        ("R43", "N", 4460.3, "stated: `R43=…/191,83=4460,3H`"),
+        ("Kp", "N/mm", 200.0, "stated: `Кр=4460,3/22,3=200 Н/мм`"),
+        ("R12", "N", 81.28 * 200.0, "derived: `R12=81,28мм` × 200 N/mm"),
+        ("h21", "mm", 19.8, "stated: `h21=19,8 мм`"),
+        ("Mур", "N·m", 643.7, "stated: `Мур=81,28∙200∙19,8∙0,002=643,7Нм`"),
+    ),
+    "6": (("Mур", "N·m", -643.7, "stated: `Мур=-643,7Нм` (position 6 mirrors 4)"),),
+    "7": (("Mур", "N·m", -1197.8, "stated: `Мур=-1197,8Нм` (position 7 mirrors 3)"),),
+    "8": (("Mур", "N·m", -1370.1, "stated: `Мур=-1370,1Нм` (position 8 mirrors 2)"),),
+}
+
+_SEED_TITLES = {
+    "(2)": "Working stroke (рабочий ход), position (2)",
+    "(3)": "Working stroke (рабочий ход), position (3)",
+    "2": "Idle stroke (холостой ход), position 2",
+    "3": "Idle stroke (холостой ход), position 3",
+    "4": "Idle stroke (холостой ход), position 4",
+    "6": "Idle stroke (холостой ход), position 6 (mirror image of 4)",
+    "7": "Idle stroke (холостой ход), position 7 (mirror image of 3)",
+    "8": "Idle stroke (холостой ход), position 8 (mirror image of 2)",
+}
+
+
+def _graphplan_value(pf: PositionForces, mode: str, quantity: str) -> float | None:
+    """graphplan's value of a seed quantity at one position (None: not in this mode)."""
+    plans = pf.plans(mode)
+    if quantity == "Kp":
+        return plans[0].scale.per_mm
+    if quantity == "Mур":
+        return float(plans[-1].M_bal)
+    if quantity == "h21":
+        arm = _crank_arm(plans[-1])
+        return None if arm is None else arm[1]
+    if quantity.startswith("R"):
+        return _reaction_value(plans, quantity)
+    row = next((r for r in pf.loads if r.name == quantity), None)
+    if mode == "exact":
+        return None if row is None else row.value
+    for p in plans:
+        if quantity in p.readings:
+            return p.readings[quantity].value
+    return None
+
+
+def _seed_cell(x: float | None) -> str:
+    return "—" if x is None else _f(x)
+
+
+def seed_comparison_markdown(analysis: Analysis, precision: float | None = None) -> str:
+    """"The seed beside graphplan": the seed's figures next to graphplan's (examples/press.md).
+
+    For the working positions (2), (3), the idle positions 2, 3, 4 and their mirror
+    images 6, 7, 8: each figure of the seed (:data:`SEED`, stated or derived from stated
+    figures), graphplan's exact and drafted values (the variant's ``drawing.reading_mm``
+    unless ``precision`` is given) and the relative differences ``(graphplan − seed)/|seed|``.
+    Loads are the full model's values in exact mode (also where the neglect rule drops
+    them) and the force plan's reading in drafted mode ("—" where they are dropped). No
+    difference is explained here: that is the checker's job.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        Of ``examples/press.toml`` (the seed's variant).
+    precision : float or None
+        Drafting reading precision, mm.
+    """
+    positions = {pf.label: pf for pf in force_readings(analysis, precision)}
+    missing = [lab for lab in SEED if lab not in positions]
+    if missing:
+        raise ValueError(f"the variant has no position {', '.join(missing)} of the seed")
+    prec = next(iter(positions.values())).precision
+    pm = fmt(prec)
+    out = [
+        "# The seed beside graphplan",
+        "",
+        "<!-- Generated by graphplan.reports.force_tables.seed_comparison_markdown("
+        "analyze(load('examples/press.toml'))); tests/test_force_tables.py checks it is "
+        "up to date. -->",
+        "",
+        f"The seed (`{SEED_NAME}`, a student's force analysis of the crank press, "
+        "«Динамический анализ основного механизма пресса») beside graphplan's force plans "
+        "of its variant, `examples/press.toml`. Per position: each figure of the seed, "
+        "whether the seed states it or it is derived here from figures the seed states, "
+        f"graphplan's exact value and its drafted value (segments and arms read to {pm} mm), "
+        "and the relative difference (graphplan − seed)/|seed|.",
+        "",
+        "Units: N, N/mm (Kp, масштаб плана сил), mm (h21, on the position plan at "
+        "Kl = 0.001 m/mm), N·m (Mур, уравновешивающий момент, counter-clockwise positive). "
+        "Loads (G, Pи, Q): exact, the full model's magnitude; drafted, the segment read off "
+        "the force plan, — where the variant's 10 % rule neglects the load. R12, R43: "
+        "magnitudes. Kp: graphplan's force scale of the group's plan (a choice of scale from "
+        "the usual series, so no Δ is given).",
+        "",
+        "The differences are not explained here; explaining them is the job of the checker "
+        "(a later issue).",
+    ]
+    summary = []
+    for lab, rows in SEED.items():
+        pf = positions[lab]
+        out += ["", f"## {_SEED_TITLES[lab]}", "",
+                f"φ = {_f(pf.phi_deg)}°. Neglected by graphplan's rule: "
+                f"{', '.join(pf.neglected) or 'nothing'}.", ""]
+        table = []
+        for q, unit, seed, how in rows:
+            ex = _graphplan_value(pf, "exact", q)
+            dr = _graphplan_value(pf, "drafted", q)
+            table.append([q, unit, _seed_cell(seed), how, _seed_cell(ex),
+                          _seed_cell(dr),
+                          "—" if ex is None or q == "Kp" else _f((ex - seed) / abs(seed) * 100),
+                          "—" if dr is None or q == "Kp" else _f((dr - seed) / abs(seed) * 100)])
+            if q == "Mур":
+                summary.append([lab, _f(seed), _f(ex), _f(dr),
+                                _f(pf.lever_exact.M_bal), _f(pf.lever_drafted.M_bal),
+                                _f((ex - seed) / abs(seed) * 100),
+                                _f((dr - seed) / abs(seed) * 100)])
+        out += _md_table(["Quantity", "Unit", "Seed", "In the seed",
+                          "graphplan, exact", f"graphplan, drafted ({pm} mm)",
+                          "Δ exact, %", "Δ drafted, %"], table, {2, 4, 5, 6, 7})
+    out += ["", "## Mур at the seed's positions", "",
+            "The seed's curve of moments (кривая моментов сил сопротивления) is drawn from "
+            "these Mур values. graphplan: the force plans (exact, drafted) and Zhukovsky's "
+            "lever (рычаг Жуковского, exact, drafted); Δ against the seed.", ""]
+    out += _md_table(["Position", "Seed, N·m", "Plans exact", "Plans drafted",
+                      "Lever exact", "Lever drafted", "Δ exact, %", "Δ drafted, %"], summary,
+                     {1, 2, 3, 4, 5, 6, 7})
+    text = "\n".join(out) + "\n"
+    if re.search(r"\b(nan|inf)\b", text, re.IGNORECASE):
+        raise ValueError("NaN or infinity in the seed comparison")
+    return text
+
+
+__all__ = ["CSV_COLUMNS", "CURVE_POINTS", "SEED", "LoadRow", "MomentCurve", "PositionForces",
+           "curve_markdown", "force_readings", "forces_csv", "forces_markdown", "moment_curve",
+           "seed_comparison_markdown"]
