@@ -1,5 +1,6 @@
 """Sheets, renderer-independent: items, frame, title block, fonts, labels, figures, sheets 1–3."""
 
+from ..paper import FORMATS, GRAPH26_SIZE, MARGIN, MARGIN_LEFT, TITLE_BLOCK_SIZE, Page, Rect
 from .dynamics_figures import (
     BELOW,
     DOT,
@@ -61,21 +62,16 @@ from .sheet import (
     DEFAULT_SIGNATURES,
     FORM1_LABELS,
     FORM1_SEGMENTS,
-    FORMATS,
-    GRAPH26_SIZE,
     ITEM_TYPES,
     LABEL_HEIGHTS,
     LAYERS,
     LINE_PITCH,
     MAIN,
-    MARGIN,
     MARGIN_LAYERS,
-    MARGIN_LEFT,
     MEDIUM,
     SLANT_DEG,
     TEXT_HEIGHTS,
     THIN,
-    TITLE_BLOCK_SIZE,
     Arc,
     Arrow,
     Circle,
@@ -85,9 +81,7 @@ from .sheet import (
     Item,
     Leaf,
     Line,
-    Page,
     Polyline,
-    Rect,
     S,
     Sheet,
     Style,

@@ -30,8 +30,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..drawing import Page
 from ..errors import InputError
+from ..paper import Page
 from ..project import Analysis
 from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
 from .reduction import (

@@ -55,7 +55,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import LineString, Point
 
 from ..errors import SingularPoseError
 from ..forces import Forces, Loads, dyad_pairs, reaction_name
@@ -193,6 +192,8 @@ class _F:
 
 def _arm(c: Vec2, x: Vec2, d: Vec2) -> float:
     """Perpendicular distance (mm) from c to the line through x along d (shapely)."""
+    from shapely.geometry import LineString, Point  # a geometry library: only when drawing
+
     u = unit_vector(d)
     ext = float(np.hypot(*(c - x))) + 10.0  # the line drawn past the foot of the perpendicular
     line = LineString([as_xy(x - ext * u), as_xy(x + ext * u)])

@@ -18,8 +18,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..drawing import GRAPH26_SIZE, TITLE_BLOCK_SIZE, Page, Rect
 from ..errors import LayoutError
+from ..paper import GRAPH26_SIZE, TITLE_BLOCK_SIZE, Page, Rect
 
 GAP = 8.0  #: clearance between regions, mm
 CAPTION = 7.0  #: caption strip above a plan cell, mm

@@ -15,10 +15,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..drawing import GRAPH26_SIZE, Page
 from ..errors import InputError, LayoutError
 from ..kinematics import in_working_stroke
 from ..model import Mechanism
+from ..paper import GRAPH26_SIZE, Page
 from ..plans import plan_name
 from ..units import Scale, fit_scale, nice_ceil
 from .layout import (

@@ -1,0 +1,218 @@
+"""The layer rule of the stage packages (issue 16), read off the source by an AST walk.
+
+A module imports only from its own package and from LOWER layers, in this order:
+
+    base (errors, units, geometry, files, paper) → model → kinematics → forces → dynamics
+    → plans → project → reports → drawing → render → checking | teaching → shell
+
+``checking`` and ``teaching`` are applications side by side: neither imports the other. The
+shell is the package root's public API, ``cli``, ``outputs`` (writing the files) and
+``__main__``. Every import counts, at the top of a module or inside a function, and so does
+an import under ``if TYPE_CHECKING``. The only upward imports allowed are the ones named in
+:data:`ALLOWED_UPWARD`, each with its reason; and there is no import cycle between modules
+outside those edges.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent / "graphplan"
+
+#: Layers, lowest first; a package's rank is its index (checking and teaching share one).
+LAYERS: tuple[tuple[str, ...], ...] = (
+    ("errors", "units", "geometry", "files", "paper"),
+    ("model",),
+    ("kinematics",),
+    ("forces",),
+    ("dynamics",),
+    ("plans",),
+    ("project",),
+    ("reports",),
+    ("drawing",),
+    ("render",),
+    ("checking", "teaching"),
+    ("", "cli", "outputs", "__main__"),  # "" is the package root (graphplan/__init__.py)
+)
+#: Packages of one layer that still must not import each other.
+APART = {"checking", "teaching"}
+
+#: Upward imports that stay for now, each with its reason: (importer, imported) → why.
+#: Imports inside a Jupyter display hook (a method named ``_repr_*_``) are the standing
+#: exception and need no entry: a value shows itself as the picture or table of its stage.
+ALLOWED_UPWARD: dict[tuple[str, str], str] = {
+    ("graphplan.dynamics.reduction", "graphplan.project"):
+        "takes an Analysis; to take the kinematics and the loads (solve_project)",
+    ("graphplan.dynamics.machine", "graphplan.project"):
+        "takes an Analysis; to take the dynamic model and the diagram sizes (solve_project)",
+    ("graphplan.model.loader", "graphplan.dynamics"):
+        "validates motor_series/motor_speed against the motor catalogue; the catalogue's "
+        "names and speeds to move below the loader",
+    ("graphplan.plans.constructions", "graphplan.project"):
+        "plan_scales() re-derives sheet 1's scales; to be deleted (solve_project holds them)",
+    ("graphplan.project.layout", "graphplan.drawing.sheet"):
+        "fit_columns/titled_table letter tables (text widths, table items): to move to drawing/",
+}
+
+
+def _unit(module: str) -> str:
+    """The layer unit of a module: its stage package, a base module, or a shell module."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else ""
+
+
+def _rank(module: str) -> int:
+    unit = _unit(module)
+    for k, names in enumerate(LAYERS):
+        if unit in names:
+            return k
+    raise AssertionError(f"{module}: not in any layer of tests/test_architecture.py")
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for path in sorted(ROOT.rglob("*.py")):
+        parts = list(path.relative_to(ROOT.parent).with_suffix("").parts)
+        if parts[-1] == "__init__":
+            parts = parts[:-1]
+        out[".".join(parts)] = path
+    return out
+
+
+MODULES = _modules()
+
+
+def _target(base: str, name: str) -> str:
+    """``from base import name``: the module ``base.name`` if it is one, else ``base``."""
+    sub = f"{base}.{name}"
+    return sub if sub in MODULES else base
+
+
+def _imports(module: str, path: Path) -> list[tuple[str, int, bool]]:
+    """(imported graphplan module, line, in a display hook) of every import in a module."""
+    is_pkg = path.name == "__init__.py"
+    package = module if is_pkg else module.rpartition(".")[0]
+    out = []
+
+    def walk(node: ast.AST, hook: bool) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                walk(child, hook or HOOK.fullmatch(child.name) is not None)
+                continue
+            if isinstance(child, ast.ImportFrom):
+                if child.level:
+                    parts = package.split(".")
+                    parts = parts[: len(parts) - (child.level - 1)]
+                    base = ".".join(parts + ([child.module] if child.module else []))
+                else:
+                    base = child.module or ""
+                if base == "graphplan" or base.startswith("graphplan."):
+                    out.extend((_target(base, a.name), child.lineno, hook) for a in child.names)
+            elif isinstance(child, ast.Import):
+                out.extend((a.name, child.lineno, hook) for a in child.names
+                           if a.name == "graphplan" or a.name.startswith("graphplan."))
+            walk(child, hook)
+
+    walk(ast.parse(path.read_text(encoding="utf-8")), False)
+    return out
+
+
+HOOK = re.compile(r"_repr_\w+_")
+ALL_EDGES = sorted({(m, t, line, hook) for m, p in MODULES.items()
+                    for t, line, hook in _imports(m, p) if t != m})
+#: (importer, imported, line) of the imports that count (display hooks left out)
+EDGES = [(m, t, line) for m, t, line, hook in ALL_EDGES if not hook]
+
+
+def _upward(importer: str, imported: str) -> bool:
+    a, b = _rank(importer), _rank(imported)
+    if b > a:
+        return True
+    units = {_unit(importer), _unit(imported)}
+    return b == a and len(units) == 2 and units <= APART
+
+
+def test_every_module_has_a_layer():
+    for m in MODULES:
+        _rank(m)
+
+
+def test_no_upward_import():
+    bad = [f"{ROOT.parent / MODULES[m].relative_to(ROOT.parent)}:{line}: {m} imports {t}"
+           for m, t, line in EDGES if _upward(m, t) and (m, t) not in ALLOWED_UPWARD]
+    assert not bad, "upward imports (lower layers must not know higher ones):\n" + "\n".join(bad)
+
+
+def test_the_allowed_upward_imports_still_exist():
+    """An allowance whose import is gone is dropped from the list (it would hide a new one)."""
+    present = {(m, t) for m, t, _ in EDGES}
+    stale = [f"{m} → {t}" for m, t in ALLOWED_UPWARD if (m, t) not in present]
+    assert not stale, "remove from ALLOWED_UPWARD: " + ", ".join(stale)
+
+
+def _cycles(edges: set[tuple[str, str]]) -> list[list[str]]:
+    """Strongly connected components of more than one module (Tarjan)."""
+    graph: dict[str, set[str]] = {}
+    for a, b in edges:
+        graph.setdefault(a, set()).add(b)
+        graph.setdefault(b, set())
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on: set[str] = set()
+    out: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in sorted(graph[v]):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_cycle():
+    edges = {(m, t) for m, t, _ in EDGES if (m, t) not in ALLOWED_UPWARD}
+    cycles = _cycles(edges)
+    assert not cycles, "import cycles:\n" + "\n".join(" ⇄ ".join(c) for c in cycles)
+
+
+@pytest.mark.parametrize("package", sorted(
+    {m for m in MODULES if MODULES[m].name == "__init__.py" and m != "graphplan"}))
+def test_each_package_says_what_it_is_for(package):
+    doc = ast.get_docstring(ast.parse(MODULES[package].read_text(encoding="utf-8")))
+    assert doc, f"{package}: no docstring"
+    assert len(doc.splitlines()[0]) <= 100
+
+
+def test_the_layer_test_sees_an_upward_import():
+    """The rule itself: a kinematics module importing a sheet would be caught."""
+    assert _upward("graphplan.kinematics.cycle", "graphplan.drawing.sheet")
+    assert _upward("graphplan.checking.engine", "graphplan.teaching.model")
+    assert not _upward("graphplan.drawing.sheet1", "graphplan.project.scales")
+    assert not _upward("graphplan.plans.forces", "graphplan.plans.constructions")
+    hooks = [(m, t) for m, t, _, hook in ALL_EDGES if hook]
+    assert ("graphplan.drawing.sheet", "graphplan.render.svg") in hooks  # Sheet._repr_svg_
+    assert _cycles({("a", "b"), ("b", "c"), ("c", "a"), ("c", "d")}) == [["a", "b", "c"]]
