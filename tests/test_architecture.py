@@ -2,11 +2,11 @@
 
 A module imports only from its own package and from LOWER layers, in this order:
 
-    base (errors, units, geometry, files, paper) → model → kinematics → forces → dynamics
+    base (errors, units, geometry, files, paper, console) → model → kinematics → forces → dynamics
     → plans → project → reports → drawing → render → checking | teaching → shell
 
 ``checking`` and ``teaching`` are applications side by side: neither imports the other. The
-shell is the package root's public API, ``cli``, ``outputs`` (writing the files), ``console`` and
+shell is the package root's public API, ``cli``, ``outputs`` (writing the files) and
 ``__main__``. Every import counts, at the top of a module or inside a function, and so does
 an import under ``if TYPE_CHECKING``. The only upward imports allowed are the ones named in
 :data:`ALLOWED_UPWARD`, each with its reason; and there is no import cycle between modules
@@ -25,7 +25,7 @@ ROOT = Path(__file__).resolve().parent.parent / "graphplan"
 
 #: Layers, lowest first; a package's rank is its index (checking and teaching share one).
 LAYERS: tuple[tuple[str, ...], ...] = (
-    ("errors", "units", "geometry", "files", "paper"),
+    ("errors", "units", "geometry", "files", "paper", "console"),
     ("model",),
     ("kinematics",),
     ("forces",),
@@ -36,7 +36,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("drawing",),
     ("render",),
     ("checking", "teaching"),
-    ("", "cli", "outputs", "console", "__main__"),  # "": the package root (__init__.py)
+    ("", "cli", "outputs", "__main__"),  # "": the package root (graphplan/__init__.py)
 )
 #: Packages of one layer that still must not import each other.
 APART = {"checking", "teaching"}
