@@ -2,8 +2,9 @@
 
 A module imports only from its own package and from LOWER layers, in this order:
 
-    base (errors, units, geometry, files, paper, console) → model → kinematics → forces → dynamics
-    → plans → project → reports → drawing → render → checking | teaching → shell
+    base (errors, units, geometry, files, paper, console, safe_text) → model → kinematics
+    → forces → dynamics → plans → project → reports → drawing → render → checking | teaching
+    → shell
 
 ``checking`` and ``teaching`` are applications side by side: neither imports the other. The
 shell is the package root's public API, ``cli``, ``outputs`` (writing the files) and
@@ -25,7 +26,7 @@ ROOT = Path(__file__).resolve().parent.parent / "graphplan"
 
 #: Layers, lowest first; a package's rank is its index (checking and teaching share one).
 LAYERS: tuple[tuple[str, ...], ...] = (
-    ("errors", "units", "geometry", "files", "paper", "console"),
+    ("errors", "units", "geometry", "files", "paper", "console", "safe_text"),
     ("model",),
     ("kinematics",),
     ("forces",),
