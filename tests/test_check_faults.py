@@ -154,3 +154,15 @@ def test_the_students_polygon_with_graphplans_values_gives_graphplans_reaction_a
         pin = ref.kin.pos.points["A"][k] - ref.kin.pos.points["O"][k]
         m = pin[0] * r12[1] - pin[1] * r12[0]
         assert m == pytest.approx(ref.forces["rule"].M_bal[k], rel=1e-6)
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_the_coriolis_acceleration_left_out_is_one_fault(seed):
+    # the shaper's plan drawn without aᵏ: every acceleration segment that changes follows
+    # from the first, which is the fault ("coriolis"), and so do the forces from them
+    gen = generate(EXAMPLES / "shaper.toml", positions=("2", "3", "11"))
+    faulty, (fault,) = inject(gen, ("coriolis-left-out",), random.Random(seed))
+    r = _check(faulty)
+    assert _faults_found(r) == {(fault.position, fault.quantity, "coriolis")}, fault.line
+    assert len(fault.carried) >= 3
+    assert any(not f.primary for f in r.wrong)

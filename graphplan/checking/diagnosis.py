@@ -99,6 +99,7 @@ class Diagnoser:
         self.w = checker.w
         self.ref = checker.ref
         self.figs = figs
+        self._left_out: dict[str, str] = {}  # position → the first segment without aᵏ
 
     # --- helpers ----------------------------------------------------------------------
 
@@ -152,7 +153,8 @@ class Diagnoser:
 
         for rank, h in enumerate((self._arithmetic, self._follows, self._unit, self._sign,
                                   self._formula,
-                                  self._coriolis, self._segment, self._polygon,
+                                  self._coriolis, self._coriolis_plan, self._segment,
+                                  self._polygon,
                                   self._lever_arm, self._geometry, self._scale,
                                   self._models, self._own_reading, self._other_position,
                                   self._neighbours, self._label, self._series)):
@@ -439,6 +441,54 @@ class Diagnoser:
 
     def _coriolis(self, f: Fig) -> Diag | None:
         return self._coriolis_factor(f)
+
+    def _coriolis_plan(self, f: Fig) -> Diag | None:
+        """A segment of the acceleration plan drawn with the student's own Coriolis
+        acceleration (a wrong one: it follows from it), or with none where there is one
+        (left out of the vector equation: the first such segment of the position is the
+        fault, the others follow from it)."""
+        q, o = f.q, f.occs[0]
+        if q.kind != "segment" or q.scale != "Ka" or o.position not in self.ref.labels or \
+                f.e is None or self.is_coriolis(f):
+            return None
+        k = self.ref.index(o.position)
+        names = self.ref.coriolis_names(k)
+        if len(names) != 1:
+            return None
+        mine = [g for g in self.figs.values() if self.is_coriolis(g) and
+                g.occs[0].position == o.position and g.e]
+        if mine:
+            g = min(mine, key=lambda x: x.q.kind != "segment")
+            if g.verdict != "wrong":
+                return None
+            factor = g.s / g.e
+        else:
+            g, factor = None, 0.0
+        sc = f.scales
+        if not (sc.get("Kv") and sc.get("Ka")):
+            return None
+        v = self.ref.reading_mm_coriolis(q.name, k, sc.get("Kl", 1e-3), sc["Kv"], sc["Ka"],
+                                         round(factor, 6))
+        if v is None or not self.near(f, v) or self.near(f, v, f.e):
+            return None
+        if g is not None:
+            en = (f"follows from {g.name}: the plan drawn with that Coriolis acceleration "
+                  f"gives {num(v)} mm (graphplan: {num(f.e)} mm).")
+            ru = (f"следует из {g.name}: план, построенный с этим кориолисовым ускорением, "
+                  f"даёт {num(v, 'ru')} мм (по расчёту {num(f.e, 'ru')} мм).")
+            return Diag("propagated", en, ru, (g.name,))
+        first = self._left_out.setdefault(o.position, f.name)
+        if first != f.name:
+            en = (f"follows from the Coriolis acceleration left out (see {first}): "
+                  f"{num(v)} mm without it (graphplan: {num(f.e)} mm).")
+            ru = (f"следует из пропущенного кориолисова ускорения (см. {first}): "
+                  f"{num(v, 'ru')} мм без него (по расчёту {num(f.e, 'ru')} мм).")
+            return Diag("propagated", en, ru, (first,))
+        en = (f"the plan is drawn without the Coriolis acceleration aᵏ = 2·ω·v_r: without it "
+              f"{q.name} is {num(v)} mm, as stated; with it {num(f.e)} mm.")
+        ru = (f"план построен без кориолисова ускорения aᵏ = 2·ω·v_r: без него {q.name} = "
+              f"{num(v, 'ru')} мм, как записано; с ним {num(f.e, 'ru')} мм.")
+        return Diag("coriolis", en, ru)
 
     def _own_reading(self, f: Fig) -> Diag | None:
         """The student's own value of the same figure at another position, or of another

@@ -38,11 +38,12 @@ from .expressions import evaluate
 from .reference import Reference
 
 FAULT_KINDS = ("arithmetic", "scale", "other", "sign", "unit", "lever-arm", "unit-down",
-               "coriolis", "reuse", "label", "segment-for-force")
+               "coriolis", "reuse", "label", "segment-for-force", "coriolis-left-out")
 KIND_OF_FAULT = {"arithmetic": "arithmetic", "scale": "scale", "other": "other-variant",
                  "sign": "sign", "unit": "unit", "lever-arm": "lever-arm",
                  "unit-down": "unit", "coriolis": "coriolis", "reuse": "other-variant",
-                 "label": "label", "segment-for-force": "scale"}
+                 "label": "label", "segment-for-force": "scale",
+                 "coriolis-left-out": "coriolis"}
 
 
 def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
@@ -593,6 +594,10 @@ def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
         i, j = rng.choice(cands)
         label = gen.positions[i].label
         old = positions[i][j]
+        if kind == "coriolis-left-out":
+            used_pos.add(i)
+            faults.append(_leave_out_coriolis(positions[i], j, label, ref, now))
+            continue
         new, quantity = _apply(kind, old, label, ref, now, rng)
         positions[i][j] = new
         used_pos.add(i)
@@ -604,6 +609,51 @@ def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
     out = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
                                        zip(gen.positions, positions, strict=True)))
     return out, tuple(faults)
+
+
+def _without_coriolis(lines: list[GenLine], label: str, ref: Reference, gen: Generated
+                      ) -> list[tuple[int, str]]:
+    """The acceleration readings of a position drawn without the Coriolis acceleration:
+    (line index, segment as written) for each one that differs by 2 mm and 15 % or more."""
+    sc = _scales(gen)
+    kl, kv, ka = sc.get("Кl", 1e-3), sc.get("Kv"), sc.get("Ka")
+    k = ref.index(label)
+    if k is None or not kv or not ka or len(ref.coriolis_names(k)) != 1:
+        return []
+    out = []
+    for m, ln in enumerate(lines):
+        if "reading" not in ln.tags or ln.operands[1].name != "Ka":
+            continue
+        seg = ln.operands[0]
+        v = ref.reading_mm_coriolis(seg.name, k, kl, kv, ka, 0.0)
+        mine = float(seg.text.replace(",", "."))
+        if v is not None and abs(v - mine) >= 2 and abs(v - mine) >= 0.15 * max(v, mine) \
+                and _far(v, mine):
+            out.append((m, _fmt(v, decimals=2)))
+    return out
+
+
+def _leave_out_coriolis(lines: list[GenLine], j: int, label: str, ref: Reference,
+                        gen: Generated) -> Fault:
+    """The Coriolis acceleration left out: its lines struck out, the acceleration plan
+    drawn without it (every reading that changes), and the values carried on."""
+    changes = _without_coriolis(lines, label, ref, gen)
+    first = lines[changes[0][0]]
+    carried: list[str] = []
+    for m, text in changes:
+        old = lines[m]
+        lines[m] = replace(old, operands=(replace(old.operands[0], text=text),
+                                          *old.operands[1:]))
+        if m != changes[0][0]:
+            carried.append(lines[m].text())
+        carried += _carry(lines, m, old, lines[m])
+    cor = lines[j]
+    drop = {j} | {m for m, ln in enumerate(lines) if "drawn" in ln.tags and cor.lhs in ln.tags}
+    for m in sorted(drop, reverse=True):
+        del lines[m]
+    first_now = next(ln for ln in lines if ln.lhs == first.lhs and "reading" in ln.tags)
+    return Fault("coriolis-left-out", label, first.operands[0].name, "coriolis",
+                 first_now.text(), tuple(carried))
 
 
 def _written_result(ln: GenLine) -> str:
@@ -690,6 +740,11 @@ def _fits(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated) ->
         return ("reaction" in ln.tags or "load" in ln.tags) and ln.result > 100.0
     if kind == "coriolis":
         return "coriolis" in ln.tags and ln.result > 0.05
+    if kind == "coriolis-left-out":
+        if "coriolis" not in ln.tags or ln.result <= 0.05:
+            return False
+        lines = next(p.lines for p in gen.positions if p.label == label)
+        return bool(_without_coriolis(list(lines), label, ref, gen))
     if kind == "reuse":
         return "reading" in ln.tags and bool(_own_elsewhere(ln, label, gen))
     if kind == "label":

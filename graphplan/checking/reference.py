@@ -339,6 +339,36 @@ class Reference:
             return None if ka is None else ap.readings[name].exact_mm
         return None
 
+    def reading_mm_coriolis(self, name: str, k: int, kl: float, kv: float, ka: float,
+                            factor: float) -> float | None:
+        """The length (mm) of a segment of the acceleration plan built with every Coriolis
+        component ``factor`` times its size (0: left out of the vector equations; 0.5:
+        without its factor 2; s/e: the student's own) — the plan a student draws from
+        their own Coriolis acceleration."""
+        from dataclasses import replace as _replace
+
+        from ..constructions import acceleration_plan
+        from ..units import Scale
+
+        key = ("coriolis", k, kl, kv, ka, factor)
+        if key not in self._plans:
+            self.reading_mm(name, k, kl, kv, ka)
+            vp, _ap = self._plans[(k, kl, kv, ka)]
+            vp2 = _replace(vp, sliding={s: v * factor for s, v in vp.sliding.items()})
+            self._plans[key] = acceleration_plan(self.mech, self.kin, k,
+                                                 Scale("Kl", kl, "m/mm"),
+                                                 Scale("Ka", ka, "(m/s²)/mm"), vp2)
+        ap = self._plans[key]
+        return ap.readings[name].exact_mm if name in ap.readings else None
+
+    def coriolis_names(self, k: int) -> list[str]:
+        """The Coriolis segments (``k_A3``) of the acceleration plan of position k that are
+        not zero."""
+        self.reading_mm("πa", k, 1e-3, 0.01, 0.05)
+        _vp, ap = self._plans[(k, 1e-3, 0.01, 0.05)]
+        return [n for n, r in ap.readings.items() if r.quantity.startswith("aᵏ") and
+                abs(r.value) > 1e-9]
+
     def plan_value(self, name: str, k: int) -> float | None:
         """The physical value (SI) of a segment of the velocity or acceleration plan of
         position k (``"k_A3"``: the Coriolis acceleration)."""
