@@ -347,7 +347,7 @@ class Reference:
         their own Coriolis acceleration."""
         from dataclasses import replace as _replace
 
-        from ..constructions import acceleration_plan
+        from ..plans import acceleration_plan
         from ..units import Scale
 
         key = ("coriolis", k, kl, kv, ka, factor)
