@@ -221,3 +221,20 @@ def test_command_line(sheets, tmp_path, capsys):
     assert (out / "summary.csv").is_file()
     assert main(["check", "--drawing", str(sheet)]) == 2  # no --variant: one line
     assert "--variant" in capsys.readouterr().err
+
+
+def test_force_plans_and_h21_of_graphplans_sheet2(tmp_path):
+    """The force plans of sheet 2 are found by the names along their lines, their positions
+    by the forces they fit (their captions name none), their Kp read from the captions;
+    the reactions R12 (= R21, R41) and R23 of every position are measured right, and h21 of
+    position 2 (on its scheme, at the scheme's Kl)."""
+    assert main(["sheets", str(EX / "press.toml"), "--format", "dxf", "-o",
+                 str(tmp_path)]) == 0
+    rep = check_drawing(tmp_path / "sheet2.dxf", EX / "press.toml", lang="en").report
+    figs = {(f.position, f.quantity): f for f in rep.figures if f.verdict != "not compared"}
+    for pos in ("2", "(2)", "(3)"):
+        for q in ("R12_mm", "R23_mm", "R41_mm"):
+            assert figs[(pos, q)].verdict == "ok", (pos, q)
+    assert figs[("2", "h21")].verdict == "ok"
+    assert figs[("2", "G3_mm")].verdict == "ok" and figs[("2", "Pи3_mm")].verdict == "ok"
+    assert sum(f.verdict == "ok" for f in figs.values()) >= 20

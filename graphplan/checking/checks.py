@@ -214,10 +214,13 @@ class Checker:
     def _reconcile(self, figs: dict[tuple, Fig], findings: list[Finding]) -> None:
         """A figure is never shown right under a finding of its own line that calls its
         written value wrong (an Mур with a wrong sum is not "ok" because its value is)."""
-        wrong = {(f.file_line, f.quantity) for f in findings if f.verdict == "wrong"}
+        # by position too: lines without a file line (a drawing's) are told apart by it
+        wrong = {(f.position, f.file_line, f.quantity) for f in findings
+                 if f.verdict == "wrong"}
         for f in figs.values():
             o = f.occs[0]
-            if f.verdict in ("ok", "inaccurate") and (o.line.file_line, o.name) in wrong:
+            if f.verdict in ("ok", "inaccurate") and (o.position, o.line.file_line,
+                                                      o.name) in wrong:
                 f.verdict = "wrong"
 
     def _unreadable(self) -> list[Finding]:

@@ -62,10 +62,12 @@ class Judged:
     findings: list[Finding] = field(default_factory=list)
     figures: dict[str, float] = field(default_factory=dict)
     key: str = ""
+    pos: str | None = None  # a force plan's or an arm's position
+    scales: dict[str, float] = field(default_factory=dict)  # its own (Kp, a scheme's Kl)
 
     @property
     def position(self) -> str | None:
-        return self.laid.position if self.laid else None
+        return self.laid.position if self.laid else self.pos
 
 
 @dataclass(slots=True)
@@ -103,12 +105,14 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     found = find_plans(scene)
     sheet = assign_scales(found, stated_scales(d.texts))
     notes: list[str] = list(d.notes)
-    if not found:
+    if not found and not any(t.text.strip() in ("h21",) or "сил" in t.text.lower()
+                             for t in d.texts):
         raise DrawingError(
             f"{path}: no plan found: no text 'p' (velocity) or 'π' (acceleration) near a "
-            f"line end ({len(d.segments)} lines, {len(d.texts)} texts read)")
+            f"line end, no force named along a line ({len(d.segments)} lines, "
+            f"{len(d.texts)} texts read)")
     for kind in ("velocity", "acceleration"):
-        if not any(p.kind == kind for p in found):
+        if found and not any(p.kind == kind for p in found):
             pole = POLE[kind]
             notes.append(_say(lang, f"no {kind} plan found: no text '{pole}' near a line end",
                               f"план {'скоростей' if kind == 'velocity' else 'ускорений'} не "
@@ -116,15 +120,21 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     ref = reference_for(Path(variant))
     tol = Tolerances.of(tolerances)
     judged = [_judge(p, ref, sheet, tol, lang) for p in found]
-    judged.sort(key=lambda j: (j.found.kind != "velocity", ref.index(j.position)
-                               if j.position in ref.labels else 99))
+    from .forces import find_force_plans, find_h21
+    from .judge_forces import judge_arm, judge_force_plan
+
+    judged += [judge_force_plan(fp, ref, tol, lang) for fp in find_force_plans(scene)]
+    judged += [judge_arm(a, ref, sheet, lang) for a in find_h21(scene)]
+    order = {"velocity": 0, "acceleration": 1, "force": 2, "arm": 3}
+    judged.sort(key=lambda j: (ref.index(j.position) if j.position in ref.labels else 99,
+                               order.get(j.found.kind, 4)))
     # one plan of each kind per position: a second one is reported and left out
     seen: dict[tuple[str, str], Judged] = {}
     for j in judged:
         if j.position is None:
             continue
-        k = (j.found.kind, j.position)
-        if k in seen:
+        k = (j.found.kind, j.position, tuple(sorted(j.figures)))
+        if k in seen and j.found.kind in PLAN_WORDS:
             notes.append(_say(lang, f"a second {j.found.kind} plan of position {j.position} "
                               f"({j.found.where}) is not checked",
                               f"второй {PLAN_WORDS[j.found.kind][1]} положения {j.position} "
@@ -135,15 +145,17 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     # the figures of every plan, checked by the calculation checker
     scales = {s: v for s, v in sheet.items()}
     for j in judged:
-        sym = KINDS[j.found.kind]
-        if j.scale and sym not in scales:
+        sym = KINDS.get(j.found.kind)
+        if sym and j.scale and sym not in scales:
             scales[sym] = j.scale
     groups: dict[tuple, list[Judged]] = {}
     for j in judged:
         if j.figures:
-            sym = KINDS[j.found.kind]
             sc = dict(scales)
-            sc[sym] = j.scale or scales.get(sym, 0.0)
+            if j.found.kind in KINDS:
+                sym = KINDS[j.found.kind]
+                sc[sym] = j.scale or scales.get(sym, 0.0)
+            sc.update(j.scales)
             groups.setdefault(tuple(sorted(sc.items())), []).append(j)
     findings: list[Finding] = []
     figures: list[FigureCheck] = []
@@ -197,10 +209,15 @@ def _positions(ref, judged):
 def _work(path: Path, variant: Path, scales: dict[str, float], js: list[Judged], lang: str,
           student: str, group: str) -> StudentWork:
     """The figures measured on the drawing as a student's work (one figure a segment)."""
-    units = {"Kl": "м/мм", "Kv": "(м/с)/мм", "Ka": "(м/с²)/мм", "Kp": "Н/мм"}
+    units = {"Kl": "м/мм", "Kv": "(м/с)/мм", "Ka": "(м/с²)/мм"}
     general = tuple(Line(f"{s} = {v!r} {units[s]}", "general", f"sheet: {s}")
                     for s, v in scales.items() if s in units and v)
     by_pos: dict[str, list[Line]] = {}
+    if scales.get("Kp"):  # a scale of each position's force plans
+        for j in js:
+            if j.position and j.position not in by_pos:
+                by_pos[j.position] = [Line(f"Kp = {scales['Kp']!r} Н/мм", j.position,
+                                           f"sheet: Kp ({j.position})")]
     for j in js:
         for name, mm in j.figures.items():
             by_pos.setdefault(j.position, []).append(  # type: ignore[arg-type]

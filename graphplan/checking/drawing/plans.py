@@ -28,7 +28,8 @@ _POSITION = re.compile(
     r"(?:пол(?:ожени[еяию]|\.)?|pos(?:ition)?\.?|№)\s*№?\s*"
     r"(\(\s*(?:\d{1,2}|[a-zа-я])\s*\)['′ʹ’]?|\d{1,2}['′ʹ’]?|[a-zа-я]['′ʹ’]?)(?![\dA-Za-zА-Яа-я])",
     re.IGNORECASE)
-_KIND_WORDS = {"velocity": ("скорост", "velocit"), "acceleration": ("ускорен", "accelerat"),
+_KIND_WORDS = {"lever": ("рычаг", "жуковск", "lever", "zhukovsk"),
+               "velocity": ("скорост", "velocit"), "acceleration": ("ускорен", "accelerat"),
                "force": ("сил", "force", "кривошип", "crank", "групп", "group"),
                "scheme": ("схема", "scheme", "diagram of", "план положени")}
 _SCALE = re.compile(r"(?<![A-Za-zА-Яа-я])(?:[KК]|μ|µ|m(?=u))\s*u?\s*_?\s*\{?\s*"
@@ -195,7 +196,21 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
         plans.append(FoundPlan(kind, g, poles[0].name, points, letters, bbox, segments=segs,
                                options=options))
     _captions(scene, plans)
-    return plans
+    return [p for p in plans if not _is_lever(scene, p)]
+
+
+def _is_lever(scene: Scene, p: FoundPlan) -> bool:
+    """A plan captioned as Zhukovsky's lever (letters unprimed): nearer its lever caption
+    than any caption of a plan."""
+    x0, y0, x1, y1 = p.bbox
+    reach = 0.5 * math.hypot(x1 - x0, y1 - y0) + 40.0
+    own = bbox_distance(p.caption, p.bbox) if p.caption is not None else math.inf
+    for t in scene.drawing.texts:
+        if caption_kind(t.text) == "lever":
+            d = bbox_distance(t, p.bbox)
+            if d <= reach and d < own:
+                return True
+    return False
 
 
 def _captions(scene: Scene, plans: list[FoundPlan]) -> None:

@@ -99,6 +99,7 @@ class Scene:
                 nd.segments.append(i)
         self._passes()
         self._mark_tips()
+        self.heads = self._heads()
         self.group_of = self._groups()
         self.letters = self._letters()
 
@@ -134,6 +135,7 @@ class Scene:
         cell = ARROW_MM
         grid: dict[tuple[int, int], list[int]] = {}
         cents = []
+        tips = [head_tip(pts) for pts in self.arrow_tips]
         for h, pts in enumerate(self.arrow_tips):
             cx = sum(p[0] for p in pts) / len(pts)
             cy = sum(p[1] for p in pts) / len(pts)
@@ -163,7 +165,14 @@ class Scene:
                             pts = self.arrow_tips[h]
                             if min(math.hypot(px - ex, py - ey) for px, py in pts) > 1.0:
                                 continue
-                            far = max((px - ex) * dx + (py - ey) * dy for px, py in pts)
+                            # the head must point on along the line, its tip ahead (the
+                            # head of the vector before, whose tip is here, does not)
+                            tx, ty = tips[h]
+                            far = (tx - ex) * dx + (ty - ey) * dy
+                            hx, hy = tx - cx, ty - cy
+                            hl = math.hypot(hx, hy)
+                            if far <= 0.05 or hl == 0 or (hx * dx + hy * dy) / hl < 0.9:
+                                continue
                             best = max(best, far)
                 if best > 0.05:
                     ends[e] = (ex + best * dx, ey + best * dy)
@@ -178,8 +187,7 @@ class Scene:
         for pts in self.arrow_tips:
             if len(pts) < 3:
                 continue
-            tip = max(pts, key=lambda p: sum(math.hypot(p[0] - q[0], p[1] - q[1])
-                                             for q in pts))
+            tip = head_tip(pts)
             ci, cj = math.floor(tip[0] / SNAP_MM), math.floor(tip[1] / SNAP_MM)
             for di in (-2, -1, 0, 1, 2):
                 for dj in (-2, -1, 0, 1, 2):
@@ -187,6 +195,46 @@ class Scene:
                         nd = self.nodes[n]
                         if math.hypot(nd.x - tip[0], nd.y - tip[1]) <= 2 * SNAP_MM:
                             nd.tip = True
+
+    def _heads(self) -> list[tuple[bool, bool]]:
+        """For each line, whether an arrowhead sits on its start and on its end, pointing
+        along the line (in a polygon of forces every vertex is some arrow's tip: the
+        sense of a force is its own arrowhead's)."""
+        heads = []
+        for pts in self.arrow_tips:
+            if len(pts) < 3:
+                continue
+            tip = head_tip(pts)
+            xs = [p[0] for p in pts]
+            ys = [p[1] for p in pts]
+            if max(xs) - min(xs) > ARROW_MM or max(ys) - min(ys) > ARROW_MM:
+                continue
+            cx, cy = sum(xs) / len(xs), sum(ys) / len(ys)
+            L = math.hypot(tip[0] - cx, tip[1] - cy)
+            if L > 0:
+                heads.append((tip, ((tip[0] - cx) / L, (tip[1] - cy) / L)))
+        cell = 2.0
+        grid: dict[tuple[int, int], list[int]] = {}
+        for h, (tip, _u) in enumerate(heads):
+            grid.setdefault((math.floor(tip[0] / cell), math.floor(tip[1] / cell)), []
+                            ).append(h)
+        out = []
+        for s in self.segments:
+            L = s.length
+            flags = []
+            for ex, ey, ox, oy in ((s.x1, s.y1, s.x2, s.y2), (s.x2, s.y2, s.x1, s.y1)):
+                dx, dy = (ex - ox) / L, (ey - oy) / L
+                ci, cj = math.floor(ex / cell), math.floor(ey / cell)
+                hit = False
+                for di in (-1, 0, 1):
+                    for dj in (-1, 0, 1):
+                        for h in grid.get((ci + di, cj + dj), ()):
+                            (tx, ty), (ux, uy) = heads[h]
+                            if math.hypot(tx - ex, ty - ey) < 0.5 and ux * dx + uy * dy > 0.95:
+                                hit = True
+                flags.append(hit)
+            out.append((flags[0], flags[1]))
+        return out
 
     def _node(self, x: float, y: float) -> int:
         ci, cj = math.floor(x / SNAP_MM), math.floor(y / SNAP_MM)
@@ -367,6 +415,16 @@ class Scene:
                 out.append(Letter(name, t, node, dist, (node, *opts) if node is not None
                                   else ()))
         return out
+
+
+def head_tip(pts) -> tuple[float, float]:
+    """The tip of an arrowhead: of its distinct vertices, the one farthest from the
+    others (a closed outline repeats its first vertex)."""
+    uniq: list[tuple[float, float]] = []
+    for p in pts:
+        if all(abs(p[0] - q[0]) + abs(p[1] - q[1]) > 1e-6 for q in uniq):
+            uniq.append(p)
+    return max(uniq, key=lambda p: sum(math.hypot(p[0] - q[0], p[1] - q[1]) for q in uniq))
 
 
 def point_segment(px: float, py: float, s: Segment) -> float:

@@ -1,0 +1,299 @@
+"""Force plans and the arm h21 on a drawing, found by the names written along their lines.
+
+A **force plan** is a polygon of forces laid head to tail: each force a line with its
+name written beside it (``R43``, ``Q``, ``G3``, ``Pи3``, ``Rτ12``; a text may name several
+forces drawn on one line, ``Rn12, R12``). A text of force names is given to the nearest
+line (a line split into collinear pieces is taken whole); lines so named that touch form
+one plan, and a group counts as a plan only when most of its forces meet others end to end
+(the forces drawn on a scheme of the mechanism do not). Its scale is the ``Kp = …``
+(``μF``, ``μP``) written at it or in its caption; its position the caption's, else the
+position whose forces it fits best.
+
+**h21** is the line nearest the text ``h21`` — the perpendicular from the crank's pivot to
+the line of R21 on the scheme of the position — measured at the scheme's ``Kl``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from ..units import fold
+from .plans import caption_kind, caption_position, stated_scales
+from .scene import Scene, point_segment, split_names
+
+_FORCE = re.compile(r"^(?:R[τtnⁿ]?\d\d|G\d{1,2}|(?:Pи|Pu|Фи|Ф|Fи|Pin)\d{1,2}|Q|Fпс|Pпс)$")
+
+
+def is_force_name(name: str) -> bool:
+    return bool(_FORCE.match(fold(name)))
+
+
+@dataclass(slots=True)
+class DrawnForce:
+    """A force's line on the drawing: its ends (mm, the tip second when an arrowhead
+    shows it, ``sense`` then True) and the segments it is made of."""
+
+    name: str
+    start: tuple[float, float]
+    end: tuple[float, float]
+    sense: bool
+    segments: tuple[int, ...]
+
+    @property
+    def length(self) -> float:
+        return math.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1])
+
+
+@dataclass(slots=True)
+class FoundForcePlan:
+    """A force plan found on the drawing."""
+
+    group: int
+    forces: dict[str, DrawnForce]
+    bbox: tuple[float, float, float, float]
+    caption: object = None
+    position: str | None = None
+    kp: float | None = None
+    kind: str = "force"
+    closure_mm: float | None = None
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def where(self) -> str:
+        x0, y0, x1, y1 = self.bbox
+        return f"at x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} mm"
+
+    @property
+    def where_ru(self) -> str:
+        x0, y0, x1, y1 = self.bbox
+        return f"x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} мм"
+
+
+def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
+    """The segment i carried on through collinear pieces (ends met by nothing else)."""
+    segs = [i]
+    a, b = scene.seg_nodes[i]
+    s = scene.segments[i]
+    d = (s.x2 - s.x1, s.y2 - s.y1)
+    L = math.hypot(*d)
+    ends = [a, b]
+    for k in (0, 1):
+        n = ends[k]
+        cur = i
+        for _ in range(50):
+            nd = scene.nodes[n]
+            others = [j for j in nd.segments if j != cur]
+            if nd.ends != 2 or nd.passes or len(others) != 1 or nd.tip:
+                break  # a vertex, a crossing, or where one vector ends and the next begins
+            j = others[0]
+            t = scene.segments[j]
+            e = (t.x2 - t.x1, t.y2 - t.y1)
+            if abs(d[0] * e[1] - d[1] * e[0]) > 0.01 * L * math.hypot(*e):
+                break
+            segs.append(j)
+            p, q = scene.seg_nodes[j]
+            n = q if p == n else p
+            cur = j
+        ends[k] = n
+    return segs, ends[0], ends[1]
+
+
+def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) -> int | None:
+    """The line a text names: the nearest (a force's name is beside the middle of its
+    arrow; a construction line, without an arrowhead, only when nothing else is near)."""
+    reach = 3.0 * t.height + 0.35 * t.height * len(t.text) + 2.0
+    best = None
+    for i, s in enumerate(scene.segments):
+        if s.length < min_len:
+            continue
+        if min(s.x1, s.x2) - reach > t.x or max(s.x1, s.x2) + reach < t.x or \
+                min(s.y1, s.y2) - reach > t.y or max(s.y1, s.y2) + reach < t.y:
+            continue
+        d = point_segment(t.x, t.y, s)
+        if d > reach:
+            continue
+        if not forces:
+            cost = d - (3.0 if _foot(scene, i) else 0.0) - (3.0 if _at_pivot(scene, s)
+                                                            else 0.0)
+            if best is None or cost < best[0]:
+                best = (cost, i)
+            continue
+        # a force's name is written beside the middle part of its line
+        L2 = s.length ** 2
+        along = ((t.x - s.x1) * (s.x2 - s.x1) + (t.y - s.y1) * (s.y2 - s.y1)) / L2
+        if not 0.1 <= along <= 0.9:
+            continue
+        mid = math.hypot(t.x - (s.x1 + s.x2) / 2, t.y - (s.y1 + s.y2) / 2)
+        cost = d + 0.25 * mid
+        if not any(scene.heads[i]):
+            cost += 3.0 * t.height  # a construction line, not a force's arrow
+        if best is None or cost < best[0]:
+            best = (cost, i)
+    return best[1] if best else None
+
+
+def _at_pivot(scene: Scene, s) -> bool:
+    """Whether a line starts at a drawn joint (a small circle): an arm from a pivot."""
+    return any(c.r <= 3.0 and min(math.hypot(c.x - s.x1, c.y - s.y1),
+                                  math.hypot(c.x - s.x2, c.y - s.y2)) <= 0.5
+               for c in scene.drawing.circles)
+
+
+def _foot(scene: Scene, i: int) -> bool:
+    """Whether line i ends square on another line (an arm: the perpendicular from a
+    point to a force's line)."""
+    s = scene.segments[i]
+    L = s.length
+    for n in scene.seg_nodes[i]:
+        for j in scene.on_segment[n] + [k for k in scene.nodes[n].segments if k != i]:
+            t = scene.segments[j]
+            M = t.length
+            if M <= 0:
+                continue
+            dot = ((s.x2 - s.x1) * (t.x2 - t.x1) + (s.y2 - s.y1) * (t.y2 - t.y1)) / (L * M)
+            if abs(dot) < 0.05:
+                return True
+    return False
+
+
+def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
+    """The force plans of a drawing (see the module docstring)."""
+    by_group: dict[int, dict[str, DrawnForce]] = {}
+    for t in scene.drawing.texts:
+        names = split_names(t.text)
+        if not names or not all(is_force_name(n) for n in names):
+            continue
+        i = _nearest_line(scene, t, min_len=0.8)
+        if i is None:
+            continue
+        segs, a, b = _whole_line(scene, i)
+        na, nb = scene.nodes[a], scene.nodes[b]
+        # the sense: the arrowhead of this line, at one of its ends
+        at_a = any(scene.heads[j][k] for j in segs for k in (0, 1)
+                   if scene.seg_nodes[j][k] == a)
+        at_b = any(scene.heads[j][k] for j in segs for k in (0, 1)
+                   if scene.seg_nodes[j][k] == b)
+        if at_a and not at_b:
+            na, nb = nb, na
+        f0 = DrawnForce("", (na.x, na.y), (nb.x, nb.y), at_a != at_b, tuple(segs))
+        g = scene.group_of[i]
+        for n in names:
+            by_group.setdefault(g, {}).setdefault(
+                n, DrawnForce(n, f0.start, f0.end, f0.sense, f0.segments))
+    plans = []
+    for g, forces in by_group.items():
+        if len(forces) < 2:
+            continue
+        # a polygon: the forces meet end to end
+        ends = [p for f in forces.values() for p in (f.start, f.end)]
+        met = sum(1 for p in ends if sum(1 for q in ends if math.hypot(p[0] - q[0],
+                                                                       p[1] - q[1]) < 0.5) > 1)
+        if met < 0.6 * len(ends):
+            continue
+        xs = [p[0] for p in ends]
+        ys = [p[1] for p in ends]
+        fp = FoundForcePlan(g, forces, (min(xs), min(ys), max(xs), max(ys)))
+        fp.closure_mm = _closure(forces)
+        plans.append(fp)
+    _captions(scene, plans)
+    return [p for p in plans if p.kind == "force"]
+
+
+def _closure(forces: dict[str, DrawnForce]) -> float | None:
+    """The gap of the polygon (mm): the distance between its two loose ends when the
+    forces drawn (one line per place) leave exactly two, else ``None``."""
+    lines: list[DrawnForce] = []
+    for f in forces.values():
+        if not any(f.segments == g.segments for g in lines):
+            lines.append(f)
+    pts: list[tuple[float, float]] = []
+    count: list[int] = []
+    for f in lines:
+        for p in (f.start, f.end):
+            for k, q in enumerate(pts):
+                if math.hypot(p[0] - q[0], p[1] - q[1]) < 0.5:
+                    count[k] += 1
+                    break
+            else:
+                pts.append(p)
+                count.append(1)
+    loose = [p for p, c in zip(pts, count, strict=True) if c == 1]
+    if len(loose) != 2:
+        return None
+    return math.hypot(loose[0][0] - loose[1][0], loose[0][1] - loose[1][1])
+
+
+def _captions(scene: Scene, plans: list[FoundForcePlan]) -> None:
+    scales = stated_scales(scene.drawing.texts)
+    for p in plans:
+        x0, y0, x1, y1 = p.bbox
+        reach = 0.5 * math.hypot(x1 - x0, y1 - y0) + 40.0
+        best = None
+        for t in scene.drawing.texts:
+            kind = caption_kind(t.text)
+            if kind not in ("force", "scheme", "lever") or len(t.text) < 6:
+                continue
+            dx = max(x0 - t.x, 0.0, t.x - x1)
+            dy = max(y0 - t.y, 0.0, t.y - y1)
+            d = math.hypot(dx, dy) * (3.0 if t.y < y0 else 1.0)
+            if d <= reach and (best is None or d < best[0]):
+                best = (d, t, kind)
+        if best:
+            p.caption = best[1]
+            p.kind = "force" if best[2] == "force" else best[2]
+            p.position = caption_position(best[1].text)
+        own = [s for s in scales if s.symbol == "Kp" and (s.text is p.caption or _near(
+            s.text, p.bbox, 12.0))]
+        if own:
+            p.kp = own[0].value
+
+
+def _near(t, bbox, reach: float) -> bool:
+    x0, y0, x1, y1 = bbox
+    return math.hypot(max(x0 - t.x, 0.0, t.x - x1), max(y0 - t.y, 0.0, t.y - y1)) <= reach
+
+
+@dataclass(frozen=True, slots=True)
+class DrawnArm:
+    """h21 as drawn: its length (mm), the scheme's position and Kl, where it is."""
+
+    length: float
+    position: str | None
+    kl: float | None
+    x: float
+    y: float
+
+
+def find_h21(scene: Scene) -> list[DrawnArm]:
+    """Every ``h21`` drawn on the schemes of the mechanism."""
+    out = []
+    scales = stated_scales(scene.drawing.texts)
+    for t in scene.drawing.texts:
+        if fold(t.text).strip().lower() not in ("h21", "h₂₁"):
+            continue
+        i = _nearest_line(scene, t, min_len=0.5, forces=False)
+        if i is None:
+            continue
+        _segs, a, b = _whole_line(scene, i)
+        na, nb = scene.nodes[a], scene.nodes[b]
+        length = math.hypot(nb.x - na.x, nb.y - na.y)
+        cap = None
+        for c in scene.drawing.texts:
+            if caption_kind(c.text) != "scheme" or caption_position(c.text) is None:
+                continue
+            d = math.hypot(c.x - t.x, c.y - t.y) * (3.0 if c.y < t.y else 1.0)
+            if d < 120 and (cap is None or d < cap[0]):
+                cap = (d, c)
+        kl = None
+        if cap:
+            own = [s for s in scales if s.symbol == "Kl" and s.text is cap[1]]
+            kl = own[0].value if own else None
+        out.append(DrawnArm(length, caption_position(cap[1].text) if cap else None, kl,
+                            t.x, t.y))
+    return out
+
+
+__all__ = ["DrawnArm", "DrawnForce", "FoundForcePlan", "find_force_plans", "find_h21",
+           "is_force_name"]

@@ -1,0 +1,163 @@
+"""Judging a force plan and the arm h21 found on a drawing (see :mod:`.forces`).
+
+A force plan's position is its caption's, else the position whose forces (at the plan's
+Kp) its lines fit best (the least root mean square of the relative differences). Each
+force's line becomes a figure of the calculation checker (``R43_mm = 14,5 мм`` at the
+position, with ``Kp``): the same verdicts and causes. Besides, each force's direction
+against graphplan's vector (degrees; its sense where the line's own arrowhead shows it),
+and a polygon whose forces leave a gap (``closure``): the plan does not close.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..engine import Tolerances
+from ..findings import Finding
+from ..words import num
+from .forces import DrawnArm, FoundForcePlan
+
+
+def _finding(where: str, position, quantity, kind, stated, expected, unit, en, ru, lang,
+             verdict="wrong", line="") -> Finding:
+    pos = (f"положение {position}" if lang == "ru" else f"position {position}") \
+        if position else ("положение ?" if lang == "ru" else "position ?")
+    return Finding(where=f"{pos}, {where}", quantity=quantity, stated=stated,
+                   expected=expected, unit=unit, kind=kind, verdict=verdict,
+                   explanation=ru if lang == "ru" else en, position=position, line=line,
+                   explanation_en=en, explanation_ru=ru)
+
+
+def _expected_mm(ref, vocab, name: str, k: int, kp: float) -> float | None:
+    q = vocab.lookup(f"{name}_mm")
+    if q is None:
+        return None
+    try:
+        v = ref.value(q.key[1:], k)
+    except (KeyError, ValueError, IndexError):
+        return None
+    return None if v is None else abs(v) / kp
+
+
+def _angle_error(f, vec) -> float:
+    """The drawn force's direction less graphplan's, degrees (−180…180); the line's
+    direction only (−90…90) when no arrowhead of its own shows its sense."""
+    am = math.degrees(math.atan2(f.end[1] - f.start[1], f.end[0] - f.start[0]))
+    ae = math.degrees(math.atan2(vec[1], vec[0]))
+    err = (am - ae + 180.0) % 360.0 - 180.0
+    if not f.sense:
+        err = (err + 90.0) % 180.0 - 90.0
+    return err
+
+
+def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
+    from .check import Judged
+
+    j = Judged(fp, fp.kp, "plan")  # type: ignore[arg-type]
+    where_en = f"force plan {fp.where}"
+    where_ru = f"план сил, {fp.where_ru}"
+    j.key = where_ru if lang == "ru" else where_en
+    vocab = ref.vocabulary()
+    if not fp.kp:
+        j.findings.append(_finding(j.key, fp.position, "Kp", "scale", None, None, "",
+                                   "Kp is not written at the force plan: it is not checked.",
+                                   "у плана сил не указан Kp: он не проверяется.", lang,
+                                   verdict="inaccurate"))
+        return j
+    labels = list(ref.labels)
+    pos = fp.position if fp.position in labels else None
+    if pos is None:
+        def misfit(k: int) -> float:
+            errs, angles = [], []
+            for name, f in fp.forces.items():
+                e = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
+                if e is not None and e > 0.5:
+                    errs.append((f.length - e) / e)
+                line = ref.force_line(name, k)
+                if line is not None and f.length >= 2.0 and float(np.hypot(*line[1])) > 0:
+                    angles.append(_angle_error(f, line[1]) / 30.0)
+            # medians: a force or two read off a neighbouring line do not decide it
+            if not errs:
+                return math.inf
+            return float(np.median(np.abs(errs))) + (float(np.median(np.abs(angles)))
+                                                       if angles else 0.0)
+
+        k_best = min(range(len(labels)), key=misfit)
+        pos = labels[k_best]
+        j.findings.append(_finding(
+            j.key, pos, "Kp", "label", None, None, "",
+            f"the force plan has no caption naming its position: it is taken as position "
+            f"{pos}, whose forces it fits best.",
+            f"у плана сил нет подписи с номером положения: он отнесён к положению {pos}, "
+            f"с силами которого совпадает лучше всего.", lang, verdict="ok"))
+    j.pos = pos
+    j.scales = {"Kp": float(fp.kp)}
+    k = labels.index(pos)
+    for name, f in fp.forces.items():
+        if vocab.lookup(f"{name}_mm") is not None:
+            j.figures[f"{name}_mm"] = f.length
+        line = ref.force_line(name, k)
+        if line is None or f.length < 2.0:
+            continue
+        vec = line[1]
+        if float(np.hypot(*vec)) <= 0:
+            continue
+        am = math.degrees(math.atan2(f.end[1] - f.start[1], f.end[0] - f.start[0]))
+        ae = math.degrees(math.atan2(vec[1], vec[0]))
+        err = _angle_error(f, vec)
+        okd = max(1.0, math.degrees(math.atan(tol.reading_mm / f.length)))
+        told = max(2.0, math.degrees(math.atan(2 * tol.reading_mm / f.length)))
+        if abs(err) <= okd:
+            continue
+        verdict = "inaccurate" if abs(err) <= told else "wrong"
+        rev = abs(abs(err) - 180.0) < 5.0
+        en = (f"{name} is drawn in the opposite sense." if rev else
+              f"{name} is drawn at {num(am % 360, 'en', 4)}°, graphplan's at "
+              f"{num(ae % 360, 'en', 4)}° ({num(err, 'en', 3)}°).")
+        ru = (f"{name} направлена в обратную сторону." if rev else
+              f"{name} проведена под углом {num(am % 360, 'ru', 4)}°, по расчёту "
+              f"{num(ae % 360, 'ru', 4)}° ({num(err, 'ru', 3)}°).")
+        j.findings.append(_finding(j.key, pos, f"∠{name}", "direction", err, 0.0, "°", en, ru,
+                                   lang, verdict))
+    size = max((f.length for f in fp.forces.values()), default=0.0)
+    distinct = {f.segments for f in fp.forces.values()}
+    if fp.closure_mm is not None and len(distinct) >= 3 and \
+            fp.closure_mm > max(tol.reading_mm, tol.segment * size):
+        j.findings.append(_finding(
+            j.key, pos, "force polygon", "closure", fp.closure_mm, 0.0, "mm",
+            f"the force polygon does not close: its ends are {num(fp.closure_mm, 'en', 3)} mm "
+            "apart (the sum of the forces of a group in equilibrium is zero).",
+            f"многоугольник сил не замкнут: его концы в {num(fp.closure_mm, 'ru', 3)} мм "
+            "друг от друга (сумма сил группы в равновесии равна нулю).", lang))
+    return j
+
+
+def judge_arm(a: DrawnArm, ref, sheet: dict[str, float], lang: str):
+    from .check import Judged
+
+    class _Arm:
+        kind = "arm"
+        where = f"h21 at x = {a.x:.0f}, y = {a.y:.0f} mm"
+        where_ru = f"h21, x = {a.x:.0f}, y = {a.y:.0f} мм"
+        caption = None
+        bbox = (a.x, a.y, a.x, a.y)
+
+    j = Judged(_Arm(), a.kl, "plan")  # type: ignore[arg-type]
+    j.key = f"h21 x = {a.x:.0f}, y = {a.y:.0f} мм" if lang == "ru" else \
+        f"h21 at x = {a.x:.0f}, y = {a.y:.0f} mm"
+    kl = a.kl or sheet.get("Kl")
+    pos = a.position
+    if pos not in ref.labels:
+        alt = (pos or "").strip("()")
+        pos = next((lab for lab in ref.labels if lab.strip("()") == alt), None)
+    if pos is None or not kl:
+        return j
+    j.pos = pos
+    j.scales = {"Kl": float(kl)}
+    j.figures["h21"] = a.length
+    return j
+
+
+__all__ = ["judge_arm", "judge_force_plan"]
