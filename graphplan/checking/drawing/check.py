@@ -22,7 +22,7 @@ the overlay of :mod:`.overlay`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +31,7 @@ from ..engine import Tolerances
 from ..findings import FigureCheck, Finding, LineCheck, Report
 from ..student import Line, StudentPosition, StudentWork
 from ..words import num
+from .judged import Judged
 from .measure import (
     Laid,
     construction,
@@ -48,26 +49,6 @@ from .scene import Scene
 PLAN_WORDS = {"velocity": ("velocity plan", "план скоростей"),
               "acceleration": ("acceleration plan", "план ускорений")}
 POLE = {"velocity": "p", "acceleration": "π"}
-
-
-@dataclass(slots=True)
-class Judged:
-    """One plan of the drawing and what was decided about it."""
-
-    found: FoundPlan
-    scale: float | None
-    scale_source: str  # "plan" | "sheet" | "inferred"
-    laid: Laid | None = None  # against the construction it is checked at
-    best: Laid | None = None  # the position that fits it best
-    findings: list[Finding] = field(default_factory=list)
-    figures: dict[str, float] = field(default_factory=dict)
-    key: str = ""
-    pos: str | None = None  # a force plan's or an arm's position
-    scales: dict[str, float] = field(default_factory=dict)  # its own (Kp, a scheme's Kl)
-
-    @property
-    def position(self) -> str | None:
-        return self.laid.position if self.laid else self.pos
 
 
 @dataclass(slots=True)

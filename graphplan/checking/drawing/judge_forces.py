@@ -18,6 +18,7 @@ from ..engine import Tolerances
 from ..findings import Finding
 from ..words import num
 from .forces import DrawnArm, FoundForcePlan
+from .judged import Judged
 
 
 def _finding(where: str, position, quantity, kind, stated, expected, unit, en, ru, lang,
@@ -53,8 +54,6 @@ def _angle_error(f, vec) -> float:
 
 
 def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
-    from .check import Judged
-
     j = Judged(fp, fp.kp, "plan")  # type: ignore[arg-type]
     where_en = f"force plan {fp.where}"
     where_ru = f"план сил, {fp.where_ru}"
@@ -135,8 +134,6 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
 
 
 def judge_arm(a: DrawnArm, ref, sheet: dict[str, float], lang: str):
-    from .check import Judged
-
     class _Arm:
         kind = "arm"
         where = f"h21 at x = {a.x:.0f}, y = {a.y:.0f} mm"
