@@ -277,7 +277,7 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
         ax.plot(curve.position_travel_deg, curve.M_positions, "o", color="black",
                 markersize=1.2 * MM)
         ax.axhline(0.0, color="black", lw=0.25 * MM)
-        ax.set_xlim(0, 360)
+        ax.set_xlim(0, 720 if curve.travel_deg[-1] > 360 else 360)  # a 720° cycle
         ax.set_xticks(curve.position_travel_deg)
         ax.set_xticklabels(spaced_labels(curve.position_travel_deg, list(curve.labels),
                                          (width_mm - 28.0) / 360.0),

@@ -253,7 +253,7 @@ def reduced_moment(analysis: Analysis, grid: int | None = None, *,
     g = _grid(mech, grid)
     phi0, sense = _first(mech, analysis)
     period = analysis.cycle.period
-    turns = int(round(period / (2 * math.pi)))
+    turns = round(period / (2 * math.pi))
     tau = np.linspace(0.0, period, g * turns + 1)
     phi = phi0 + sense * tau
     M = _resisting_moment(analysis, solve(mech, phi[:-1]), neglect_below)
@@ -279,7 +279,7 @@ def resistance_breaks(analysis: Analysis, ends: bool = False) -> tuple[float, ..
     mech, cycle = analysis.mech, analysis.cycle
     if not mech.resistances:
         return ()
-    phi0, sense = _first(mech, analysis)
+    phi0, _ = _first(mech, analysis)
     shift = float(cycle_travel(mech, cycle, phi0))
     return tuple(sorted({round((t - shift) % cycle.period, 12)
                          for t in load_breaks(mech, cycle, ends=ends, every_kink=ends)}))

@@ -249,7 +249,7 @@ def load_values(res: Resistance, mech: Mechanism, cycle: Cycle, phi, q_travel=No
     x = lt.fraction(q_travel)
     val = np.zeros_like(tau)
     on = np.zeros(tau.shape, bool)
-    for m, d in enumerate(res.stroke_diagrams(int(round(cycle.period / math.pi)))):
+    for m, d in enumerate(res.stroke_diagrams(round(cycle.period / math.pi))):
         if d is None:
             continue
         sel = k == m
@@ -361,7 +361,7 @@ def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
             continue
         lt = _travel_of(res, mech, cycle)
         t_s = _first_start(res, mech, cycle, lt)
-        diags = res.stroke_diagrams(int(round(P / math.pi)))
+        diags = res.stroke_diagrams(round(P / math.pi))
         for m, d in enumerate(diags):
             if d is None:
                 continue
@@ -492,8 +492,10 @@ def compute_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = None, 
                 forces[ln].append(ForceLoad(f"Pи{ln}", ln, "inertia", props.centre, S,
                                             -props.mass * V[props.centre]))
             if props.inertia > 0:
-                moments[ln].append(MomentLoad(f"Mи{ln}", ln, "inertia",
-                                              -props.inertia * kin.acc.epsilon[ln]))
+                eps = kin.acc.epsilon[ln]
+                # ε of round-off (1e-16 at a dead centre, where it vanishes) is 0: no couple
+                eps = np.where(np.abs(eps) <= 1e-12 * mech.crank.omega**2, 0.0, eps)
+                moments[ln].append(MomentLoad(f"Mи{ln}", ln, "inertia", -props.inertia * eps))
     if "resistance" in kinds:
         for ld in resistance_loads(mech, kin, cycle):
             (forces if isinstance(ld, ForceLoad) else moments)[ld.link].append(ld)

@@ -940,7 +940,7 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
                     needs_two_turns = True
         first = next((d for d in strokes if d is not None), ())
         out.append(Resistance(kind, ln, point, maximum, tuple(first), name, sense, over,
-                              strokes, angle, tl, working, phase, offset))
+                              strokes, angle, tl, working, phase, offset, gas))
     if cycle == 720 and not needs_two_turns:
         raise r.fail("positions.cycle", "a 720° cycle needs a process over two turns — a load "
                      "with 4 different strokes (a four-stroke indicator diagram) or a diagram "

@@ -241,6 +241,8 @@ class Resistance:
     offset : float
         Subtracted from ``value·maximum``: the ambient pressure times the piston area of
         an indicator diagram (N).
+    gas : bool
+        Given as pressures on a piston (``bore``): x = 0 is its ВМТ.
     """
 
     kind: str  # "force" | "moment"
@@ -257,6 +259,7 @@ class Resistance:
     working: int = 0
     phase: float = 0.0
     offset: float = 0.0
+    gas: bool = False  # given as pressures on a piston (``bore``): an indicator diagram
 
     def stroke_diagrams(self, n_strokes: int) -> tuple:
         """The diagram (or None) of each of ``n_strokes`` strokes of the cycle."""

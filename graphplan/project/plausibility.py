@@ -8,9 +8,12 @@ Each warning is one line that names the key to look at and the likely fix:
   working stroke only (or it has none); an engine, a compressor or a pump loads both
   strokes and K means nothing there. A K within 1 % of 1 (a symmetric mechanism drawn
   with round-off) is not reported.
-* **The assembly branch** — when flipping one dyad's ``branch`` turns the fast working
-  stroke into the slow one, that dyad is assembled the other way round from the machine
-  meant: the output moves against the stated working direction on its slow stroke.
+* **The piston against its working direction** — an indicator diagram (a gas force,
+  ``bore``) counts s from ВМТ, the dead centre *farthest* from the crank (the cylinder's
+  head is beyond the piston). When the assembly branch and the working sense put s = 0 at
+  the dead centre *nearest* the crank, the gas would push the piston toward the crank's
+  side and the piston moves against the stated working direction: the branch of its dyad
+  or its ``working`` is the other way round from the machine meant.
 
 (A crank that cannot make a full turn stops the analysis: :func:`graphplan.kinematics.cycle.
 analyse_cycle` says so with the range of angles it reaches.)
@@ -19,10 +22,10 @@ analyse_cycle` says so with the range of angles it reaches.)
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
-from ..errors import GraphplanError
-from ..kinematics import Cycle, analyse_cycle
+import numpy as np
+
+from ..kinematics import Cycle, link_coordinate, solve_positions
 from ..model import Mechanism
 
 K_MARGIN = 0.01
@@ -36,7 +39,7 @@ def _working_only(mech: Mechanism) -> bool:
     for res in mech.resistances:
         if res.over != "stroke" or (res.travel_link or mech.output.link) != mech.output.link:
             continue
-        diags = res.stroke_diagrams(int(round(mech.positions.period / math.pi)))
+        diags = res.stroke_diagrams(round(mech.positions.period / math.pi))
         if any(d is not None for d in diags[1::2]):
             return False
         if res.sense == "resists":
@@ -44,37 +47,43 @@ def _working_only(mech: Mechanism) -> bool:
     return False
 
 
-def _time_ratio(mech: Mechanism) -> float | None:
-    try:
-        return analyse_cycle(mech).time_ratio
-    except GraphplanError:
-        return None
+def _cylinder_heads(mech: Mechanism, cycle: Cycle):
+    """A gas force (``bore``) whose diagram starts (s = 0, ВМТ) at the dead centre where the
+    piston is *nearest* the crank: the piston moves against the stated working direction —
+    the head of the cylinder would be at the crank."""
+    pivot = np.asarray(mech.frame_points[mech.crank.pivot], float)
+    for n, res in enumerate(mech.resistances):
+        if not res.gas or res.over != "stroke":
+            continue
+        tl = res.travel_link or mech.output.link
+        lt = cycle.travels[(tl, res.working or mech.output.working)]
+        pos = solve_positions(mech, np.asarray(lt.dead_centres))
+        joint = link_coordinate(mech, tl, pos)[3]
+        d0, d1 = np.hypot(*(pos.points[joint] - pivot).T)
+        if d0 < d1 - 1e-9 * mech.crank.length:
+            key = "output.working" if tl == mech.output.link else f"loads[{n}].working"
+            w = res.working or mech.output.working
+            other = "-" if w > 0 else "+"
+            dyad = next((k for k, d in enumerate(mech.dyads) if tl in d.links), 0)
+            yield (f"{mech.source}: loads[{n}]: the indicator diagram starts (s = 0, ВМТ) "
+                   f"where piston {tl} is nearest the crank, so the gas would push it toward "
+                   f"the crank's side and it moves against the stated working direction; "
+                   f"likely fix: {key} = \"{other}\" (s from the dead centre farthest from "
+                   f"the crank) or the other dyads[{dyad}].branch")
 
 
 def machine_warnings(mech: Mechanism, cycle: Cycle) -> tuple[str, ...]:
     """The warnings of the module docstring, one line each (empty when all looks meant)."""
-    out: list[str] = []
+    out: list[str] = list(_cylinder_heads(mech, cycle))
     K = cycle.time_ratio
     if not (cycle.dead_centres and K < 1.0 - K_MARGIN and _working_only(mech)):
-        return ()
+        return tuple(out)
     other = "+" if mech.output.working < 0 else "-"
     turn = math.degrees(cycle.working_turn)
     out.append(f"{mech.source}: output.working: K = {K:.3f} < 1 — the working stroke "
                f"({turn:.1f}° of crank) is the faster one, while a working stroke is usually "
                f"the slow one; likely fix: output.working = \"{other}\" (or the other "
                f"crank.direction), which gives K = {1.0 / K:.3f}")
-    for n, d in enumerate(mech.dyads):
-        if d.kind not in ("RRR", "RRP", "RPR"):
-            continue
-        flipped = replace(mech, dyads=tuple(replace(x, branch=-x.branch) if k == n else x
-                                            for k, x in enumerate(mech.dyads)))
-        K2 = _time_ratio(flipped)
-        if K2 is not None and K2 > 1.0 + K_MARGIN:
-            now = "+" if d.branch > 0 else "-"
-            new = "-" if d.branch > 0 else "+"
-            out.append(f"{mech.source}: dyads[{n}].branch: the assembly \"{now}\" of "
-                       f"{d.name} makes the output move against output.working on its slow "
-                       f"stroke; likely fix: branch = \"{new}\", which gives K = {K2:.3f}")
     return tuple(out)
 
 

@@ -306,7 +306,8 @@ class MomentCurve:
     ----------
     travel_deg : ndarray (N,)
         Crank travel from the first position in the direction of rotation, degrees,
-        increasing in [0, 360): the uniform grid with the positions' travels merged in.
+        increasing in [0, 360) — [0, 720) for a four-stroke cycle: the uniform grid
+        with the positions' travels merged in.
     phi_deg : ndarray (N,)
         The absolute crank angle φ of each point, degrees in [0, 360).
     M : ndarray (N,)
@@ -357,8 +358,10 @@ def moment_curve(analysis: Analysis, points: int = CURVE_POINTS, *,
     mech, kin = analysis.mech, analysis.kin
     sense = 1.0 if mech.crank.omega >= 0 else -1.0
     phi0 = float(kin.phi[0])
-    pos_travel = np.degrees(sense * (kin.phi - phi0)) % 360.0
-    grid = np.linspace(0.0, 360.0, points, endpoint=False)
+    cycle = math.degrees(analysis.cycle.period)  # 360°, or 720° for a four-stroke process
+    turns = round(cycle / 360.0)
+    pos_travel = np.degrees(sense * (kin.phi - phi0)) % cycle
+    grid = np.linspace(0.0, cycle, points * turns, endpoint=False)
     keep = np.all(np.abs(grid[:, None] - pos_travel[None, :]) > 1e-9, axis=1)
     travel = np.concatenate([grid[keep], pos_travel])
     order = np.argsort(travel, kind="stable")

@@ -1,0 +1,319 @@
+"""The assignment families of issue 17: engine, compressor, pump, slotting machine, crusher.
+
+Each family's example is solved through the whole chain and checked independently:
+
+* the power balance Σ F·v + Σ M·ω + Mур·ω1 = 0 at every position (d'Alembert's
+  kinetostatics against virtual power), to 1e-9 of the largest power term;
+* the engine's turning moment of the gas force alone against the textbook closed form
+  M = F·r·sin(α + β)/cos β (α the crank's turn from ВМТ, sin β = λ·sin α), the force read
+  by the test itself from the variant's indicator table;
+* the 720° flywheel against an independent energy integration (Simpson on a 0.05° grid of
+  the loads' power and the links' kinetic energy, computed here from the kinematics);
+* the loads' directions: the gas force drives on the expansion stroke and resists on
+  compression; the compressor's and the pump's forces resist on both strokes;
+* the warnings, the weights in N and ω1 in rad/s, and ``analyze --json`` of every family.
+"""
+
+import json
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from graphplan.cli import main
+from graphplan.dynamics import reduction as dyn
+from graphplan.forces import compute_loads, load_power, point_velocity, solve_forces
+from graphplan.kinematics import solve
+from graphplan.model import load, loads
+from graphplan.project import analyze
+
+ROOT = Path(__file__).resolve().parent.parent
+FAMILIES = ("engine", "compressor", "pump", "slotter", "crusher", "shaper")
+
+
+@pytest.fixture(scope="module")
+def analyses():
+    return {name: analyze(load(ROOT / "examples" / f"{name}.toml")) for name in FAMILIES}
+
+
+def _terms(mech, kin, ld):
+    """Every power term F·v and M·ω (W), positions along the last axis."""
+    out = [np.einsum("ij,ij->i", f.vector, point_velocity(mech, kin, f.link, f.at))
+           for f in ld.all_forces()]
+    out += [m.moment * kin.vel.omega[m.link] for m in ld.all_moments()]
+    return np.array(out)
+
+
+@pytest.mark.parametrize("name", FAMILIES)
+def test_power_balance_at_every_position(analyses, name):
+    a = analyses[name]
+    mech, kin = a.mech, a.kin
+    for neglect in (None, 0.0):  # the variant's neglect rule, and everything kept
+        ld = compute_loads(mech, kin, a.cycle, neglect_below=neglect)
+        M_bal = solve_forces(mech, kin, ld).M_bal
+        terms = _terms(mech, kin, ld)
+        scale = np.max(np.abs(terms))
+        resid = load_power(mech, kin, ld) + M_bal * mech.crank.omega
+        assert np.max(np.abs(resid)) <= 1e-9 * scale, name
+
+
+def _indicator(mech):
+    """The engine's gas force (N, positive away from the head) per stroke, from the file."""
+    data = tomllib.loads((ROOT / "examples" / "engine.toml").read_text(encoding="utf-8"))
+    g = data["loads"][0]
+    area = math.pi * (g["bore"] / 1000) ** 2 / 4
+    travel = np.array(g["travel"])
+    tables = [np.array(s) for s in g["strokes"]]
+
+    def force(alpha):
+        """α: crank turn from ВМТ (rad, 0 … 4π) → the force by the variant's table."""
+        r, rod = mech.crank.length, mech.dyads[0].lengths[0]
+        beta = np.arcsin(r / rod * np.sin(alpha))
+        s = (r * (1 - np.cos(alpha)) + rod * (1 - np.cos(beta))) / (2 * r)   # s/H from ВМТ
+        k = np.minimum((alpha // math.pi).astype(int), 3)                  # the stroke
+        p = np.array([np.interp(si, travel, tables[ki]) for si, ki in zip(s, k, strict=True)])
+        return (p - g["p_ambient"]) * 1e6 * area, beta
+
+    return force
+
+
+def test_engine_turning_moment_of_the_gas_force_is_the_closed_form(analyses):
+    a = analyses["engine"]
+    mech, kin = a.mech, a.kin
+    ld = compute_loads(mech, kin, a.cycle, kinds=("resistance",), inertia=False)
+    assert [f.name for f in ld.all_forces()] == ["Fг"]
+    M_bal = solve_forces(mech, kin, ld).M_bal
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    alpha = np.mod(sense * (kin.phi - a.cycle.dead_centres[0]), 4 * math.pi)
+    # exactly at ВМТ/НМТ the table's value is the next stroke's (a dead centre belongs to
+    # the stroke it starts); the moment is zero there either way
+    F, beta = _indicator(mech)(alpha)
+    r = mech.crank.length
+    closed = F * r * np.sin(alpha + beta) / np.cos(beta)   # in the sense of rotation
+    np.testing.assert_allclose(-sense * M_bal, closed, rtol=1e-9, atol=1e-9 * np.abs(closed).max())
+    # and on a fine grid of the dynamics over the whole 720°, through the reduced moment
+    tau = np.linspace(0.0, 4 * math.pi, 2881)[1:-1]
+    tau = tau[np.abs(np.sin(tau)) > 1e-6]                   # off the dead centres' jumps
+    M = dyn.dynamic_model(a).moment.at(tau)
+    # the weights' share: G2, G3 reduced to the crank, exactly by virtual power
+    fine = solve(mech, a.cycle.dead_centres[0] + sense * tau)
+    grav = compute_loads(mech, fine, a.cycle, kinds=("gravity",), inertia=False)
+    Mg = load_power(mech, fine, grav) / abs(mech.crank.omega)
+    F, beta = _indicator(mech)(tau)
+    np.testing.assert_allclose(M - Mg, F * r * np.sin(tau + beta) / np.cos(beta),
+                               rtol=1e-9, atol=1e-9 * np.abs(M).max())
+
+
+def test_engine_gas_drives_on_expansion_and_resists_on_compression(analyses):
+    a = analyses["engine"]
+    m = dyn.dynamic_model(a)
+    tau = m.tau[:-1]
+    kin = solve(a.mech, m.moment.phi[:-1])
+    (gas,) = compute_loads(a.mech, kin, a.cycle, kinds=("resistance",), inertia=False
+                           ).all_forces()
+    power = np.einsum("ij,ij->i", gas.vector, kin.vel.points["B"])
+    # compression from s = 0.6·H on (p ≥ 0.161 MPa > p_атм) to ВМТ; the whole expansion
+    comp = (tau > 1.5 * math.pi) & (tau < 2 * math.pi - 1e-6)
+    expa = (tau > 2 * math.pi + 1e-6) & (tau < 3 * math.pi - 1e-6)
+    assert np.all(power[comp] < 0) and np.all(power[expa] > 0)
+    # intake below the atmosphere: the piston is pulled back, a small resistance
+    intake = (tau > 1e-6) & (tau < math.pi - 1e-6)
+    assert np.all(power[intake] < 0)
+    wd = dyn.work_diagrams(m)
+    assert wd.M_d < 0  # the loads drive: the constant moment is the consumer's resistance
+    assert m.period == pytest.approx(4 * math.pi)
+
+
+def test_engine_720_flywheel_matches_an_independent_energy_integration(analyses):
+    a = analyses["engine"]
+    mech = a.mech
+    fw = dyn.flywheel(dyn.dynamic_model(a))
+    w1 = abs(mech.crank.omega)
+    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    n = 14400                                   # 0.05° over 720°
+    tau = np.linspace(0.0, 4 * math.pi, n + 1)
+    kin = solve(mech, a.cycle.dead_centres[0] + sense * tau)
+    ld = compute_loads(mech, kin, a.cycle, inertia=False, neglect_below=0.0)
+    M = load_power(mech, kin, ld) / w1          # the loads' reduced moment (gas + weights)
+    # Simpson per pair of steps (the jumps of the gas force sit at the dead centres, where
+    # the piston stands still: M is continuous there, so the rule converges)
+    h = tau[1] - tau[0]
+    A = np.zeros(n + 1)
+    A[2::2] = np.cumsum(h / 3 * (M[0:-2:2] + 4 * M[1:-1:2] + M[2::2]))
+    A[1::2] = A[0:-1:2] + h / 2 * (M[0:-1:2] + M[1::2])
+    Mc = -A[-1] / (4 * math.pi)
+    dT = A + Mc * tau
+    inertia = float(mech.settings["dynamics"]["crank_inertia"]) + fw.I_m
+    for ln, p in mech.links.items():
+        e = p.inertia * kin.vel.omega[ln] ** 2
+        if p.mass > 0:
+            v = kin.vel.points[p.centre]
+            e = e + p.mass * np.einsum("ij,ij->i", v, v)
+        inertia = inertia + e / w1**2
+
+    def omega(T0):
+        return np.sqrt(2 * (T0 + dT) / inertia)
+
+    lo, hi = -dT.min() + 1e-9, -dT.min() + 10 * float(inertia.max()) * w1**2
+    for _ in range(200):                         # T0: the mean of ωmax and ωmin is ω1
+        mid = 0.5 * (lo + hi)
+        om = omega(mid)
+        lo, hi = (mid, hi) if 0.5 * (om.max() + om.min()) < w1 else (lo, mid)
+    om = omega(0.5 * (lo + hi))
+    delta = (om.max() - om.min()) / (0.5 * (om.max() + om.min()))
+    assert Mc == pytest.approx(fw.M_d, rel=1e-6)
+    assert np.ptp(dT) == pytest.approx(fw.dT_max, rel=1e-4)
+    assert delta == pytest.approx(fw.delta, rel=2e-3)
+
+
+def _load_powers(a):
+    m = dyn.dynamic_model(a)
+    kin = solve(a.mech, m.moment.phi[:-1])
+    ld = compute_loads(a.mech, kin, a.cycle, kinds=("resistance",), inertia=False)
+    return m, {f.name: np.einsum("ij,ij->i", f.vector, point_velocity(a.mech, kin, f.link, f.at))
+               for f in ld.all_forces()}
+
+
+def test_the_pumps_water_resists_on_both_strokes(analyses):
+    m, powers = _load_powers(analyses["pump"])
+    p = powers["Fж"]
+    assert np.all(p <= 1e-9 * np.abs(p).max())
+    assert np.count_nonzero(p < 0) > 0.95 * len(p)   # suction and delivery
+    assert dyn.work_diagrams(m).M_d > 0               # a motor drives it
+
+
+def test_the_compressors_gas_resists_but_for_the_re_expansion(analyses):
+    a = analyses["compressor"]
+    m, powers = _load_powers(a)
+    tau = m.tau[:-1]
+    for name, p in powers.items():
+        # over the cycle the gas takes work; it gives a little back only where the pressure
+        # on the piston is on the atmosphere's side of it: the clearance gas re-expanding
+        # (s < 0.218·H, about 47° of crank) and the start of compression below 0.1 MPa
+        # (s > 0.9·H, about 37°): 84° of the 360°
+        assert np.sum(p) < 0
+        assert np.count_nonzero(p > 1e-9 * np.abs(p).max()) < 90 / 360 * len(p), name
+    comp = (tau > 1.3 * math.pi) & (tau < 2 * math.pi - 1e-6)
+    assert np.all(powers["Fг1"][comp] < 0)
+    assert dyn.work_diagrams(m).M_d > 0
+
+
+def test_second_cylinder_starts_at_its_own_top_dead_centre(analyses):
+    a = analyses["compressor"]
+    ld = compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",), inertia=False)
+    f1, f2 = ld.all_forces()
+    # the cylinders' axes are 90° apart (135° and 45°): with the crank turning CCW, the crank
+    # points at cylinder 2 (45°) 90° before it points at cylinder 1 (135°), so cylinder 2's
+    # force at a position is cylinder 1's 90° = 3 positions later (every 30°, position 0
+    # at cylinder 1's ВМТ)
+    mag1 = np.hypot(*f1.vector.T)
+    mag2 = np.hypot(*f2.vector.T)
+    np.testing.assert_allclose(mag2, np.roll(mag1, -3), rtol=1e-9)
+
+
+def test_crusher_weights_in_newtons_and_omega_in_rad_per_s(analyses):
+    mech = analyses["crusher"].mech
+    assert mech.crank.omega == 25.0
+    assert mech.crank.rpm == pytest.approx(25 * 30 / math.pi)
+    assert mech.links["2"].mass == pytest.approx(3000 / 9.81)
+    assert mech.links["5"].mass == pytest.approx(5000 / 9.81)
+    ld = compute_loads(mech, analyses["crusher"].kin, analyses["crusher"].cycle,
+                       kinds=("gravity",), inertia=False)
+    G2 = next(f for f in ld.all_forces() if f.name == "G2")
+    assert G2.vector[0, 1] == pytest.approx(-3000.0)
+
+
+def test_crusher_moment_resists_on_the_working_swing_only(analyses):
+    a = analyses["crusher"]
+    ld = compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",), inertia=False)
+    (mc,) = ld.all_moments()
+    w = a.kin.vel.omega["5"]
+    power = mc.moment * w
+    assert np.all(power <= 0)
+    assert np.all((mc.moment != 0) <= (w < 0))   # only while the jaw swings clockwise
+
+
+@pytest.mark.parametrize("name", FAMILIES)
+def test_analyze_json_of_every_family(name, tmp_path, capsys):
+    out = tmp_path / f"{name}.json"
+    assert main(["analyze", str(ROOT / "examples" / f"{name}.toml"), "--json",
+                 "-o", str(out)]) == 0
+    report = json.loads(out.read_text(encoding="utf-8"))
+    assert report["warnings"] == []
+    assert report["mechanism"]["cycle_deg"] == (720.0 if name == "engine" else 360.0)
+    assert len(report["positions"]) == (24 if name == "engine" else len(report["positions"]))
+    dynm = report["dynamics"]
+    assert dynm["driven_by"] == ("loads" if name == "engine" else "motor")
+    assert (dynm["motor"] is None) == (name == "engine")
+
+
+# --- warnings ------------------------------------------------------------------------------
+
+
+def _variant(name, **edits):
+    text = (ROOT / "examples" / f"{name}.toml").read_text(encoding="utf-8")
+    for old, new in edits.items():
+        assert old in text
+        text = text.replace(old, new)
+    return text
+
+
+def test_warning_when_the_working_stroke_is_the_fast_one(tmp_path, capsys):
+    # the slotting machine with its crank turning the other way: the ram cuts on the short
+    # arc, K = 144/216 = 0.667
+    text = _variant("slotter", **{'direction = "cw"': 'direction = "ccw"'})
+    a = analyze(loads(text, source="slotter-ccw.toml"))
+    assert len(a.warnings) == 1
+    w = a.warnings[0]
+    assert w.startswith("slotter-ccw.toml: output.working: K = 0.667 < 1")
+    assert "likely fix: output.working = \"+\"" in w and "K = 1.500" in w
+    assert "\n" not in w
+    path = tmp_path / "slotter-ccw.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["analyze", str(path), "--json", "-o", str(tmp_path / "o.json")]) == 0
+    assert "graphplan: warning: " in capsys.readouterr().err
+    assert json.loads((tmp_path / "o.json").read_text(encoding="utf-8"))["warnings"] == [
+        w.replace("slotter-ccw.toml", str(path))]
+
+
+def test_warning_when_the_piston_moves_against_its_working_direction():
+    # the pump's plunger assembled behind the crank (branch "-"): its travel s is still
+    # counted from the dead centre at −x… which is now the one nearest the crank, so the
+    # water would press the plunger away from the crank: the cylinder's head is at the crank
+    text = _variant("pump", **{'branch = "+"': 'branch = "-"'})
+    a = analyze(loads(text, source="pump-behind.toml"))
+    (w,) = a.warnings
+    assert w.startswith("pump-behind.toml: loads[0]: the indicator diagram starts (s = 0, "
+                        "ВМТ) where piston 3 is nearest the crank")
+    assert "likely fix: output.working = \"+\"" in w and "dyads[0].branch" in w
+    # the fix it names removes the warning
+    fixed = text.replace('working = "-"', 'working = "+"')
+    assert analyze(loads(fixed, source="pump-fixed.toml")).warnings == ()
+
+
+def test_no_warning_for_the_examples():
+    for path in sorted((ROOT / "examples").glob("*.toml")):
+        assert analyze(load(path)).warnings == (), path
+
+
+# --- bad input: one line naming the file and the key -----------------------------------------
+
+
+@pytest.mark.parametrize(("edits", "key", "words"), [
+    ({'link = "5"             # the swing jaw': 'link = "5"',
+      'kind = "moment"\nlink = "5"': 'kind = "moment"\nlink = "8"'},
+     "loads[0].link", "link '8' is not a link of this mechanism"),
+    ({"diagram = [[0.0, 0.0], [0.5, 0.4], [1.0, 1.0]]": "diagram = [[0.0, 0.0], [0.5, 0.4]]"},
+     "loads[0].diagram", "does not cover the stroke"),
+    ({"count = 12": "count = 12\ncycle = 720"},
+     "positions.cycle", "a 720° cycle needs a process over two turns"),
+])
+def test_bad_input_is_one_line_naming_file_and_key(tmp_path, capsys, edits, key, words):
+    path = tmp_path / "crusher-bad.toml"
+    path.write_text(_variant("crusher", **edits), encoding="utf-8")
+    assert main(["analyze", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert err.startswith(f"graphplan: error: {path}: {key}: ") and words in err, err
