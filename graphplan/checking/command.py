@@ -161,6 +161,11 @@ def _file(path: Path, args, tol: dict, multiple: bool, name: str = "") -> int:
     report = checker.run()
     protect = (path, work.variant)
     sheets = overlays(checker, report) if (args.html or args.svg or args.output) else []
+    if work.drawings:  # [work] drawing: the sheets too, and what was written against them
+        from .drawing.combine import with_drawings
+
+        report, drawn = with_drawings(report, work, tol, args.lang or work.lang)
+        sheets = sheets + drawn if (args.html or args.svg or args.output) else sheets
     if args.json:
         from ..console import json_ascii  # \u escapes on a console lacking a character
 

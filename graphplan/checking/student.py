@@ -114,6 +114,7 @@ class StudentWork:
     tolerances: dict[str, float] = field(default_factory=dict)
     arms: dict[str, ArmSpec] = field(default_factory=dict)
     text: str = ""
+    drawings: tuple[Path, ...] = ()  # [work] drawing: the sheets (checking/drawing)
 
     @property
     def lines(self) -> tuple[Line, ...]:
@@ -293,7 +294,7 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
         raise r.fail("positions", f"{total} lines: at most {MAX_LINES} are checked")
     work = r.table(data["work"], "work")
     r.keys(work, "work", {"variant", "student", "group", "title", "source", "lang",
-                          "neighbours"}, {"variant"})
+                          "neighbours", "drawing"}, {"variant"})
     variant = r.string(work["variant"], "work.variant")
     if variant.startswith("bundled:"):
         from ..files import bundled_example
@@ -318,6 +319,16 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
             if not p.is_file():
                 raise r.fail(f"work.neighbours[{i}]", f"variant file {str(p)!r} not found")
             neighbours.append(p)
+    drawings = []
+    if "drawing" in work:  # the student's sheets, checked with the calculation
+        dw = work["drawing"]
+        for i, d in enumerate(dw if isinstance(dw, list) else [dw]):
+            key = f"work.drawing[{i}]" if isinstance(dw, list) else "work.drawing"
+            p = path.parent / r.string(d, key)
+            if not p.is_file():
+                raise r.fail(key, f"drawing {str(p)!r} not found (a .dxf, .svg or .pdf "
+                             "relative to the student file)")
+            drawings.append(p)
     tolerances = {}
     if "tolerances" in data:
         t = r.table(data["tolerances"], "tolerances")
@@ -371,7 +382,8 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
         student=r.string(work.get("student", ""), "work.student"),
         group=r.string(work.get("group", ""), "work.group"),
         title=r.string(work.get("title", ""), "work.title"),
-        lang=lang, neighbours=tuple(neighbours), tolerances=tolerances, arms=arms, text=text)
+        lang=lang, neighbours=tuple(neighbours), tolerances=tolerances, arms=arms, text=text,
+        drawings=tuple(drawings))
 
 
 __all__ = ["TOLERANCE_KEYS", "Line", "StudentPosition", "StudentWork", "load_student",
