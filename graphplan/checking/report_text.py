@@ -11,7 +11,7 @@ WORDS = {
            "{not_compared} not compared",
            "lines": "{n} written lines re-evaluated: {lines_wrong} with wrong arithmetic, "
            "{lines_unread} unreadable, {lines_not_compared} with nothing compared",
-           "uncompared": "not compared", 
+           "uncompared": "not compared",
            "faults": "{n} findings, {p} of them faults of their own (the rest follow from them)",
            "clean": "nothing is wrong", "general": "whole mechanism",
            "position": "position", "follows": "follows from", "stated": "stated",
