@@ -3,27 +3,37 @@
 For a wrong figure (stated ``s``, graphplan's ``e``) :meth:`Diagnoser.diagnose` tries, in
 order, and reports the first that explains ``s`` within the figure's tolerance:
 
-1. **arithmetic** — its line's written numbers do not give its written result;
-2. **unit** — ``s/e`` is 1000, 10⁶ or g (or their inverses) with a unit written;
-3. **sign** — ``s = −e`` for a signed figure (Mур);
-4. **its formula** — the line's formula, evaluated with graphplan's values of its
-   names: giving ``e``, the figure only *follows from* the names whose values are off
-   (``propagated``); not giving ``e``, the formula is wrong — a term of the wrong sign
-   (``sign``) or otherwise (``formula``);
-5. **the student's own chain** — a segment from the student's force (``R43_mm =
+1. **arithmetic** — its line's written numbers do not give its written result (×1000 or
+   /1000 of them: a **unit** slip);
+2. **follows** — the line's formula with graphplan's values of its names gives ``e``: the
+   figure only *follows from* the names whose values are off (``propagated``);
+3. **unit** — ``s/e`` is 1000, 10⁶ or g (or their inverses) with a unit written;
+4. **sign** — ``s = −e`` for a signed figure (Mур);
+5. **its formula** does not give ``e``: the Coriolis factor 2 left out (``coriolis``), a
+   term of the wrong sign (``sign``), or the formula itself (``formula``);
+6. **coriolis** — half the Coriolis acceleration; a segment of the acceleration plan drawn
+   without the Coriolis term (the first of the position is the fault, the rest follow) or
+   with the student's own wrong one (``propagated``);
+7. **the student's own chain** — a segment from the student's force (``R43_mm =
    R43/Kp``), and, for a mechanism of one group, the crank's reaction closing the
    group's polygon with the student's loads and outer reaction, its arm h21 and Mур:
    right working from a wrong figure (``propagated``);
-6. **geometry** — an arm longer than the distance from its centre to the force's point;
-7. **scale** — a length measured at another scale the student used, or a value
-   computed with another of the student's scales (Kv for Ka);
 8. **lever arm** — the arm of the same force about another point, or another arm;
-9. **other models** — the inertia forces reversed (``sign``), left out (``model``);
-10. **another position** of the same mechanism, or a **neighbouring variant**
+9. **geometry** — an arm longer than the distance from its centre to the force's point;
+10. **scale** — a length measured at another scale the student used, or a value
+    computed with another of the student's scales (Kv for Ka);
+11. **other models** — the inertia forces reversed (``sign``), left out (``model``);
+12. **the student's own value** of another position (``other-variant``) or of another
+    figure of this position (``label``), to the written digit;
+13. **another position** of the same mechanism, or a **neighbouring variant**
     (``other-variant``);
-11. **label** — a given length or mass equal to another one (``lАВ = 0,08`` is l_OA);
-12. a plain ratio of scales (×2, ×0.5, ×2.5 …) for a length on paper (``scale``);
-13. otherwise ``model``: graphplan's exact value and the difference.
+14. **label** — a given length or mass equal to another one (``lАВ = 0,08`` is l_OA);
+15. a plain ratio of scales (×2, ×0.5, ×2.5 …) for a length on paper (``scale``);
+16. otherwise ``model``: graphplan's exact value and the difference.
+
+:meth:`Diagnoser.own_chain` runs before all of them: a figure computed by a right formula
+and right arithmetic from the student's own figures, each within its tolerance, is at
+worst inaccurate (the drafting error of the readings carried, not a fault).
 """
 
 from __future__ import annotations
