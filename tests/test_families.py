@@ -243,7 +243,11 @@ def test_analyze_json_of_every_family(name, tmp_path, capsys):
     report = json.loads(out.read_text(encoding="utf-8"))
     assert report["warnings"] == []
     assert report["mechanism"]["cycle_deg"] == (720.0 if name == "engine" else 360.0)
-    assert len(report["positions"]) == (24 if name == "engine" else len(report["positions"]))
+    if name == "engine":  # φ repeats over two turns; the process's phase does not
+        phases = [p["cycle_phase_deg"] for p in report["positions"]]
+        assert phases == pytest.approx([30.0 * k for k in range(24)], abs=1e-9)
+        assert report["positions"][13]["phi_deg"] == pytest.approx(
+            report["positions"][1]["phi_deg"])
     dynm = report["dynamics"]
     assert dynm["driven_by"] == ("loads" if name == "engine" else "motor")
     assert (dynm["motor"] is None) == (name == "engine")
@@ -317,3 +321,90 @@ def test_bad_input_is_one_line_naming_file_and_key(tmp_path, capsys, edits, key,
     err = capsys.readouterr().err
     assert err.count("\n") == 1
     assert err.startswith(f"graphplan: error: {path}: {key}: ") and words in err, err
+
+
+# --- the other forms of the load model -------------------------------------------------------
+
+
+def test_second_cylinder_of_an_in_line_four_stroke_engine_fires_a_turn_later():
+    # the same piston loaded by its diagram twice, the copy with phase = 360: the copy's
+    # force at a position equals the original's one turn (12 positions of 30°) earlier
+    text = (ROOT / "examples" / "engine.toml").read_text(encoding="utf-8")
+    start = text.index("[[loads]]")
+    end = text.index("[positions]")
+    copy = text[start:end].replace('name = "Fг"', 'name = "Fг2"').replace(
+        "bore = 82", "phase = 360\nbore = 82")
+    a = analyze(loads(text[:end] + copy + text[end:], source="twin.toml"))
+    ld = compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",), inertia=False)
+    f1, f2 = ld.all_forces()
+    assert f2.name == "Fг2"
+    np.testing.assert_allclose(f2.vector, np.roll(f1.vector, 12, axis=0), rtol=1e-12,
+                               atol=1e-9)
+    # with a phase between firing intervals the strokes start at the next ВМТ after it
+    odd = copy.replace("phase = 360", "phase = 200")
+    b = analyze(loads(text[:end] + odd + text[end:], source="twin2.toml"))
+    g1, g2 = compute_loads(b.mech, b.kin, b.cycle, kinds=("resistance",),
+                           inertia=False).all_forces()
+    np.testing.assert_allclose(g2.vector, np.roll(g1.vector, 12, axis=0), rtol=1e-12,
+                               atol=1e-9)
+
+
+PRESS = (ROOT / "examples" / "press.toml").read_text(encoding="utf-8")
+
+
+def _press_with(extra: str):
+    return analyze(loads(PRESS + "\n" + extra, source="press-extra.toml"))
+
+
+def test_a_constant_couple_on_the_crank_does_its_work_exactly():
+    # value = 150 N·m on the crank shaft, resisting, over the whole cycle: −150·2π J
+    base = dyn.work_diagrams(dyn.dynamic_model(_press_with(""))).A_c[-1]
+    a = _press_with('[[loads]]\nkind = "moment"\nlink = "1"\nvalue = 150\n')
+    A = dyn.work_diagrams(dyn.dynamic_model(a)).A_c[-1]
+    assert A - base == pytest.approx(-150 * 2 * math.pi, rel=1e-12)
+
+
+def test_a_crank_angle_diagram_is_read_over_the_cycle_with_its_sign():
+    # a couple on the rod over the crank angle: +100 N·m for 0…90°, −100 N·m for 90…360°
+    # (sense = diagram: CCW positive), counted from the start dead centre
+    a = _press_with('[[loads]]\nname = "M2"\nkind = "moment"\nlink = "2"\nover = "crank"\n'
+                    'sense = "diagram"\nmax = 100\n'
+                    'diagram = [[0, 1], [90, 1], [90, -1], [360, -1]]\n')
+    ld = compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",), inertia=False,
+                       neglect_below=0.0)  # not the press's 10 % rule at (2), (3)
+    m2 = next(m for m in ld.all_moments() if m.name == "M2")
+    sense = np.sign(a.mech.crank.omega)
+    start = a.cycle.dead_centres[0]
+    tau = np.degrees(np.mod((a.kin.phi - start) * sense, 2 * math.pi))
+    expected = np.where(tau < 90 - 1e-9, 100.0, -100.0)
+    expected[np.abs(tau - 90) < 1e-6] = 100.0   # at the jump: the larger in size, +100 first
+    np.testing.assert_allclose(m2.moment, expected)
+    # its work over the cycle, exactly (the jump a node): ∫M·dθ2 = 100·(θ2(90°) − θ2(0))
+    # − 100·(θ2(360°) − θ2(90°)) = 200·(θ2(90°) − θ2(0°)), θ2 the rod's angle
+    th = solve(a.mech, start + sense * np.radians([0.0, 90.0])).pos.theta["2"]
+    closed = 200.0 * float(th[1] - th[0])
+    base = dyn.work_diagrams(dyn.dynamic_model(_press_with(""))).A_c[-1]
+    A = dyn.work_diagrams(dyn.dynamic_model(a)).A_c[-1]
+    assert A - base == pytest.approx(closed, rel=1e-9)
+    assert abs(closed) > 10.0
+
+
+def test_drives_is_resists_turned_round_and_a_force_off_a_slider_follows_its_point():
+    res = ('[[loads]]\nname = "F2"\nkind = "force"\nlink = "2"\npoint = "S2"\nmax = 500\n'
+           'diagram = [[0, 1], [1, 1]]\nstroke = "both"\nsense = "{s}"\n')
+    a = _press_with(res.format(s="resists"))
+    b = _press_with(res.format(s="drives"))
+    fa = next(f for f in compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",),
+                                       inertia=False, neglect_below=0.0).all_forces()
+              if f.name == "F2")
+    fb = next(f for f in compute_loads(b.mech, b.kin, b.cycle, kinds=("resistance",),
+                                       inertia=False, neglect_below=0.0).all_forces()
+              if f.name == "F2")
+    np.testing.assert_allclose(fb.vector, -fa.vector)
+    v = point_velocity(a.mech, a.kin, "2", fa.at)
+    speed = np.hypot(*v.T)
+    moving = speed > 1e-9
+    # 500 N against the velocity of S2 wherever S2 moves
+    np.testing.assert_allclose(np.hypot(*fa.vector[moving].T), 500.0)
+    cosine = np.einsum("ij,ij->i", fa.vector[moving], v[moving]) / (500.0 * speed[moving])
+    np.testing.assert_allclose(cosine, -1.0)

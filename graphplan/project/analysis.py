@@ -80,6 +80,10 @@ class Analysis:
             },
         }
         positions = [self.kin.as_json(k, moving) for k in range(self.kin.n)]
+        from ..forces import cycle_travel  # the process's phase: φ repeats in a 720° cycle
+
+        for entry, t in zip(positions, cycle_travel(m, cy, self.kin.phi), strict=True):
+            entry["cycle_phase_deg"] = math.degrees(float(t))
         from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
 
         sc, note = _report_scales(m, self.kin, sheet_scales)
