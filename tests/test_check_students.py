@@ -184,3 +184,63 @@ def test_two_force_plans_at_one_position_each_at_its_own_kp():
     r = _check(text)
     assert r.wrong == (), [f.explanation_en for f in r.wrong]
     assert {f.quantity: f.verdict for f in r.figures}["R12_mm"] == "ok"
+
+
+MC_LINES = [
+    # fourbar, position 2: the resisting moment on the rocker is 171,5 N·m
+    ("Мс = 171,5 Нм", None),
+    ("Мс = 0,1715 кНм", None),
+    ("Мс = 0,1715 Нм", "unit"),  # the number of kN·m with the unit N·m
+    ("Мс = 171,5 кНм", "unit"),  # the number of N·m with the unit kN·m
+]
+
+
+@pytest.mark.parametrize(("line", "kind"), MC_LINES)
+def test_a_moment_in_kn_m_is_a_unit_slip_in_either_direction_never_a_formula(line, kind):
+    r = _check(FOURBAR_HEAD + f'[[positions]]\nlabel = "2"\nlines = ["{line}"]\n')
+    assert [f.kind for f in r.wrong] == ([kind] if kind else [])
+
+
+def test_the_levers_mbal_is_compared_with_the_balancing_moment():
+    # Мур from the force plans 41,3 N·m; from Zhukovsky's lever written Мур.ж = 45,5
+    r = _check(FOURBAR_HEAD + '''[[positions]]
+label = "2"
+lines = ["Мур = 41,3 Нм", "Мур.ж = 45,5 Нм"]
+''')
+    (f,) = r.wrong
+    assert f.quantity in ("Мур.ж", "Мур_ж") and f.kind == "consistency"
+    assert all(ln.compared == "" for ln in r.lines)
+
+
+def test_a_reaction_written_as_its_segment_in_mbal_is_named_and_mbal_follows():
+    # R12 = 60,02 mm ∙ 2 N/mm = 120,04 N; Мур takes 60,02 (the segment) for R21
+    gen_lines = '''[[positions]]
+label = "1"
+lines = [
+  "Кр = 2 Н/мм",
+  "R12 = R12_mm∙Кр = 60,02∙2 = 120,04 Н",
+  "h21 = 20,93 мм",
+  "Мур = R21∙h21∙Кl = 60,02∙20,93∙0,002 = 2,512 Нм",
+]
+'''
+    r = _check(FOURBAR_HEAD + gen_lines, lang="en")
+    roots = [f for f in r.wrong if f.primary]
+    assert [(f.quantity, f.kind) for f in roots] == [("R21", "scale")], roots
+    assert "segment" in roots[0].explanation and "Kp" in roots[0].explanation
+    assert [f.quantity for f in r.wrong if not f.primary] == ["Мур"]
+
+
+def test_a_reading_reused_from_another_position_of_the_same_student():
+    # pb is 29,9 mm at position 2; the student writes the same 29,9 at position 3
+    # (graphplan there: 44,74 mm) — their own reading, named however far graphplan's
+    # value of position 2 is from 29,9 (the old match needed 0,2 mm)
+    r = _check(FOURBAR_HEAD + '''[[positions]]
+label = "2"
+lines = ["vB = pb∙Kv = 30,3∙0,02 = 0,606 м/с"]
+[[positions]]
+label = "3"
+lines = ["vB = pb∙Kv = 30,3∙0,02 = 0,606 м/с"]
+''', lang="en")
+    roots = [f for f in r.wrong if f.primary]
+    assert [(f.position, f.quantity, f.kind) for f in roots] == [("3", "pb", "other-variant")]
+    assert "own" in roots[0].explanation

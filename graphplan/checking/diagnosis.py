@@ -354,13 +354,14 @@ class Diagnoser:
                 if x is None or x.q.kind == "scale":
                     continue
                 g = self.figs.get((x.scope, x.q.key))
-                if g is None or g.e is None or g.verdict == "wrong" or not _close(
-                        abs(x.value), abs(g.s), 0.005, 0.5 * 10.0 ** -decimals(x.text)):
-                    if g is None or g.e is None or g.verdict == "wrong" or g is f:
-                        label = x.name if x.position is None or x.q.scope == "global" or \
-                            "@" in x.name else f"{x.name} ({x.position})"
-                        if label in offs:
-                            return False
+                # right by its own chain only as the figure it is (the same value)
+                bad = g is None or g.e is None or g.verdict == "wrong" or g is f or \
+                    not _close(abs(x.value), abs(g.s), 0.005,
+                               0.5 * 10.0 ** -decimals(x.text))
+                label = x.name if x.position is None or x.q.scope == "global" or \
+                    "@" in x.name else f"{x.name} ({x.position})"
+                if bad and label in offs:
+                    return False
         try:
             F = self._canonical(lw, o, value(lw.template, env))
         except ExpressionError:

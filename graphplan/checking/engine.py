@@ -23,6 +23,7 @@ last written digit, whichever is larger.
 from __future__ import annotations
 
 import math
+import re
 from collections import Counter
 from dataclasses import dataclass, field, fields
 from itertools import pairwise
@@ -95,7 +96,11 @@ def read_member(text: str, vocab: Vocabulary) -> Member:
     try:
         node = parse(text, names=True, resolve=vocab.split)
     except ExpressionError as exc:
-        return Member(text, "text", error=str(exc))
+        # a name with a dotted index, as written for the lever's moment (Мур.ж)
+        dotted = re.fullmatch(r"\s*([^\W\d]\w*)\.([^\W\d]\w*)\s*", text)
+        if dotted is None:
+            return Member(text, "text", error=str(exc))
+        node = Sym(f"{dotted.group(1)}_{dotted.group(2)}")
     if isinstance(node, Sym):
         return Member(text, "name", node)
     unknown = [n for n in _sym_names(node) if vocab.lookup(n) is None]

@@ -99,7 +99,9 @@ SCALE_OF_DIMENSION = {"m": "Kl", "m/s": "Kv", "m/s²": "Ka", "N": "Kp"}
 _SCALE_ALIASES = {"Kl": "Kl", "μl": "Kl", "Kv": "Kv", "μv": "Kv", "Ka": "Ka", "μa": "Ka",
                   "Kp": "Kp", "KP": "Kp", "KF": "Kp", "Kf": "Kp", "μF": "Kp", "μp": "Kp",
                   "μP": "Kp"}
-_MBAL_ALIASES = ("Mур", "Mуp", "M_ур", "Mур1", "Mbal", "M_bal", "Mb")
+_MBAL_ALIASES = ("Mур", "Mуp", "M_ур", "Mур1", "Mbal", "M_bal", "Mb",
+                 # the same moment from Zhukovsky's lever (Мур.ж is read as Мур_ж)
+                 "Mурж", "Mур_ж", "MурЖ", "Mур_Ж", "Mур_рыч", "Mур_р")
 _INERTIA_FORCE = ("Pи", "Фи", "Ф", "Φ", "Fи", "Pin")
 _INERTIA_MOMENT = ("Mи", "MФ", "MΦ", "Min")
 

@@ -58,7 +58,7 @@ th { background: #eee; text-align: left; } td.n { text-align: right; white-space
 td.code, code { font-family: 'DejaVu Sans Mono', monospace; font-size: 8.5pt;
                 word-break: break-all; }
 table.findings td:first-child { width: 22%; } table.findings td:last-child { width: 34%; }
-.ok { color: #176117; } .inaccurate { color: #8a6d00; } .wrong { color: #b00020;
+.ok { color: #176117; } .inaccurate { color: #8a6d00; } .not-compared { color: #555; } .wrong { color: #b00020;
 font-weight: bold; } tr.follows td { color: #555; } tr.follows td.wrong { font-weight: normal; }
 .banner { padding: .5em 1em; border: 2px solid; display: inline-block; margin: .5em 0; }
 .banner.ok { border-color: #176117; } .banner.wrong { border-color: #b00020; }
@@ -98,8 +98,9 @@ def _figure_row(f: FigureCheck, lang: str) -> str:
     return (f"<tr><td>{_e(f.quantity)}</td><td class='n'>{_e(qty(f.stated, f.unit, lang))}"
             f"</td><td class='n'>{_e(exp)}{_e(sc)}</td><td class='n'>"
             f"{_e(pct(f.relative, lang)) if f.expected is not None else '—'}</td>"
-            f"<td class='{f.verdict}'>{_e(VERDICT_WORDS[lang][f.verdict])}</td>"
-            f"<td>{_e(KIND_WORDS[lang].get(f.kind, f.kind)) if f.kind else ''}</td>"
+            f"<td class='{f.verdict.replace(' ', '-')}'>{_e(VERDICT_WORDS[lang][f.verdict])}"
+            f"</td><td>{_e(KIND_WORDS[lang].get(f.kind, f.kind)) if f.kind else ''}"
+            f"{'<br>' + _e(f.explanation) if f.verdict == 'not compared' else ''}</td>"
             f"<td class='code'>{_e(f.where)}</td></tr>")
 
 
