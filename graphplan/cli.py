@@ -102,6 +102,7 @@ def _analyze(args) -> int:
 def _sheets(args) -> int:
     from .errors import InputError
     from .outputs import write_project
+    from .safe_text import terminal_text
 
     if args.precision is not None and not (0 <= args.precision <= 5):
         raise InputError(f"--precision: expected a reading precision of 0 … 5 mm "
@@ -114,7 +115,7 @@ def _sheets(args) -> int:
                              page=args.page, formats=args.format, dpi=args.dpi)
         for w in done.warnings:
             print(f"graphplan: warning: {w}", file=sys.stderr)
-        print(f"{v}: " + ", ".join(str(f) for f in done.files))
+        print(terminal_text(f"{v}: " + ", ".join(str(f) for f in done.files)))
     return 0
 
 

@@ -501,6 +501,7 @@ def _variant(tmp_path, name: str) -> Path:
     ("length-1e400.toml", "crank.length"),
     ("length-nan.toml", "crank.length"),
     ("rpm-huge-int.toml", "not valid TOML"),
+    ("label-markup.toml", "positions.extra[0].label: expected a label without"),
     ("binary.toml", ""),
     ("empty.toml", ""),
 ])
@@ -519,6 +520,7 @@ def test_accepted_variants_draw_valid_sheets(capsys, tmp_path):
     # was: reading_mm = 0 (allowed by the docs) crashed sheets; markup in the title
     text = hc.variant_files()["title-markup.toml"].replace("reading_mm = 0.5",
                                                            "reading_mm = 0")
+    text = text.replace('name = "press"', 'name = "<b>pr|ess</b>"')
     p = tmp_path / "markup-exact.toml"
     p.write_text(text, encoding="utf-8")
     c, _out, err = run(capsys, "sheets", str(p), "-o", str(tmp_path / "out"))
@@ -526,8 +528,10 @@ def test_accepted_variants_draw_valid_sheets(capsys, tmp_path):
     for svg in (tmp_path / "out").glob("*.svg"):
         minidom.parse(str(svg))  # well-formed XML
         assert "<svg onload" not in svg.read_text(encoding="utf-8")
-    md = (tmp_path / "out" / "forces.en.md").read_text(encoding="utf-8")
-    assert "<svg onload" not in md
+    for md in ("forces.en.md", "plans.ru.md"):
+        text = (tmp_path / "out" / md).read_text(encoding="utf-8")
+        assert "<svg onload" not in text and "<b>" not in text
+        assert "&lt;b&gt;pr\\|ess" in text.splitlines()[0]
 
 
 def test_the_json_does_not_depend_on_a_sheet_layout(capsys, tmp_path):

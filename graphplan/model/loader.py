@@ -196,6 +196,7 @@ class _Reader:
 
 
 _CONTROL = re.compile(r"[\x00-\x1f\x7f\u2028\u2029\x85]")
+_MARKUP = re.compile(r"[<>&|`\\]")  # markup in Markdown, HTML and the CSV tables
 
 
 def one_line(text: str) -> str:
@@ -555,6 +556,9 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             raise r.fail(f"{path}.label", "must not be empty")
         if _CONTROL.search(label):
             raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
+        if _MARKUP.search(label):  # a label is a cell and a heading of the tables
+            raise r.fail(f"{path}.label", f"expected a label without < > & | ` \\ "
+                         f"(got {label!r})")
         if label in labels:
             raise r.fail(f"{path}.label", f"label {label!r} is already used")
         labels.add(label)
@@ -772,7 +776,7 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
         name = None
         if "name" in lt:
             name = r.string(lt["name"], f"{path}.name").strip()
-            if not name or _CONTROL.search(name) or len(name) > 12:
+            if not name or _CONTROL.search(name) or _MARKUP.search(name) or len(name) > 12:
                 raise r.fail(f"{path}.name", f"expected a short one-line name like 'Fг' "
                              f"(got {lt['name']!r})")
             if name in names:

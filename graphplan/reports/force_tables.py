@@ -48,6 +48,7 @@ from ..plans import (
     zhukovsky_lever,
 )
 from ..project import Analysis, sheet2_scales, sheet_scales
+from ..safe_text import markdown_cell
 from ..units import Scale, fmt
 
 CURVE_POINTS = 360
@@ -587,7 +588,7 @@ def forces_markdown(analysis: Analysis, lang: str = "ru", precision: float | Non
     w = _words(lang)
     positions = force_readings(analysis, precision)
     prec = positions[0].precision
-    out = [f"# {w['title']} — {analysis.mech.name}", "", w["note"].format(p=fmt(prec))]
+    out = [f"# {w['title']} — {markdown_cell(analysis.mech.name)}", "", w["note"].format(p=fmt(prec))]
     for pf in positions:
         out += _position_markdown(pf, lang)
     out += ["", *curve_markdown(analysis, lang)]

@@ -40,6 +40,7 @@ from ..plans import (
     velocity_plan,
 )
 from ..project import Analysis
+from ..safe_text import markdown_cell
 from ..units import Scale, fmt
 
 TINY_MM = 1e-6
@@ -500,7 +501,7 @@ def plans_markdown(analysis: Analysis, lang: str = "en", precision: float = 0.0)
     m = analysis.mech
     positions = plan_readings(analysis, precision)
     note = (w["drafting_note"].format(p=_n(precision)) if precision > 0 else w["exact_note"])
-    out = [f"# {w['title']} — {m.name}", "", note, "", f"## {w['scales']}", ""]
+    out = [f"# {w['title']} — {markdown_cell(m.name)}", "", note, "", f"## {w['scales']}", ""]
     first = positions[0]
     for sc in (first.length_scale, first.velocity.scale, first.acceleration.scale):
         out.append(f"- {_localise(sc.basis, lang)}")
