@@ -32,14 +32,18 @@ def unit_text(unit: str, lang: str) -> str:
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 """Mantissas of the usual scale factors."""
 
+PLAN_SERIES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+"""Mantissas of the scales of the velocity and acceleration plans: round numbers a student
+divides by (μv = 0,003 (м/с)/мм), close enough that a plan fills at least 3/4 of its place."""
 
-def nice_ceil(value: float) -> float:
-    """The smallest member of the series 1, 2, 2.5, 4, 5 × 10^k that is ≥ ``value`` (> 0)."""
+
+def nice_ceil(value: float, series: tuple[float, ...] = SERIES) -> float:
+    """The smallest member of ``series`` × 10^k (default 1, 2, 2.5, 4, 5) that is ≥ ``value``."""
     if not value > 0 or not math.isfinite(value):
         raise ValueError(f"a scale needs a positive finite value (got {value!r})")
     k = math.floor(math.log10(value))
     for exp in (k, k + 1):
-        for m in SERIES:
+        for m in series:
             s = m * 10.0**exp
             if s >= value * (1 - 1e-12):
                 return float(f"{s:.12g}")
@@ -106,7 +110,8 @@ class Scale:
 
 
 def fit_scale(symbol: str, unit: str, largest: float, room_mm: float, *, quantity: str = "",
-              defining: float = 0.0, segment: str = "", fixed: float | None = None) -> Scale:
+              defining: float = 0.0, segment: str = "", fixed: float | None = None,
+              series: tuple[float, ...] = SERIES) -> Scale:
     """Choose a scale so that ``largest`` (physical) is at most ``room_mm`` long.
 
     Parameters
@@ -122,7 +127,9 @@ def fit_scale(symbol: str, unit: str, largest: float, room_mm: float, *, quantit
         ``"pa"``): recorded so the sheet can print the basis of the scale.
     fixed : float, optional
         A scale given in the variant file, used as is.
+    series : tuple of float
+        The mantissas to choose from (:data:`SERIES`, or :data:`PLAN_SERIES` for plans).
     """
-    per_mm = fixed if fixed is not None else nice_ceil(max(largest, 1e-300) / room_mm)
+    per_mm = fixed if fixed is not None else nice_ceil(max(largest, 1e-300) / room_mm, series)
     drawn = defining / per_mm if defining else 0.0
     return Scale(symbol, per_mm, unit, quantity, defining, drawn, segment)

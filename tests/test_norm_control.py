@@ -54,8 +54,6 @@ LONGEST_MIN, MEDIAN_MIN = 40.0, 50.0
 #: increment removes what it fixes (strict xfail: a case that starts passing fails here
 #: until it is removed from this list).
 TODO = {
-    *((n, 1, "plans") for n in ("fourbar", "offset_slider", "press", "shaper", "shaper_prp",
-                                "sixbar_press")),
     *((n, s, "filled") for n in EXAMPLES for s in (1, 2)),
     *((n, 1, "overlaps") for n in EXAMPLES),
     *((n, 2, "overlaps") for n in ("fourbar", "shaper", "sixbar_press")),

@@ -117,15 +117,15 @@ def test_kinematic_captions_quote_the_exact_velocities_and_accelerations(path):
 
 def test_press_velocity_steps_by_hand(press):
     # Position 2 of the press: ω1 = π·55/30 = 5.7596 rad/s, l_OA = 0.08 m, so
-    # v_A = 0.46077 m/s and pa = v_A/Kv = 0.46077/0.01 = 46.08 mm (Kv of sheet 1).
+    # v_A = 0.46077 m/s and pa = v_A/Kv = 0.46077/0.005 = 92.15 mm (Kv of sheet 1).
     les = lesson(press, "velocity", "2")
     assert [s.kind for s in les.steps] == ["pole", "lay", "intersect", "read", "similar",
                                            "similar"]
     lay = les.steps[1].results[0]
     assert lay.laid and lay.segment == "pa"
     assert lay.value == pytest.approx(math.pi * 55 / 30 * 0.08, rel=1e-12)
-    assert lay.mm == pytest.approx(lay.value / 0.01, rel=1e-12)
-    assert result_text(lay, "en") == "v_A = 0.4608 m/s → pa = v_A/Kv = 0.4608/0.01 = 46.08 mm"
+    assert lay.mm == pytest.approx(lay.value / 0.005, rel=1e-12)
+    assert result_text(lay, "en") == "v_A = 0.4608 m/s → pa = v_A/Kv = 0.4608/0.005 = 92.15 mm"
     terms = {t.name: t for t in les.steps[2].terms}
     # v_B = v_A + v_BA = v_B4 + v_B3B4: v_B sought, v_A drawn, v_BA ⟂AB, v_B4 = 0, v_B3B4 ∥ guide
     assert (terms["v_B"].direction, terms["v_B"].magnitude) == (None, None)

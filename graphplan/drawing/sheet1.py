@@ -46,6 +46,7 @@ from .sheet import (
     signatures,
     text_at_centre,
     text_box,
+    text_width,
 )
 
 WHITE_FILL = Style(0.5, fill="white")
@@ -208,8 +209,12 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     obstacles = [g for it in iter_leaves(items) if (g := item_geometry(it)) is not None
                  and not isinstance(it, Hatch)]
     w = WORDS[lang]
-    caption = Text((box.x0, box.y0 + 2.0), f"{w['positions']}   {_units(sc.kl.basis, lang)}",
-                   5.0, layer="text", id="pp-caption")
+    col = sc.layout.diagrams  # the left column: the caption keeps to its width
+    cap_text = f"{w['positions']}   {_units(sc.kl.basis, lang)}"
+    cap_h = next((h for h in (5.0, 3.5, 2.5)
+                  if text_width(Text((0, 0), cap_text, h, layer="text")) <= col.x1 - box.x0),
+                 2.5)
+    caption = Text((box.x0, box.y0 + 2.0), cap_text, cap_h, layer="text", id="pp-caption")
     page = sc.layout.page
     margin = page.trim.polygon().difference(page.frame.polygon().buffer(-1.0))
     keep = [text_box(caption).buffer(1.0), page.graph26_rect.polygon(), margin]
@@ -511,17 +516,19 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
     items: list[Item] = []
     items += position_plan_items(analysis, sc, lang)
     reader = Reader(precision)
-    n = len(sc.plans)
+    vps = {}
     for c, k in enumerate(sc.plans):
-        vp = velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
+        vps[k] = vp = velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
+        cell = sc.layout.v_cells[c]
+        items += plan_items(vp, cell, f"{w['velocity']}, {w['pos']} {kin.labels[k]}", f"vp{k}")
+        items += ill_mark_items(vp, cell, f"vp{k}", lang)
+    for c, k in enumerate(sc.acc_plans):
+        vp = vps.get(k) or velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
         ap = acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp, reader)
-        lab = kin.labels[k]
-        items += plan_items(vp, sc.layout.cells[c], f"{w['velocity']}, {w['pos']} {lab}",
-                            f"vp{k}")
-        items += plan_items(ap, sc.layout.cells[n + c], f"{w['acceleration']}, {w['pos']} {lab}",
+        cell = sc.layout.a_cells[c]
+        items += plan_items(ap, cell, f"{w['acceleration']}, {w['pos']} {kin.labels[k]}",
                             f"ap{k}")
-        items += ill_mark_items(vp, sc.layout.cells[c], f"vp{k}", lang)
-        items += ill_mark_items(ap, sc.layout.cells[n + c], f"ap{k}", lang)
+        items += ill_mark_items(ap, cell, f"ap{k}", lang)
     items += scales_items(sc, lang)
     items += table_block(analysis, sc, lang)
     if diagrams:

@@ -40,33 +40,74 @@ class Sheet1Layout:
     """Regions of sheet 1 (mm on paper, y down).
 
     ``plan_box`` is where the plan of positions goes (its own size, centred in the
-    left column), ``diagrams`` the box of the three diagrams, ``cells`` the plan
-    cells in order (velocity plans of positions 0…N−1, then acceleration plans),
-    ``table`` the top-left corner and width available for the table of the plans,
-    ``scales`` the box of the list of scales.
+    left column), ``diagrams`` the box of the three diagrams, ``v_cells`` the cells of the
+    velocity plans (one per drawn position), ``a_cells`` the larger cells of the
+    acceleration plans (the positions chosen for them), ``table`` the top-left corner and
+    width available for the table of the plans, ``scales`` the box of the list of scales.
     """
 
     page: Page
     plan_box: Rect
     diagrams: Rect
-    cells: tuple[Rect, ...]
+    v_cells: tuple[Rect, ...]
+    a_cells: tuple[Rect, ...]
     table: Rect
     scales: Rect
+    plan_size: float = 0.0  #: the smaller defining vector (pa, πa) the cells allow, mm
 
     @property
-    def cell_inner(self) -> tuple[float, float]:
+    def cells(self) -> tuple[Rect, ...]:
+        """Every plan cell: the velocity plans', then the acceleration plans'."""
+        return self.v_cells + self.a_cells
+
+    @staticmethod
+    def inner(cell: Rect) -> tuple[float, float]:
         """Room for one plan in a cell (below its caption, with a margin for letters)."""
-        c = self.cells[0]
-        return c.width - 2 * 6.0, c.height - CAPTION - 2 * 6.0
+        return cell.width - 2 * CELL_MARGIN, cell.height - CAPTION - 2 * CELL_MARGIN
+
+
+CELL_MARGIN = 5.0  #: room kept on each side of a plan in its cell for its letters, mm
+OVERSHOOT = 6.0  #: construction lines run this far past their intersection, mm
+VECTOR_MAX = 100.0  #: the method's longest main vector of a plan, mm
+VECTOR_HARD = 125.0  #: the longest vector a plan may have: the method wants 50-100 mm, but one Kv
+#: for every position cannot keep a shaper's pa (at the dead centres the longest vector) at 50 mm
+#: and its idle stroke (2.3·pa) under 100 mm: the median plan is then read at 50 mm
+
+
+def _grid(x0: float, y0: float, w: float, h: float, n: int, shape: tuple[float, float],
+          cap: float) -> tuple[float, tuple[Rect, ...]]:
+    """The grid of ``n`` cells in the box that gives the largest plan of ``shape`` (its
+    width and height per mm of the defining vector): that vector's length and the cells."""
+    best: tuple[float, int, int] | None = None
+    for ncol in range(1, n + 1):
+        nrow = math.ceil(n / ncol)
+        cw, ch = w / ncol, h / nrow
+        iw = cw - 2 * CELL_MARGIN - 2 * OVERSHOOT
+        ih = ch - CAPTION - 2 * CELL_MARGIN - 2 * OVERSHOOT
+        size = min(iw / max(shape[0], 1e-9), ih / max(shape[1], 1e-9), cap)
+        if best is None or size > best[0] + 1e-9:
+            best = (size, ncol, nrow)
+    size, ncol, nrow = best  # type: ignore[misc]
+    cw, ch = w / ncol, h / nrow
+    return size, tuple(Rect(x0 + (i % ncol) * cw, y0 + (i // ncol) * ch,
+                            x0 + (i % ncol + 1) * cw, y0 + (i // ncol + 1) * ch)
+                       for i in range(n))
 
 
 def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
-                  n_plans: int | None = None) -> Sheet1Layout:
+                  n_plans: int | None = None, n_acc: int | None = None,
+                  shape: tuple[float, float, float, float] = (2.0, 2.0, 2.0, 2.0),
+                  longest: tuple[float, float] = (2.0, 2.0)) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
-    The grid takes the column count that gives the largest square-ish cells for
-    2·``n_plans`` plans (default: every position); the table has a row per position.
-    Raises LayoutError when the plan of positions leaves no room.
+    The region right of the left column holds, above the table's strip, a grid of the
+    ``n_plans`` velocity plans (default: every position) and under it a row of the
+    ``n_acc`` acceleration plans (default: as many). ``shape`` is the largest width and
+    height of a velocity and of an acceleration plan per mm of its defining vector (pa,
+    πa), ``longest`` its longest vector per mm of it: the split between the two and the
+    grid are those that make the smaller of the two defining vectors the longest, neither
+    plan's longest vector over VECTOR_MAX. Raises LayoutError when the plan of positions
+    leaves no room.
     """
     f = page.frame
     top = f.y0 + GRAPH26_SIZE[1] + 4.0
@@ -83,31 +124,49 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     diagrams = Rect(x0, f.y1 - 4.0 - d_h, x0 + left_w, f.y1 - 4.0)
 
     gx0, gx1 = x0 + left_w + GAP + 4.0, f.x1 - 4.0
+    n_v = n_positions if n_plans is None else n_plans
+    n_a = n_v if n_acc is None else n_acc
     table_h = ROW * (n_positions + 1) + CAPTION
     tb_w, tb_h = TITLE_BLOCK_SIZE
     strip = max(table_h, tb_h + GAP + SCALES_BLOCK)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
-    n_cells = 2 * (n_positions if n_plans is None else n_plans)
+    W, H = gx1 - gx0, gy1 - gy0
+    cap_v, cap_a = VECTOR_HARD / max(longest[0], 1.0), VECTOR_HARD / max(longest[1], 1.0)
     best = None
-    for ncol in range(1, n_cells + 1):
-        nrow = math.ceil(n_cells / ncol)
-        w, h = (gx1 - gx0) / ncol, (gy1 - gy0) / nrow
-        room = min(w - 12.0, h - CAPTION - 12.0)
-        if best is None or room > best[0]:
-            best = (room, ncol, nrow, w, h)
-    room, ncol, nrow, w, h = best  # type: ignore[misc]
-    if room < 30.0:
+    step = 2.0
+    ha = 0.0
+    while ha <= H:
+        hv = H - ha
+        if (n_a == 0) != (ha == 0.0) or (n_v == 0) != (hv == 0.0):
+            ha += step
+            continue
+        sv, vc = _grid(gx0, gy0, W, hv, n_v, shape[:2], cap_v) if n_v else (math.inf, ())
+        sa, ac = _grid(gx0, gy0 + hv, W, ha, n_a, shape[2:], cap_a) if n_a else (math.inf, ())
+        score = min(sv, sa)
+        if best is None or score > best[0] + 1e-9:
+            best = (score, vc, ac)
+        ha += step
+    # or: the acceleration plans in the left column, between the plan of positions and
+    # the diagrams (these at their smallest height), the velocity plans over the whole height
+    if n_a and n_v:
+        a_top = plan_box.y1 + GAP
+        a_bot = f.y1 - 4.0 - dmin_h - GAP
+        if a_bot - a_top > 60.0:
+            sa, ac = _grid(x0, a_top, left_w, a_bot - a_top, n_a, shape[2:], cap_a)
+            sv, vc = _grid(gx0, gy0, W, H, n_v, shape[:2], cap_v)
+            if best is None or min(sv, sa) > best[0] + 2.0:
+                best = (min(sv, sa), vc, ac)
+                diagrams = Rect(x0, f.y1 - 4.0 - dmin_h, x0 + left_w, f.y1 - 4.0)
+    if best is None or best[0] < 15.0:
         raise LayoutError(
-            f"{n_cells} plans leave cells of {room:.0f} mm on {page.format}: choose the "
+            f"{n_v + n_a} plans leave too little room on {page.format}: choose the "
             "positions to draw (drawing.positions) or a larger format"
         )
-    cells = tuple(Rect(gx0 + (i % ncol) * w, gy0 + (i // ncol) * h,
-                       gx0 + (i % ncol + 1) * w, gy0 + (i // ncol + 1) * h)
-                  for i in range(n_cells))
+    size, v_cells, a_cells = best
     tbx = f.x1 - tb_w
     table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
     scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
-    return Sheet1Layout(page, plan_box, diagrams, cells, table, scales)
+    return Sheet1Layout(page, plan_box, diagrams, v_cells, a_cells, table, scales, size)
 
 
 @dataclass(frozen=True, slots=True)

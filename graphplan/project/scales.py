@@ -20,10 +20,13 @@ from ..kinematics import in_working_stroke
 from ..model import Mechanism
 from ..paper import GRAPH26_SIZE, Page
 from ..plans import plan_name
-from ..units import Scale, fit_scale, nice_ceil
+from ..units import PLAN_SERIES, Scale, fit_scale, nice_ceil
 from .layout import (
     CAPTION,
     GAP,
+    OVERSHOOT,
+    VECTOR_HARD,
+    VECTOR_MAX,
     Rect,
     Sheet1Layout,
     diagram_min,
@@ -33,8 +36,8 @@ from .layout import (
 )
 
 PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
+SLACK = 8.0  #: of a cell's margins a plan may take when that spares it the coarser scale, mm
 SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
-LINE_OVERSHOOT = 8.0  #: construction lines run this far past their intersection, mm
 TRAJECTORY_POINTS = 360
 SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
 
@@ -51,6 +54,7 @@ class Sheet1Scales:
     plans: tuple[int, ...] = ()  # positions whose plans are drawn, in cell order
     paths: dict[str, np.ndarray] | None = None  # the trajectories the extent was taken from
     slots: dict[str, tuple[float, float]] | None = None  # see :func:`slot_ranges`
+    acc_plans: tuple[int, ...] = ()  # positions whose acceleration plans are drawn
 
 
 def slot_ranges(mech: Mechanism, fine) -> dict[str, tuple[float, float]]:
@@ -105,14 +109,15 @@ def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple
     return float(x0), float(y0), float(x1), float(y1)
 
 
-def positions_by_label(mech: Mechanism, kin, section: str) -> tuple[int, ...] | None:
-    """Indices of the positions a section's ``positions`` names (None if it names none)."""
-    wanted = mech.settings.get(section, {}).get("positions")
+def positions_by_label(mech: Mechanism, kin, section: str, key: str = "positions"
+                       ) -> tuple[int, ...] | None:
+    """Indices of the positions a section's ``positions`` (or ``key``) names (None if none)."""
+    wanted = mech.settings.get(section, {}).get(key)
     if wanted is None:
         return None
     for lab in wanted:
         if lab not in kin.labels:
-            raise InputError(f"{mech.source}: {section}.positions: expected a position label "
+            raise InputError(f"{mech.source}: {section}.{key}: expected a position label "
                              f"({', '.join(kin.labels)}), got {lab!r}")
     return tuple(kin.labels.index(lab) for lab in wanted)
 
@@ -123,34 +128,85 @@ def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
     return tuple(range(kin.n)) if which is None else which
 
 
-def _plan_extent_mm(mech, kin, kl: Scale, kv: Scale, ka: Scale,
-                    which: tuple[int, ...]) -> tuple[float, float, float, float]:
-    """Largest width and height (mm) of the velocity and of the acceleration plans."""
+def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...]
+                 ) -> tuple[tuple[float, float, float, float], tuple[float, float]]:
+    """Largest width and height of the velocity plans of ``which`` and of the acceleration
+    plans of ``acc``, and their longest vectors, each per mm of its defining vector (pa, πa)."""
     from ..plans import acceleration_plan, velocity_plan
 
-    vw = vh = aw = ah = 0.0
-    for k in which:
-        vp = velocity_plan(mech, kin, k, kl, kv)
-        ap = acceleration_plan(mech, kin, k, kl, ka, vp)
-        for plan, is_v in ((vp, True), (ap, False)):
-            pts = np.array(list(plan.points.values()))
-            w, h = np.ptp(pts, axis=0)
-            if is_v:
-                vw, vh = max(vw, w), max(vh, h)
-            else:
-                aw, ah = max(aw, w), max(ah, h)
-    return vw, vh, aw, ah
+    cr = mech.crank
+    va, aa = abs(cr.omega) * cr.length, cr.omega**2 * cr.length
+    trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
+    trial_a = Scale("Ka", max(aa, 1e-12) / 50.0, "(m/s²)/mm")
+    vw = vh = aw = ah = lv = la = 0.0
+    for k in sorted(set(which) | set(acc)):
+        vp = velocity_plan(mech, kin, k, kl, trial_v)
+        if k in which:
+            w, h = _ptp(vp)
+            vw, vh, lv = max(vw, w), max(vh, h), max(lv, _longest(vp))
+        if k in acc:
+            ap = acceleration_plan(mech, kin, k, kl, trial_a, vp)
+            w, h = _ptp(ap)
+            aw, ah, la = max(aw, w), max(ah, h), max(la, _longest(ap))
+    return (vw / 50, vh / 50, aw / 50, ah / 50), (lv / 50, la / 50)
+
+
+def _ptp(plan) -> tuple[float, float]:
+    pts = np.array(list(plan.points.values()))
+    w, h = np.ptp(pts, axis=0)
+    return float(w), float(h)
+
+
+def _longest(plan) -> float:
+    return max((r.exact_mm for r in plan.readings.values()), default=0.0)
+
+
+def acceleration_positions(mech: Mechanism, kin) -> tuple[int, ...]:
+    """Positions whose acceleration plans sheet 1 draws, large, as students draw them.
+
+    ``drawing.accelerations`` (labels) when the variant gives it; else the positions of
+    the force analysis (``kinetostatics.positions``, or by default the working position(s)
+    and one idle position, :func:`default_positions`): the plans sheet 2 is built on.
+    """
+    which = positions_by_label(mech, kin, "drawing", "accelerations")
+    if which is not None:
+        return which
+    which = positions_by_label(mech, kin, "kinetostatics")
+    if which is not None:
+        return which
+    from ..forces import compute_loads, solve_forces
+    from ..kinematics import analyse_cycle
+
+    cycle = analyse_cycle(mech)
+    loads = compute_loads(mech, kin, cycle)
+    return default_positions(mech, kin, solve_forces(mech, kin, loads), cycle)
+
+
+_CACHE: list = []  # (mech, kin, format, scales) of the last calls: sheet_scales is pure
 
 
 def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales:
-    """Choose Kl, Kv, Ka for sheet 1 from the usual series (1, 2, 2.5, 4, 5 × 10^k).
+    """Choose Kl, Kv, Ka for sheet 1: Kl from the usual series (1, 2, 2.5, 4, 5 × 10^k),
+    Kv and Ka from :data:`graphplan.units.PLAN_SERIES`.
 
-    Kl: the plan of positions (all positions, the trajectories) fits the left column,
-    at most 42 % of the frame's width and the height left above the diagrams.
-    Kv, Ka: the largest velocity (acceleration) plan of all positions fits the
-    room of one grid cell, construction lines included.
+    Kl: the plan of positions (all positions, the trajectories, the slots) fits the left
+    column, at most 42 % of the frame's width and the height left above the diagrams.
+    Kv, Ka: the layout (:func:`graphplan.project.layout.sheet1_layout`) shares the place
+    between the velocity plans of the drawn positions and the acceleration plans of
+    :func:`acceleration_positions` so that both are as large as they can be; then the
+    largest plan of each kind fits its cell, construction lines included, and no vector is
+    longer than VECTOR_MAX.
     """
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    for m, kn, fmt_, res in _CACHE:
+        if m is mech and kn is kin and fmt_ == page.format:
+            return res
+    res = _sheet_scales(mech, kin, page)
+    _CACHE[:] = [*_CACHE[-3:], (mech, kin, page.format, res)]
+    return res
+
+
+def _sheet_scales(mech: Mechanism, kin, page: Page) -> Sheet1Scales:
     fixed = mech.settings.get("drawing", {})
     fine = one_turn(mech, kin)
     paths = trajectories(mech, kin, fine)
@@ -171,24 +227,43 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
         if kl.per_mm == kl_m:
             break
         kl_m = kl.per_mm
+    acc = acceleration_positions(mech, kin)
+    # an acceleration plan is built on its position's velocity plan: that one is drawn too
+    which = tuple(sorted(set(plan_positions(mech, kin)) | set(acc)))
+    shape, longest = _plan_shapes(mech, kin, kl, which, acc)
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
-    which = plan_positions(mech, kin)
-    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which))
-    iw, ih = layout.cell_inner
-    iw, ih = iw - 2 * LINE_OVERSHOOT, ih - 2 * LINE_OVERSHOOT
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape, longest)
     va = abs(cr.omega) * cr.length
     aa = cr.omega**2 * cr.length
-    trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
-    trial_a = Scale("Ka", aa / 50.0, "(m/s²)/mm")
-    vw, vh, aw, ah = _plan_extent_mm(mech, kin, kl, trial_v, trial_a, which)
-    need_v = trial_v.per_mm * max(vw / iw, vh / ih, 1e-9)
-    need_a = trial_a.per_mm * max(aw / iw, ah / ih, 1e-9)
-    kv = fit_scale("Kv", "(m/s)/mm", need_v, 1.0, quantity=f"v{cr.pin}", defining=va,
-                   segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"))
-    ka = fit_scale("Ka", "(m/s²)/mm", need_a, 1.0, quantity=f"a{cr.pin}", defining=aa,
-                   segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"))
-    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots)
+
+    def fit(cells, sw, sh, lng, defining) -> float:
+        """Units per mm: the series value that draws the largest plan nearest to filling
+        its cell, its longest vector at most VECTOR_HARD. The usual ceiling of the series
+        may shrink a plan by a third; the next finer value is taken when the plan still
+        fits with the room kept for letters and construction lines eaten by SLACK."""
+        iw, ih = Sheet1Layout.inner(cells[0])
+        iw, ih = iw - 2 * OVERSHOOT, ih - 2 * OVERSHOOT
+        size = min(iw / max(sw, 1e-9), ih / max(sh, 1e-9), VECTOR_MAX / max(lng, 1.0))
+        loose = min((iw + SLACK) / max(sw, 1e-9), (ih + SLACK) / max(sh, 1e-9),
+                    VECTOR_HARD / max(lng, 1.0))
+        d = max(defining, 1e-12)
+        strict = nice_ceil(d / max(size, 1e-9), PLAN_SERIES)
+        e0 = math.floor(math.log10(strict))
+        finer = max((m * 10.0**e for e in (e0 - 1, e0) for m in PLAN_SERIES
+                     if m * 10.0**e < strict * (1 - 1e-9)), default=strict)
+        return float(f"{finer:.12g}") if d / finer <= loose else strict
+
+    kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, *shape[:2], longest[0], va), 1.0,
+                   quantity=f"v{cr.pin}", defining=va,
+                   segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"),
+                   series=PLAN_SERIES)
+    a_cells = layout.a_cells or layout.v_cells
+    ka = fit_scale("Ka", "(m/s²)/mm", fit(a_cells, *shape[2:], longest[1], aa), 1.0,
+                   quantity=f"a{cr.pin}", defining=aa,
+                   segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
+                   series=PLAN_SERIES)
+    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc)
 
 
 def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
