@@ -22,7 +22,6 @@ from .layout import (
 )
 from .plausibility import K_MARGIN, machine_warnings
 from .scales import (
-    LINE_OVERSHOOT,
     PLAN_MARGIN,
     SHEET2_MAX_ROWS,
     SLOT_OVER,
@@ -48,7 +47,6 @@ __all__ = [
     "GAP",
     "K_MARGIN",
     "LABEL_ROOM",
-    "LINE_OVERSHOOT",
     "PLAN_MARGIN",
     "ROW",
     "SCALES_BLOCK",
