@@ -55,8 +55,8 @@ LONGEST_MIN, MEDIAN_MIN = 40.0, 50.0
 #: until it is removed from this list).
 TODO = {
     *((n, s, "filled") for n in EXAMPLES for s in (1, 2)),
-    *((n, 1, "overlaps") for n in EXAMPLES),
-    *((n, 2, "overlaps") for n in ("fourbar", "shaper", "sixbar_press")),
+    *((n, 1, "overlaps") for n in EXAMPLES if n != "crusher"),
+    *((n, 2, "overlaps") for n in ("crusher", "fourbar", "shaper", "sixbar_press")),
 }
 
 
