@@ -318,7 +318,7 @@ def _judge(p: FoundPlan, ref, sheet: dict[str, float], tol: Tolerances, lang: st
             f"буквы, которых нет среди точек плана: {', '.join(laid.unknown)}.", lang,
             verdict="inaccurate", key=j.key))
     # 2. the segments (checked by the calculation checker) and 3. their directions
-    j.figures = segment_lengths(laid)
+    j.figures = segment_lengths(laid, tol.reading_mm)
     plan_level = any(f.verdict == "wrong" for f in j.findings)
     for dr in directions(laid, tol.reading_mm):
         if dr.verdict == "ok":

@@ -216,14 +216,18 @@ def missing_components(laid: Laid, reading_mm: float) -> list[Segmenting]:
     return out
 
 
-def segment_lengths(laid: Laid) -> dict[str, float]:
+def segment_lengths(laid: Laid, reading_mm: float = 0.5) -> dict[str, float]:
     """The length (mm) on the student's plan of every reading of the construction whose
-    two ends the student lettered."""
+    two ends the student lettered (a normal or Coriolis component shorter than twice the
+    reading precision, which may be left out, is not judged)."""
     inv = {c: s for s, c in laid.match.items()}
     out = {}
     readings = getattr(laid.plan, "readings", {})
     for sg in laid.segments:
         if sg.name not in readings or sg.start not in inv or sg.end not in inv:
+            continue
+        if sg.role in ("normal", "coriolis") and float(np.hypot(
+                *(laid.plan.points[sg.end] - laid.plan.points[sg.start]))) < 2 * reading_mm:
             continue
         out[sg.name] = float(np.hypot(*(laid.measured[sg.end] - laid.measured[sg.start])))
     return out

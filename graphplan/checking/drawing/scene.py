@@ -85,6 +85,7 @@ class Scene:
         segs = [s for s in drawing.segments if not s.curve and s.length > 1e-6]
         self.arrow_tips = self._tips(segs)
         self.segments = self._carry_to_tips(segs)
+        self.segments += self._bare_heads()
         self.nodes: list[Node] = []
         self._grid: dict[tuple[int, int], list[int]] = {}
         self.seg_nodes: list[tuple[int, int]] = []
@@ -127,6 +128,31 @@ class Scene:
                 o2 = (s2.x2, s2.y2) if e2 == 0 else (s2.x1, s2.y1)
                 heads.append((o1, tip, o2))
         return heads
+
+    def _bare_heads(self) -> list[Segment]:
+        """A vector shorter than its arrowhead is drawn as the head alone: the head's own
+        axis (the middle of its base to its tip) stands for the vector's line."""
+        ends: dict[tuple[int, int], bool] = {}
+        for s in self.segments:
+            for x, y in ((s.x1, s.y1), (s.x2, s.y2)):
+                ends[(round(x / SNAP_MM), round(y / SNAP_MM))] = True
+        out = []
+        for pts in self.arrow_tips:
+            if len(pts) < 3:
+                continue
+            tip = head_tip(pts)
+            k = (round(tip[0] / SNAP_MM), round(tip[1] / SNAP_MM))
+            if any((k[0] + i, k[1] + j) in ends for i in (-1, 0, 1) for j in (-1, 0, 1)):
+                continue
+            base = [p for p in pts if abs(p[0] - tip[0]) + abs(p[1] - tip[1]) > 1e-6]
+            if not base:
+                continue
+            bx = sum(p[0] for p in base) / len(base)
+            by = sum(p[1] for p in base) / len(base)
+            if math.hypot(tip[0] - bx, tip[1] - by) < 0.5:
+                continue  # a dot, not an arrowhead
+            out.append(Segment(bx, by, tip[0], tip[1], width=0.5))
+        return out
 
     def _carry_to_tips(self, segs: list[Segment]) -> list[Segment]:
         """Lines that stop at the base of an arrowhead, carried on to its tip."""
@@ -357,7 +383,8 @@ class Scene:
             if not is_names(t.text):
                 continue
             names = split_names(t.text)
-            pole = any(fold(n) in POLE_NAMES for n in names)
+            # a pole alone (with other names, arrows of points at the pole may end there)
+            pole = len(names) == 1 and fold(names[0]) in POLE_NAMES
             half_w = 0.35 * t.height * len(t.text)
             reach = 3.0 * t.height + 3.0  # from the text's box
             a = math.radians(t.angle)
