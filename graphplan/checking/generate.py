@@ -687,7 +687,7 @@ def _carry(lines: list[GenLine], j: int, old: GenLine, new: GenLine) -> tuple[st
                 # Кр = Q/Q_mm: the scale is chosen, the segment drawn from the force
                 kp = float(ln.result_text.replace(",", "."))
                 size = float(ops[0].text.replace(",", "."))
-                ops[1] = replace(ops[1], text=_fmt(size / kp, decimals=2))
+                ops[1] = replace(ops[1], text=_fmt(size / kp, 4))
             lines[m] = replace(ln, operands=tuple(ops))
             out.append(lines[m].text())
             if _written_result(lines[m]) != before:

@@ -184,6 +184,14 @@ class Vocabulary:
                 add(q, *(("Fпс", "Pпс", "F") if name == "Q" else ()))
                 if unit == "N":
                     add(_segment(q))
+            elif not re.fullmatch(r"(G|Pи|Mи)\d+", name):
+                # any other load of the variant by its own name (gas force Fг1, the
+                # liquid's Fж, a drive moment): a moment if its name says M
+                unit = "N·m" if fold(name)[:1] == "M" else "N"
+                q = _q(name, ("resistance", name), "load", unit, unit, prefixes=(0, 1))
+                add(q)
+                if unit == "N":
+                    add(_segment(q))
         if mech.resistances:
             r = mech.resistances[0]
             unit = "N" if r.kind == "force" else "N·m"
