@@ -235,6 +235,7 @@ def variant_files() -> dict[str, str | bytes]:
         "author-formula.toml": sub(press, r'^author = ".*"', 'author = "=1+2"'),
         "name-markup.toml": sub(press, r'^name = "press"', 'name = "<b>pr|ess</b>"'),
         "label-markup.toml": sub(press, r'label = "\(2\)"', 'label = "<b>|2"'),
+        "label-path.toml": sub(press, r'label = "\(2\)"', 'label = "../../../x"'),
         "reading-0.toml": sub(press, r"^reading_mm = .*", "reading_mm = 0"),
         "positions-48.toml": sub(press, r"^count = 8 .*", "count = 48"),
         "guides-0.1deg.toml": sub(yoke, r"^slot_angle = 90 .*", "slot_angle = 0.1"),

@@ -502,6 +502,7 @@ def _variant(tmp_path, name: str) -> Path:
     ("length-nan.toml", "crank.length"),
     ("rpm-huge-int.toml", "not valid TOML"),
     ("label-markup.toml", "positions.extra[0].label: expected a label without"),
+    ("label-path.toml", "positions.extra[0].label: expected a label without"),
     ("binary.toml", ""),
     ("empty.toml", ""),
 ])

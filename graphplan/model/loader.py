@@ -556,8 +556,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             raise r.fail(f"{path}.label", "must not be empty")
         if _CONTROL.search(label):
             raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
-        if _MARKUP.search(label):  # a label is a cell and a heading of the tables
-            raise r.fail(f"{path}.label", f"expected a label without < > & | ` \\ "
+        if _MARKUP.search(label) or "/" in label:  # a label is a cell, a heading, a file name
+            raise r.fail(f"{path}.label", f"expected a label without < > & | ` / \\ "
                          f"(got {label!r})")
         if label in labels:
             raise r.fail(f"{path}.label", f"label {label!r} is already used")
