@@ -12,6 +12,7 @@ choose them, so that the largest vector just fits its place.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 UNITS_RU: dict[str, str] = {
@@ -48,6 +49,46 @@ def nice_ceil(value: float, series: tuple[float, ...] = SERIES) -> float:
             if s >= value * (1 - 1e-12):
                 return float(f"{s:.12g}")
     raise AssertionError("unreachable")  # pragma: no cover
+
+
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
+_LETTER = "A-Za-zА-Яа-яЁёΑ-Ωα-ω"
+#: A quantity's symbol and its index, written as a subscript on a drawing (GOST 2.304's
+#: indices): vB, vBA, lO1A, h21, R12, ω1, S3, Mур, Aс, Pдв.тр, Jпр, JII, KM, Kφ, Kl. Capital
+#: indices only after v, a, l, h, K, J (so a link "AB" stays as it is), Cyrillic ones after
+#: M, A, P, J, F, n, and a single lower-case or Greek index only after K (the scales).
+_SUBSCRIPT = re.compile(
+    rf"(?<![{_LETTER}0-9])(?:"
+    r"(?P<s1>[vahlKJ])(?P<i1>[A-Z][A-Z0-9]{0,3})"
+    r"|(?P<s2>[MAPJFn])(?P<i2>[а-яё]+(?:\.[а-яё]+)?)"
+    r"|(?P<s3>[RFGMmhωεφψSPTJnva])(?P<i3>[0-9]{1,3})"
+    r"|(?P<s4>K)(?P<i4>[a-zφ])"
+    rf")(?![{_LETTER}0-9])")
+
+
+def decimal_comma(text: str) -> str:
+    """Numbers of ``text`` with the decimal comma Russian drawings use (GOST 2.304):
+    ``"Kφ = 0.0218"`` → ``"Kφ = 0,0218"`` (only a point between two digits)."""
+    return _DECIMAL_POINT.sub(",", text)
+
+
+def subscript_runs(text: str) -> list[tuple[str, bool]]:
+    """``text`` cut into runs, each ``(chars, is_subscript)``: the indices of the
+    quantities' symbols (see ``_SUBSCRIPT``) as subscripts, the rest as written.
+
+    >>> subscript_runs("vB = 0,5; Mур")
+    [('v', False), ('B', True), (' = 0,5; M', False), ('ур', True)]
+    """
+    runs: list[tuple[str, bool]] = []
+    at = 0
+    for m in _SUBSCRIPT.finditer(text):
+        sym = next(g for g in (m.group("s1"), m.group("s2"), m.group("s3"), m.group("s4")) if g)
+        idx = next(g for g in (m.group("i1"), m.group("i2"), m.group("i3"), m.group("i4")) if g)
+        runs.append((text[at:m.start()] + sym, False))
+        runs.append((idx, True))
+        at = m.end()
+    runs.append((text[at:], False))
+    return [r for r in runs if r[0]]
 
 
 def fmt(x: float, digits: int = 6) -> str:

@@ -210,7 +210,7 @@ def svg_layers(name: str) -> dict[str, SvgLayer]:
                 elif tag == "text":
                     rot = re.search(r"rotate\(([-\d.]+)", ch.get("transform") or "")
                     family = ch.get("font-family").split(",")[0].strip().strip("'")
-                    data.texts.append((ch.text, _f(ch, "x"), _f(ch, "y"),
+                    data.texts.append(("".join(ch.itertext()), _f(ch, "x"), _f(ch, "y"),
                                        -float(rot.group(1)) % 360 if rot else 0.0, family))
 
         walk(g)

@@ -34,13 +34,6 @@ from .sheet import TEXT_HEIGHTS, Group, Item, Polyline, Style, Text
 
 MM = 72 / 25.4  #: points per millimetre
 MIN_WIDTH = 0.25  #: thinnest line of a sheet, mm (GOST 2.303 thin line S/3 … S/2, S = 0.7)
-_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
-
-
-def decimal_comma(text: str) -> str:
-    """Numbers of ``text`` with a decimal comma, as Russian drawings write them:
-    ``"Kφ = 0.0218"`` → ``"Kφ = 0,0218"`` (a point between two digits only)."""
-    return _DECIMAL_POINT.sub(",", text)
 
 
 def _colour(rgba) -> str:

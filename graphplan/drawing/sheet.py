@@ -832,11 +832,19 @@ def table_items(origin: Pt, column_widths: Sequence[float], rows: Sequence[Seque
 
 @dataclass(frozen=True, slots=True)
 class Sheet:
-    """One drawing sheet: its page, its items and its title block (None: no block)."""
+    """One drawing sheet: its page, its items and its title block (None: no block).
+
+    ``lang`` is the language of its lettering: on a Russian sheet (``"ru"``) the
+    renderers write numbers with the decimal comma (:func:`graphplan.units.
+    decimal_comma`; the title block's designation is left as it is). Every sheet's
+    renderers write the indices of the quantities as subscripts (vB, R12, Mур:
+    :func:`graphplan.units.subscript_runs`) where the format can (SVG, PDF, PNG).
+    """
 
     page: Page = field(default_factory=Page)
     items: tuple[Item, ...] = ()
     title_block: TitleBlock | None = None
+    lang: str | None = None
 
     def __post_init__(self) -> None:
         items = tuple(self.items)

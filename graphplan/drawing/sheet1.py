@@ -533,7 +533,8 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
     items += table_block(analysis, sc, lang)
     if diagrams:
         items += diagram_block(analysis, sc, lang)
-    return Sheet(sc.layout.page, tuple(items), title_block(mech, lang, 1, w["sheet"]))
+    return Sheet(sc.layout.page, tuple(items), title_block(mech, lang, 1, w["sheet"]),
+                 lang=lang)
 
 
 def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:

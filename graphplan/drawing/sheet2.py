@@ -218,7 +218,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     items += _curve_items(analysis, Rect(strip.x0, strip.y0, strip.x0 + 250.0, strip.y1), lang)
     tx = strip.x0 + 250.0 + GAP
     items += _table_items(forces, summary, Rect(tx, strip.y0, strip.x1, strip.y1), lang)
-    return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]))
+    return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]), lang=lang)
 
 
 def table_header(forces, lang: str) -> list[str]:

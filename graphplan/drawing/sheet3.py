@@ -358,7 +358,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
             right.x0, ty, right.width, w["table"], header, rows,
             ident="s3-table", title_id="s3-table-title",
             notes=lambda n, m: [f" ({n}/{m}, dynamics.{lang}.md)"])
-    return Sheet(page, tuple(items), title_block(mech, lang, 3, w["sheet"]))
+    return Sheet(page, tuple(items), title_block(mech, lang, 3, w["sheet"]), lang=lang)
 
 
 __all__ = ["dimension", "dynamics_sheet", "results_lines"]

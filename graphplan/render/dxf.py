@@ -70,6 +70,7 @@ from ..drawing.sheet import (
     hatch_segments,
 )
 from ..files import write_atomic
+from ..units import decimal_comma
 from .extra import require
 from .svg_paths import figure_paths
 
@@ -342,7 +343,10 @@ class _Writer:
             attribs["oblique"] = SLANT_DEG  # GOST 2.304 type B: 15° from the vertical
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
                  "end": TextEntityAlignment.RIGHT}[t.anchor]
-        entity = self.msp.add_text(t.text, height=t.height, rotation=t.rotate_deg % 360.0,
+        text = t.text
+        if self.sheet.lang == "ru" and t.layer != "title":
+            text = decimal_comma(text)  # a Russian sheet's decimal comma, as in the SVG
+        entity = self.msp.add_text(text, height=t.height, rotation=t.rotate_deg % 360.0,
                                    dxfattribs=attribs)
         entity.set_placement(self.p(t.pos), align=align)
         self.tag(entity, t.id)

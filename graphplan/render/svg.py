@@ -42,6 +42,7 @@ from ..drawing import (
 )
 from ..errors import LayoutError
 from ..files import write_atomic
+from ..units import decimal_comma, subscript_runs
 
 _INKSCAPE = "http://www.inkscape.org/namespaces/inkscape"
 
@@ -124,12 +125,40 @@ def _text_attrs(t: Text) -> dict[str, str]:
     return attrs
 
 
-def _element(dwg: svgwrite.Drawing, item: Item):
+SUB_SIZE, SUB_DROP = 0.7, 0.3  #: an index: 0.7 of the letters' size, dropped 0.3·h
+
+
+def _text(dwg: svgwrite.Drawing, t: Text, lang: str | None):
+    """A text element: the decimal comma on a Russian sheet, the indices of quantities as
+    subscripts (``tspan``: smaller, dropped under the baseline, then back); the title
+    block's texts as written."""
+    attrs = _with_id(_text_attrs(t), t.id)
+    if t.layer == "title":
+        return dwg.text(t.text, **attrs)
+    text = decimal_comma(t.text) if lang == "ru" else t.text
+    runs = subscript_runs(text)
+    if len(runs) == 1 and not runs[0][1]:
+        return dwg.text(text, **attrs)
+    el = dwg.text("", **attrs)
+    size = float(attrs["font-size"]) * SUB_SIZE
+    drop, down = SUB_DROP * t.height, False
+    for chars, sub in runs:
+        if sub:
+            el.add(dwg.tspan(chars, dy=[num(0.0 if down else drop)],
+                             **{"font-size": f"{round(size, 3):.3f}".rstrip("0").rstrip(".")}))
+            down = True
+        else:
+            el.add(dwg.tspan(chars, dy=[num(-drop)]) if down else dwg.tspan(chars))
+            down = False
+    return el
+
+
+def _element(dwg: svgwrite.Drawing, item: Item, lang: str | None = None):
     """The svgwrite element of one item (groups recursively)."""
     if isinstance(item, Group):
         g = dwg.g(**_with_id({}, item.id))
         for child in item.items:
-            g.add(_element(dwg, child))
+            g.add(_element(dwg, child, lang))
         return g
     if isinstance(item, Line):
         return dwg.line(start=(num(item.p0[0]), num(item.p0[1])),
@@ -161,7 +190,7 @@ def _element(dwg: svgwrite.Drawing, item: Item):
                      for a, b in hatch_segments(item))
         return dwg.path(**_with_id({"d": d or "M0,0", **_stroke(item.style)}, item.id))
     if isinstance(item, Text):
-        return dwg.text(item.text, **_with_id(_text_attrs(item), item.id))
+        return _text(dwg, item, lang)
     if isinstance(item, Figure):  # an empty placeholder; render_svg puts the picture in
         return dwg.g(id=item.id, **{"class": "figure"})
     raise TypeError(f"cannot draw {type(item).__name__}")
@@ -209,7 +238,7 @@ def render_svg(sheet: Sheet) -> str:
                                                    "inkscape:label": name})
         dwg.add(groups[name])
     for it in items:
-        groups[it.layer].add(_element(dwg, it))
+        groups[it.layer].add(_element(dwg, it, sheet.lang))
     text = dwg.tostring()
     for fig in (it for it in iter_leaves(items) if isinstance(it, Figure)):
         placeholder = f'<g class="figure" id="{fig.id}" />'
