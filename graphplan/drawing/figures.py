@@ -133,7 +133,8 @@ def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: floa
     LayoutError
         If no such length fits (the box is too small for the diagrams).
     InputError
-        Bad ``intervals`` or ``reading_mm`` (from :func:`~graphplan.plans.diagrams.kinematic_diagrams`).
+        Bad ``intervals`` or ``reading_mm`` (from
+        :func:`~graphplan.plans.diagrams.kinematic_diagrams`).
     """
     count = mech.positions.count
     n = intervals if intervals is not None else count * math.ceil(MIN_NODES / count)

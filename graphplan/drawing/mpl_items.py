@@ -25,10 +25,10 @@ on the sheet (y down), for the figure's top-left corner (X, Y) and height h pt.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
+from ..units import decimal_comma
 from . import fonts
 from .sheet import TEXT_HEIGHTS, Group, Item, Polyline, Style, Text
 
