@@ -108,7 +108,10 @@ def test_value_copied_from_a_neighbouring_variant(press, tmp_path):
     nref = reference_for(nb)
     label = "2"
     k = nref.index(label)
-    theirs = nref.reading_mm("πb", k, 0.001, 0.01, 0.05)
+    from graphplan.checking.generate import _scales
+
+    sc = _scales(press)  # the scales the generated work states (graphplan's sheet scales)
+    theirs = nref.reading_mm("πb", k, sc["Кl"], sc["Kv"], sc["Ka"])
     lines = []
     pos = next(p for p in press.positions if p.label == label)
     for ln in pos.lines:
