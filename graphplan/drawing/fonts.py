@@ -17,8 +17,9 @@ osifont cannot letter every text of a TMM sheet:
 So every text gets its own font-family list. Its first family is the first font of
 :data:`FONT_CHAIN` that really draws every character of the text (checked glyph by
 glyph with fontTools), then the rest of the chain, then the generic ``sans-serif``.
-The first family matters: CairoSVG (and so the PNG previews) uses only the first
-family of the list and does no glyph fallback. The required symbols come from::
+The first family matters: CairoSVG (the optional PDF/PNG engine) uses only the first
+family of the list and does no glyph fallback, and resvg, Typst and the browsers letter
+a text in one family when that family draws all of it. The required symbols come from::
 
     osifont           А–я (without Ё ё Э э), ω ε φ π μ δ Δ Σ ψ τ ° ± ×
     DejaVu Sans       Ё ё Э э, − ∥ ₁ ₂ ₃ √ ⊥ (and any text that contains them)
