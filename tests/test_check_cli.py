@@ -66,7 +66,8 @@ def test_overlay_marks_the_wrong_lengths(tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     root = ET.parse(svg).getroot()
     assert root.get("width") == "841mm" and root.get("viewBox") == "0 0 841 594"
-    texts = [el.text or "" for el in root.iter("{http://www.w3.org/2000/svg}text")
+    # a text may carry subscripts as tspans (R₁₂): read all of it
+    texts = ["".join(el.itertext()) for el in root.iter("{http://www.w3.org/2000/svg}text")
              if el.get("id", "").endswith("-mark")]
     # the first sheet holds positions (2), (3), 2, 3: their wrong lengths on paper
     wrong_mm = {(f["position"], f["quantity"].replace("_mm", "")) for f in data["figures"]
