@@ -1,0 +1,101 @@
+"""The frames of a text document's pages with the title blocks of GOST 2.104:
+form 2 (185×40 mm, the first page of the text) and form 2a (185×15 mm, the others).
+
+A4 portrait, the frame 20 mm from the left edge and 5 mm from the others (GOST 2.301), drawn
+with the sheets' own items and lettering (type B); the page numbers are not drawn here —
+the document writes them as fields into the cells :data:`SHEET_CELL` and :data:`SHEETS_CELL`.
+"""
+
+from __future__ import annotations
+
+import svgwrite
+
+from ..sheet import Line, Style, Text
+
+A4 = (210.0, 297.0)
+FRAME = (20.0, 5.0, 205.0, 292.0)  #: x0, y0, x1, y1, mm from the page's top-left corner
+THICK = Style(0.7)
+THIN = Style(0.35)
+LEFT_COLUMNS = (7.0, 10.0, 23.0, 15.0, 10.0)  #: Изм., Лист, № докум., Подп., Дата
+HEIGHT = {2: 40.0, 3: 15.0}  #: form 2 and form 2a ("3" in the code: the later pages)
+#: where the page number goes: (x centre, y centre) of the "Лист" value cell, per form
+SHEET_CELL = {2: (177.5, 274.5), 3: (200.0, 288.0)}
+SHEETS_CELL = (195.0, 274.5)  #: the "Листов" value cell of form 2
+
+
+def _text(x: float, y: float, s: str, h: float = 2.5, anchor: str = "middle") -> Text:
+    return Text((x, y), s, h, anchor=anchor, layer="title")
+
+
+def frame_items(form: int, *, designation: str, title: str, author: str, checker: str,
+                organisation: str) -> list:
+    """The frame and the title block of a page (``form`` 2: first page, 3: form 2a)."""
+    x0, y0, x1, y1 = FRAME
+    h = HEIGHT[form]
+    top = y1 - h
+    items: list = [Line((x0, y0), (x1, y0), THICK), Line((x1, y0), (x1, y1), THICK),
+                   Line((x1, y1), (x0, y1), THICK), Line((x0, y1), (x0, y0), THICK),
+                   Line((x0, top), (x1, top), THICK)]
+    xs = [x0]
+    for wdt in LEFT_COLUMNS:
+        xs.append(xs[-1] + wdt)
+    left_end = xs[-1]  # 85 mm
+    rows = int(h // 5)
+    for i in range(1, rows):  # the left part's rows, 5 mm each
+        y = top + 5.0 * i
+        items.append(Line((x0, y), (left_end, y), THICK if i == 2 else THIN))
+    for x in xs[1:]:
+        y_end = y1 if x == left_end else top + (15.0 if form == 2 else h)
+        items.append(Line((x, top), (x, y_end), THICK))
+    labels = ("Изм.", "Лист", "№ докум.", "Подп.", "Дата")
+    label_y = top + 14.0
+    for i, s in enumerate(labels):
+        items.append(_text((xs[i] + xs[i + 1]) / 2, label_y, s, 1.8))
+    if form == 2:
+        for i, s in enumerate(("Разраб.", "Пров.", "", "Н.контр.", "Утв.")):
+            y = top + 15.0 + 5.0 * i + 3.8
+            if s:
+                items.append(_text(xs[0] + 1.0, y, s, 1.8, "start"))
+        for i, name in enumerate((author, checker)):
+            if name:
+                items.append(_text(xs[2] + 1.0, top + 18.8 + 5.0 * i, name, 2.0, "start"))
+        for x in (xs[2], xs[3], xs[4]):
+            items.append(Line((x, top + 15.0), (x, y1), THICK))
+        items.append(Line((left_end, top + 15.0), (x1, top + 15.0), THICK))
+        items.append(_text((left_end + x1) / 2, top + 10.0, designation, 5.0))
+        name_x1 = left_end + 70.0
+        items.append(Line((name_x1, top + 15.0), (name_x1, y1), THICK))
+        items.append(_text((left_end + name_x1) / 2, top + 25.0, title, 3.5))
+        items.append(_text((left_end + name_x1) / 2, top + 31.0, "Пояснительная записка", 3.5))
+        r = name_x1
+        items += [Line((r, top + 20.0), (x1, top + 20.0), THICK),
+                  Line((r, top + 25.0), (x1, top + 25.0), THICK),
+                  Line((r + 15.0, top + 15.0), (r + 15.0, top + 25.0), THICK),
+                  Line((r + 30.0, top + 15.0), (r + 30.0, top + 25.0), THICK),
+                  Line((r + 5.0, top + 20.0), (r + 5.0, top + 25.0), THIN),
+                  Line((r + 10.0, top + 20.0), (r + 10.0, top + 25.0), THIN),
+                  _text(r + 7.5, top + 18.8, "Лит.", 1.8),
+                  _text(r + 22.5, top + 18.8, "Лист", 1.8),
+                  _text(r + 40.0, top + 18.8, "Листов", 1.8),
+                  _text(r + 2.5, top + 23.8, "У", 2.5),
+                  _text((r + x1) / 2, top + 33.5, organisation, 3.5)]
+    else:
+        sheet_x0 = x1 - 10.0
+        items += [Line((sheet_x0, top), (sheet_x0, y1), THICK),
+                  Line((sheet_x0, top + 7.0), (x1, top + 7.0), THIN),
+                  _text((sheet_x0 + x1) / 2, top + 4.8, "Лист", 1.8),
+                  _text((left_end + sheet_x0) / 2, top + 10.0, designation, 5.0)]
+    return items
+
+
+def frame_svg(form: int, **data: str) -> str:
+    """The whole A4 page's frame and title block as SVG (white elsewhere)."""
+    from ..render import svg as svg_render
+
+    dwg = svgwrite.Drawing(size=(f"{A4[0]:g}mm", f"{A4[1]:g}mm"),
+                           viewBox=f"0 0 {A4[0]:g} {A4[1]:g}", profile="full", debug=False)
+    for item in frame_items(form, **data):
+        if isinstance(item, Text) and not item.text:
+            continue
+        dwg.add(svg_render._element(dwg, item))
+    return dwg.tostring()
