@@ -33,6 +33,7 @@ WORDS = {
         "positions": "План положений механизма", "plans": "Планы скоростей и ускорений",
         "diagrams": "Кинематические диаграммы выходного звена",
         "forces": "Силовой анализ механизма", "loads": "Силы тяжести",
+        "force_positions": "Силовой расчёт по положениям",
         "dynamics": "Динамический анализ машинного агрегата",
         "conclusions": "Заключение", "references": "Список использованных источников",
         "position": "Положение {label}, φ = {phi:.2f}°",
@@ -75,6 +76,7 @@ WORDS = {
         "positions": "Plan of positions", "plans": "Velocity and acceleration plans",
         "diagrams": "Kinematic diagrams of the output link",
         "forces": "Force analysis of the mechanism", "loads": "Weights",
+        "force_positions": "Force analysis of the positions",
         "dynamics": "Dynamics of the machine unit",
         "conclusions": "Conclusions", "references": "References",
         "position": "Position {label}, φ = {phi:.2f}°",
@@ -191,8 +193,9 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     blocks: list[Block] = []
 
     # introduction
-    what = (mech.settings.get("variant", {}).get("description") or tb.get("title")
-            or mech.name)
+    description = mech.settings.get("variant", {}).get("description")
+    what = ((tb.get("title") or description) if lang == "ru" else
+            (description or tb.get("title"))) or mech.name
     blocks += [Heading(w["intro"], 1, numbered=False),
                Paragraph(w["intro_text"].format(what=what, variant=variant.name))]
 
@@ -226,11 +229,12 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     by_label = {p.label: p for p in key.positions}
     for k, label in enumerate(labels):
         phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
-        blocks.append(Heading(w["position"].format(label=label, phi=phi), 3, position=label))
+        blocks.append(Heading(decimal_comma(w["position"].format(label=label, phi=phi), lang),
+                              3, position=label))
         gp = by_label.get(label)
         if gp is not None:
             blocks += [Formula(ln.text()) for ln in gp.lines if not _is_force_line(ln)]
-        blocks += [b for b in plan_md.get(label, []) if isinstance(b, Table)]
+        blocks += [_without_scale(b) for b in plan_md.get(label, []) if isinstance(b, Table)]
         if sheet1 is not None and k == _main_position(analysis):
             for word, prefix in (("fig_v", "vp"), ("fig_a", "ap")):
                 fig = _figure(sheet1, w[word].format(label=label), f"{prefix}{k}-")
@@ -245,13 +249,15 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     sheet2 = kinetostatics_sheet(analysis, lang=lang) if figures else None
     blocks += [Heading(w["forces"], 1), Heading(w["loads"], 2)]
     blocks += [Formula(ln.text()) for ln in load_lines]
+    blocks.append(Heading(w["force_positions"], 2))
     for k, label in enumerate(labels):
         gp = by_label.get(label)
         lines = [ln for ln in gp.lines if _is_force_line(ln)] if gp is not None else []
         if not lines:
             continue
         phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
-        blocks.append(Heading(w["position"].format(label=label, phi=phi), 2, position=label))
+        blocks.append(Heading(decimal_comma(w["position"].format(label=label, phi=phi), lang),
+                              3, position=label))
         blocks += [Paragraph(b.text) for b in force_md.get(label, [])
                    if isinstance(b, Paragraph)]
         blocks += [Arm(n, f, a) for n, f, a in gp.arms]
@@ -298,6 +304,16 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
         variant=Path(ref).as_posix(), lang=lang, blocks=tuple(blocks))
 
 
+def _without_scale(t: Table) -> Table:
+    """A plan's table without its scale column (the scale is written out above it)."""
+    drop = [j for j, h in enumerate(t.header) if h in ("Масштаб", "Scale")]
+    if not drop:
+        return t
+    keep = [j for j in range(len(t.header)) if j not in drop]
+    return Table(t.caption, tuple(t.header[j] for j in keep),
+                 tuple(tuple(r[j] for j in keep if j < len(r)) for r in t.rows))
+
+
 def _main_position(analysis) -> int:
     """The position whose plans the note draws: the first extra (working) position, else 0."""
     labels = analysis.kin.labels
@@ -324,7 +340,10 @@ def _conclusions(analysis, key, unit, lang: str) -> list[str]:
            for t in w["concl"]]
     if unit is not None:
         m = unit.mounted
-        motor = unit.motor.motor.name if unit.motor is not None else "—"
+        mo = unit.motor.motor if unit.motor is not None else None
+        motor = (f"{mo.type}, {_g(mo.power_kw, 4, lang)} {'кВт' if lang == 'ru' else 'kW'}, "
+                 f"{_g(mo.rated_rpm, 5, lang)} {'об/мин' if lang == 'ru' else 'rpm'}"
+                 if mo is not None else "—")
         out.append(w["concl_dyn"].format(jm=_g(unit.flywheel.I_m, 5, lang),
                                          shape=m.shape, mass=_g(m.mass, 4, lang),
                                          motor=motor))

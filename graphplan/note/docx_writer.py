@@ -20,7 +20,7 @@ import io
 import zipfile
 from copy import deepcopy
 
-from ..render.extra import require
+from ..exports.extra import require
 from .blocks import Arm, Figure, Formula, Heading, Note, Paragraph, Table
 from .figures import svg_png
 from .frames import A4, FRAME, HEIGHT, SHEET_CELL, SHEETS_CELL, frame_svg
@@ -68,9 +68,15 @@ def _field(paragraph, instr: str, placeholder: str = "1") -> None:
     sep = OxmlElement("w:fldChar")
     sep.set(qn("w:fldCharType"), "separate")
     run_with(sep)
-    shown = OxmlElement("w:t")
-    shown.text = placeholder
-    run_with(shown)
+    shown = OxmlElement("w:r")
+    for i, line in enumerate(placeholder.split("\n")):
+        if i:
+            shown.append(OxmlElement("w:br"))
+        t = OxmlElement("w:t")
+        t.set(qn("xml:space"), "preserve")
+        t.text = line
+        shown.append(t)
+    paragraph._p.append(shown)
     end = OxmlElement("w:fldChar")
     end.set(qn("w:fldCharType"), "end")
     run_with(end)
@@ -166,32 +172,48 @@ def _frame_header(header, png: bytes) -> None:
 
 
 def _number_footer(footer, form: int) -> None:
-    """The page number in the "Лист" cell (and on form 2 the count in "Листов")."""
-    from docx.enum.text import WD_TAB_ALIGNMENT
+    """The page number in the "Лист" cell (and on form 2 the count in "Листов"): a
+    borderless one-row table whose cells stand over the title block's cells."""
+    from docx.enum.table import WD_ROW_HEIGHT_RULE
+    from docx.enum.text import WD_ALIGN_PARAGRAPH
     from docx.shared import Mm, Pt
 
-    p = footer.paragraphs[0]
-    pf = p.paragraph_format
-    pf.first_line_indent = Mm(0)
-    pf.line_spacing = Pt(12)
     x, y = SHEET_CELL[form]
-    pf.tab_stops.add_tab_stop(Mm(x - LEFT), WD_TAB_ALIGNMENT.CENTER)
+    half = 7.5 if form == 2 else 5.0
+    cells = [(x - half, x + half, "PAGE")]
     if form == 2:
-        pf.tab_stops.add_tab_stop(Mm(SHEETS_CELL[0] - LEFT), WD_TAB_ALIGNMENT.CENTER)
-    # the line ends FOOTER_DISTANCE above the edge; raise it to the cell with an empty line
-    below = (A4[1] - FOOTER_DISTANCE) - (y + 2.0)
-    pf.space_before = Mm(max(BOTTOM[form] - FOOTER_DISTANCE - below - 4.3, 0.0))
-    p.add_run("\t")
-    _field(p, "PAGE")
-    if form == 2:
-        p.add_run("\t")
-        _field(p, "NUMPAGES")
-    if below > 0.5:
-        tail = footer.add_paragraph()
-        tail.paragraph_format.first_line_indent = Mm(0)
-        tail.paragraph_format.line_spacing = Mm(below)
-        for r in p.runs:
-            r.font.size = Pt(12)
+        cells.append((x + half, FRAME[2], "NUMPAGES"))
+    widths = [cells[0][0] - LEFT] + [b - a for a, b, _ in cells]
+    table = footer.add_table(rows=1, cols=len(widths), width=Mm(sum(widths)))
+    table.autofit = False
+    row = table.rows[0]
+    row.height = Mm(5.0)
+    row.height_rule = WD_ROW_HEIGHT_RULE.EXACTLY
+    for j, wdt in enumerate(widths):
+        table.columns[j].width = Mm(wdt)
+        cell = table.cell(0, j)
+        cell.width = Mm(wdt)
+        p = cell.paragraphs[0]
+        p.paragraph_format.first_line_indent = Mm(0)
+        p.paragraph_format.line_spacing = 1.0
+        p.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.CENTER
+        if j:
+            _field(p, cells[j - 1][2])
+            for r in p.runs:
+                r.font.size = Pt(12)
+    # the row's bottom at the cell's bottom: an empty paragraph below fills the rest
+    below = (A4[1] - FOOTER_DISTANCE) - (y + 2.5)
+    first = footer.paragraphs[0]
+    first.paragraph_format.line_spacing = Pt(1)
+    first.paragraph_format.first_line_indent = Mm(0)
+    tail = footer.add_paragraph()
+    tail.paragraph_format.first_line_indent = Mm(0)
+    tail.paragraph_format.line_spacing = Mm(max(below, 1.0))
+    tail.paragraph_format.space_before = Mm(0)
+    tail.paragraph_format.space_after = Mm(0)
+    # keep the body text above the title block: the footer reaches up to the block's top
+    top_gap = (y - 2.5) - (FRAME[3] - HEIGHT[form]) + 1.0
+    first.paragraph_format.space_before = Mm(max(top_gap, 0.0))
 
 
 def _table(doc, t: Table) -> None:
@@ -231,6 +253,22 @@ def _deterministic(data: bytes) -> bytes:
             fixed.compress_type = zipfile.ZIP_DEFLATED
             dst.writestr(fixed, src.read(info.filename))
     return out.getvalue()
+
+
+def _contents(note: Note) -> list[str]:
+    """The headings of levels 1–2 as numbered in the text (the contents' first filling,
+    until Word or LibreOffice updates the field with the page numbers)."""
+    out, numbers = [], [0, 0, 0]
+    for b in note.blocks:
+        if not isinstance(b, Heading) or b.level > 2:
+            continue
+        if b.numbered:
+            numbers[b.level - 1] += 1
+            numbers[b.level:] = [0] * (3 - b.level)
+            out.append(".".join(str(n) for n in numbers[:b.level]) + " " + b.text)
+        else:
+            out.append(b.text)
+    return out
 
 
 def note_docx(note: Note) -> bytes:
@@ -295,7 +333,9 @@ def note_docx(note: Note) -> bytes:
     h = doc.add_paragraph(w["contents"], style="Heading 1")
     h.alignment = WD_ALIGN_PARAGRAPH.CENTER
     toc = doc.add_paragraph()
-    _field(toc, 'TOC \\o "1-2" \\h \\z \\u', w["toc_hint"])
+    toc.alignment = WD_ALIGN_PARAGRAPH.LEFT
+    toc.paragraph_format.first_line_indent = Mm(0)
+    _field(toc, 'TOC \\o "1-2" \\h \\z \\u', "\n".join(_contents(note)) or w["toc_hint"])
     doc.add_paragraph().add_run().add_break(WD_BREAK.PAGE)
 
     numbers = [0, 0, 0]

@@ -23,6 +23,10 @@ SHEET_CELL = {2: (177.5, 274.5), 3: (200.0, 288.0)}
 SHEETS_CELL = (195.0, 274.5)  #: the "Листов" value cell of form 2
 
 
+def _line(a, b, style: Style = THICK) -> Line:
+    return Line(a, b, style, layer="title")
+
+
 def _text(x: float, y: float, s: str, h: float = 2.5, anchor: str = "middle") -> Text:
     return Text((x, y), s, h, anchor=anchor, layer="title")
 
@@ -33,9 +37,9 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
     x0, y0, x1, y1 = FRAME
     h = HEIGHT[form]
     top = y1 - h
-    items: list = [Line((x0, y0), (x1, y0), THICK), Line((x1, y0), (x1, y1), THICK),
-                   Line((x1, y1), (x0, y1), THICK), Line((x0, y1), (x0, y0), THICK),
-                   Line((x0, top), (x1, top), THICK)]
+    items: list = [_line((x0, y0), (x1, y0), THICK), _line((x1, y0), (x1, y1), THICK),
+                   _line((x1, y1), (x0, y1), THICK), _line((x0, y1), (x0, y0), THICK),
+                   _line((x0, top), (x1, top), THICK)]
     xs = [x0]
     for wdt in LEFT_COLUMNS:
         xs.append(xs[-1] + wdt)
@@ -43,10 +47,10 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
     rows = int(h // 5)
     for i in range(1, rows):  # the left part's rows, 5 mm each
         y = top + 5.0 * i
-        items.append(Line((x0, y), (left_end, y), THICK if i == 2 else THIN))
+        items.append(_line((x0, y), (left_end, y), THICK if i == 2 else THIN))
     for x in xs[1:]:
         y_end = y1 if x == left_end else top + (15.0 if form == 2 else h)
-        items.append(Line((x, top), (x, y_end), THICK))
+        items.append(_line((x, top), (x, y_end), THICK))
     labels = ("Изм.", "Лист", "№ докум.", "Подп.", "Дата")
     label_y = top + 14.0
     for i, s in enumerate(labels):
@@ -58,22 +62,22 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
                 items.append(_text(xs[0] + 1.0, y, s, 1.8, "start"))
         for i, name in enumerate((author, checker)):
             if name:
-                items.append(_text(xs[2] + 1.0, top + 18.8 + 5.0 * i, name, 2.0, "start"))
+                items.append(_text(xs[2] + 1.0, top + 18.8 + 5.0 * i, name, 2.5, "start"))
         for x in (xs[2], xs[3], xs[4]):
-            items.append(Line((x, top + 15.0), (x, y1), THICK))
-        items.append(Line((left_end, top + 15.0), (x1, top + 15.0), THICK))
+            items.append(_line((x, top + 15.0), (x, y1), THICK))
+        items.append(_line((left_end, top + 15.0), (x1, top + 15.0), THICK))
         items.append(_text((left_end + x1) / 2, top + 10.0, designation, 5.0))
         name_x1 = left_end + 70.0
-        items.append(Line((name_x1, top + 15.0), (name_x1, y1), THICK))
+        items.append(_line((name_x1, top + 15.0), (name_x1, y1), THICK))
         items.append(_text((left_end + name_x1) / 2, top + 25.0, title, 3.5))
         items.append(_text((left_end + name_x1) / 2, top + 31.0, "Пояснительная записка", 3.5))
         r = name_x1
-        items += [Line((r, top + 20.0), (x1, top + 20.0), THICK),
-                  Line((r, top + 25.0), (x1, top + 25.0), THICK),
-                  Line((r + 15.0, top + 15.0), (r + 15.0, top + 25.0), THICK),
-                  Line((r + 30.0, top + 15.0), (r + 30.0, top + 25.0), THICK),
-                  Line((r + 5.0, top + 20.0), (r + 5.0, top + 25.0), THIN),
-                  Line((r + 10.0, top + 20.0), (r + 10.0, top + 25.0), THIN),
+        items += [_line((r, top + 20.0), (x1, top + 20.0), THICK),
+                  _line((r, top + 25.0), (x1, top + 25.0), THICK),
+                  _line((r + 15.0, top + 15.0), (r + 15.0, top + 25.0), THICK),
+                  _line((r + 30.0, top + 15.0), (r + 30.0, top + 25.0), THICK),
+                  _line((r + 5.0, top + 20.0), (r + 5.0, top + 25.0), THIN),
+                  _line((r + 10.0, top + 20.0), (r + 10.0, top + 25.0), THIN),
                   _text(r + 7.5, top + 18.8, "Лит.", 1.8),
                   _text(r + 22.5, top + 18.8, "Лист", 1.8),
                   _text(r + 40.0, top + 18.8, "Листов", 1.8),
@@ -81,8 +85,8 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
                   _text((r + x1) / 2, top + 33.5, organisation, 3.5)]
     else:
         sheet_x0 = x1 - 10.0
-        items += [Line((sheet_x0, top), (sheet_x0, y1), THICK),
-                  Line((sheet_x0, top + 7.0), (x1, top + 7.0), THIN),
+        items += [_line((sheet_x0, top), (sheet_x0, y1), THICK),
+                  _line((sheet_x0, top + 7.0), (x1, top + 7.0), THIN),
                   _text((sheet_x0 + x1) / 2, top + 4.8, "Лист", 1.8),
                   _text((left_end + sheet_x0) / 2, top + 10.0, designation, 5.0)]
     return items
