@@ -63,6 +63,16 @@ def _parser() -> argparse.ArgumentParser:
                    "pdf and png need pip install 'graphplan[export]'")
     s.add_argument("--dpi", type=float, default=None, metavar="DPI",
                    help="resolution of the PNG previews (default: 100)")
+    s.add_argument("--note", action="store_true",
+                   help="also write the explanatory note (note.docx; pip install "
+                   "'graphplan[note]')")
+    n = sub.add_parser("note", help="write the explanatory note (пояснительная записка) as DOCX")
+    n.add_argument("variant", nargs="?", help="variant file (default: the bundled press example)")
+    n.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="output folder: note.docx (and note.pdf with --pdf)")
+    n.add_argument("--lang", choices=("en", "ru"), default="ru", help="language of the note")
+    n.add_argument("--pdf", action="store_true",
+                   help="also a PDF of the note, through LibreOffice where it is installed")
     for name, command in (("check", check_command), ("teach", teach_command)):
         command.add_arguments(sub.add_parser(name, help=command.HELP))
     return p
@@ -115,11 +125,39 @@ def _sheets(args) -> int:
                              page=args.page, formats=args.format, dpi=args.dpi)
         for w in done.warnings:
             print(f"graphplan: warning: {w}", file=sys.stderr)
-        print(terminal_text(f"{v}: " + ", ".join(str(f) for f in done.files)))
+        files = [str(f) for f in done.files]
+        if args.note:
+            files += [str(f) for f in _write_note(v, target, args.lang or "ru", pdf=False)]
+        print(terminal_text(f"{v}: " + ", ".join(files)))
     return 0
 
 
-COMMANDS = {"analyze": _analyze, "sheets": _sheets, "check": check_command.run,
+def _write_note(variant: Path, out: Path, lang: str, *, pdf: bool) -> list[Path]:
+    from .files import write_atomic
+    from .note import build_note, note_docx, note_pdf
+
+    note = build_note(variant, lang=lang, out_dir=out)
+    docx = note_docx(note)
+    written = [write_atomic(out / "note.docx", docx, protect=(variant,))]
+    if pdf:
+        written.append(write_atomic(out / "note.pdf", note_pdf(docx), protect=(variant,)))
+    return written
+
+
+def _note(args) -> int:
+    from .note.pdf import require_office
+
+    if args.pdf:
+        require_office()  # before any work: nothing is written without it
+    variant = _variant_path(args.variant)
+    files = _write_note(variant, Path(args.output), args.lang, pdf=args.pdf)
+    from .safe_text import terminal_text
+
+    print(terminal_text(f"{variant}: " + ", ".join(str(f) for f in files)))
+    return 0
+
+
+COMMANDS = {"analyze": _analyze, "sheets": _sheets, "note": _note, "check": check_command.run,
             "teach": teach_command.run}
 
 

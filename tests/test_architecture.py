@@ -4,7 +4,7 @@ A module imports only from its own package and from LOWER layers, in this order:
 
     base (errors, units, geometry, files, paper, console, safe_text) → model → kinematics
     → forces → dynamics → plans → project → reports → drawing → render → checking | teaching
-    → shell
+    → note → shell
 
 ``checking`` and ``teaching`` are applications side by side: neither imports the other. The
 shell is the package root's public API, ``cli``, ``outputs`` (writing the files) and
@@ -37,6 +37,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("drawing",),
     ("render",),
     ("checking", "teaching"),
+    ("note",),  # the explanatory note: the answer key's lines (checking) written as a document
     ("", "cli", "outputs", "__main__"),  # "": the package root (graphplan/__init__.py)
 )
 #: Packages of one layer that still must not import each other.

@@ -270,6 +270,12 @@ def load_student(path: str | Path) -> StudentWork:
     source = str(path)
     from ..files import read_input
 
+    if path.suffix.lower() == ".docx":  # an explanatory note written by `graphplan note`
+        from .note_reader import note_student_toml
+
+        raw = read_input(path, error=StudentFileError)
+        return loads_student(note_student_toml(path, raw), path)
+
     raw = read_input(path, error=StudentFileError)  # a regular file, bounded in size
     # a BOM, CRLF line ends; cp1251 and other non-UTF-8 text: "save the file as UTF-8"
     return loads_student(decode_text(raw, source, StudentFileError), path)

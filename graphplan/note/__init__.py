@@ -11,6 +11,7 @@ title blocks of GOST 2.104 forms 2 and 2a, numbered sections, formulas, figures 
 from .blocks import Figure, Formula, Heading, Note, Paragraph, Table
 from .content import build_note
 from .docx_writer import note_docx
+from .pdf import find_office, note_pdf
 
 __all__ = ["Figure", "Formula", "Heading", "Note", "Paragraph", "Table", "build_note",
-           "note_docx"]
+           "find_office", "note_docx", "note_pdf"]

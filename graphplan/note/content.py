@@ -170,14 +170,11 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     figures : bool
         Cut the figures out of the sheets (needs the export extra for the pictures).
     """
-    from ..analysis import analyze
     from ..checking.generate import generate
-    from ..kinematics_sheet import kinematics_sheet
-    from ..kinetostatics_sheet import kinetostatics_sheet
-    from ..loader import load
-    from ..render.force_tables import forces_markdown
-    from ..render.plan_tables import plans_markdown
-    from ..render.tables import cycle_text, structure_text
+    from ..drawing import kinematics_sheet, kinetostatics_sheet
+    from ..model import load
+    from ..project import analyze
+    from ..reports import cycle_text, forces_markdown, plans_markdown, structure_text
 
     if lang not in WORDS:
         raise InputError(f"note: lang: expected 'ru' or 'en' (got {lang!r})")
@@ -275,9 +272,9 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     # 4 dynamics
     unit = None
     if "delta" in mech.settings.get("dynamics", {}):
-        from ..dynamics_sheet import dynamics_sheet
-        from ..machine_unit import machine_unit
-        from ..render.dynamics_tables import dynamics_markdown
+        from ..drawing import dynamics_sheet
+        from ..dynamics import machine_unit
+        from ..reports import dynamics_markdown
 
         unit = machine_unit(analysis)
         blocks.append(Heading(w["dynamics"], 1))

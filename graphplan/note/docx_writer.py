@@ -20,10 +20,10 @@ import io
 import zipfile
 from copy import deepcopy
 
-from ..exports.extra import require
+from ..render import require
 from .blocks import Arm, Figure, Formula, Heading, Note, Paragraph, Table
 from .figures import svg_png
-from .frames import A4, FRAME, HEIGHT, SHEET_CELL, SHEETS_CELL, frame_svg
+from .frames import A4, FRAME, HEIGHT, SHEET_CELL, frame_svg
 
 FORMULA_STYLE = "GP Formula"  #: the calculation's lines (read back by the checker)
 SHOWN_STYLE = "GP Calculation"  #: lines shown only (the dynamics)

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import re
 
-from ..sheet import Figure as SheetFigure
-from ..sheet import Group, Item, Sheet, item_geometry, iter_leaves
+from ..drawing import Figure as SheetFigure
+from ..drawing import Group, Item, Sheet, item_geometry, iter_leaves
 
 MARGIN_MM = 4.0
 DPI = 200.0
@@ -67,6 +67,6 @@ def sheet_part_svg(sheet: Sheet, *prefixes: str) -> tuple[str, float] | None:
 
 def svg_png(svg: str, dpi: float = DPI) -> bytes:
     """PNG of an SVG through the export engine (``graphplan[export]``)."""
-    from ..exports.png import svg_to_png_bytes
+    from ..render.png import svg_to_png_bytes
 
     return svg_to_png_bytes(svg, dpi)

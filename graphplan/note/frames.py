@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import svgwrite
 
-from ..sheet import Line, Style, Text
+from ..drawing import Line, Style, Text
 
 A4 = (210.0, 297.0)
 FRAME = (20.0, 5.0, 205.0, 292.0)  #: x0, y0, x1, y1, mm from the page's top-left corner
@@ -29,6 +29,23 @@ def _line(a, b, style: Style = THICK) -> Line:
 
 def _text(x: float, y: float, s: str, h: float = 2.5, anchor: str = "middle") -> Text:
     return Text((x, y), s, h, anchor=anchor, layer="title")
+
+
+def _fitted(x: float, y: float, s: str, width: float, heights=(3.5, 2.5)) -> list[Text]:
+    """``s`` centred at (x, y) in a cell ``width`` wide: the largest height that fits, else
+    two lines (split at the space nearest the middle) at the smallest."""
+    from ..drawing.sheet import text_width
+
+    for h in heights:
+        t = _text(x, y, s, h)
+        if text_width(t) <= width:
+            return [t]
+    h = heights[-1]
+    spaces = [i for i, c in enumerate(s) if c == " "]
+    if not spaces:
+        return [_text(x, y, s, h)]
+    cut = min(spaces, key=lambda i: abs(i - len(s) / 2))
+    return [_text(x, y - 0.8 * h, s[:cut], h), _text(x, y + 0.8 * h, s[cut + 1:], h)]
 
 
 def frame_items(form: int, *, designation: str, title: str, author: str, checker: str,
@@ -69,8 +86,8 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
         items.append(_text((left_end + x1) / 2, top + 10.0, designation, 5.0))
         name_x1 = left_end + 70.0
         items.append(_line((name_x1, top + 15.0), (name_x1, y1), THICK))
-        items.append(_text((left_end + name_x1) / 2, top + 25.0, title, 3.5))
-        items.append(_text((left_end + name_x1) / 2, top + 31.0, "Пояснительная записка", 3.5))
+        items += _fitted((left_end + name_x1) / 2, top + 24.0, title, 66.0)
+        items.append(_text((left_end + name_x1) / 2, top + 33.0, "Пояснительная записка", 3.5))
         r = name_x1
         items += [_line((r, top + 20.0), (x1, top + 20.0), THICK),
                   _line((r, top + 25.0), (x1, top + 25.0), THICK),
@@ -82,7 +99,7 @@ def frame_items(form: int, *, designation: str, title: str, author: str, checker
                   _text(r + 22.5, top + 18.8, "Лист", 1.8),
                   _text(r + 40.0, top + 18.8, "Листов", 1.8),
                   _text(r + 2.5, top + 23.8, "У", 2.5),
-                  _text((r + x1) / 2, top + 33.5, organisation, 3.5)]
+                  *_fitted((r + x1) / 2, top + 33.5, organisation, 47.0)]
     else:
         sheet_x0 = x1 - 10.0
         items += [_line((sheet_x0, top), (sheet_x0, y1), THICK),
