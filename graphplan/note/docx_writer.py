@@ -171,6 +171,20 @@ def _frame_header(header, png: bytes) -> None:
     _behind_text(run, A4[0], A4[1])
 
 
+def _no_cell_margins(table) -> None:
+    """Cells without inner margins: a page number "123" fits the 10 mm "Лист" cell."""
+    from docx.oxml import OxmlElement
+    from docx.oxml.ns import qn
+
+    mar = OxmlElement("w:tblCellMar")
+    for side in ("top", "left", "bottom", "right"):
+        el = OxmlElement(f"w:{side}")
+        el.set(qn("w:w"), "0")
+        el.set(qn("w:type"), "dxa")
+        mar.append(el)
+    table._tbl.tblPr.append(mar)
+
+
 def _number_footer(footer, form: int) -> None:
     """The page number in the "Лист" cell (and on form 2 the count in "Листов"): a
     borderless one-row table whose cells stand over the title block's cells."""
@@ -186,6 +200,7 @@ def _number_footer(footer, form: int) -> None:
     widths = [cells[0][0] - LEFT] + [b - a for a, b, _ in cells]
     table = footer.add_table(rows=1, cols=len(widths), width=Mm(sum(widths)))
     table.autofit = False
+    _no_cell_margins(table)
     row = table.rows[0]
     row.height = Mm(5.0)
     row.height_rule = WD_ROW_HEIGHT_RULE.EXACTLY
@@ -200,7 +215,7 @@ def _number_footer(footer, form: int) -> None:
         if j:
             _field(p, cells[j - 1][2])
             for r in p.runs:
-                r.font.size = Pt(12)
+                r.font.size = Pt(11)
     # the row's bottom at the cell's bottom: an empty paragraph below fills the rest
     below = (A4[1] - FOOTER_DISTANCE) - (y + 2.5)
     first = footer.paragraphs[0]
@@ -221,17 +236,22 @@ def _table(doc, t: Table) -> None:
 
     table = doc.add_table(rows=1 + len(t.rows), cols=len(t.header))
     table.style = doc.styles["Table Grid"]
+    # a wide table in a smaller type, so that its numbers stay on one line
+    size = Pt(10 if len(t.header) <= 6 else 8)
     for j, h in enumerate(t.header):
         cell = table.cell(0, j)
         cell.text = h
         cell.paragraphs[0].style = doc.styles["GP Table"]
         for r in cell.paragraphs[0].runs:
             r.font.bold = True
+            r.font.size = size
     for i, row in enumerate(t.rows, 1):
         for j in range(len(t.header)):
             cell = table.cell(i, j)
             cell.text = row[j] if j < len(row) else ""
             cell.paragraphs[0].style = doc.styles["GP Table"]
+            for r in cell.paragraphs[0].runs:
+                r.font.size = size
     header_row = table.rows[0]._tr
     from docx.oxml import OxmlElement
     from docx.oxml.ns import qn
