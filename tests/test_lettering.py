@@ -126,3 +126,15 @@ def test_decimal_comma_on_russian_point_on_english_sheets():
           if isinstance(t, Text)]
     assert not [s for s in ru if NUMBER.search(s)]
     assert [s for s in en if NUMBER.search(s)]
+
+
+def test_a_minus_osifont_lacks_is_lettered_with_its_dash():
+    """U+2212 is not in the bundled osifont: a text osifont can letter otherwise keeps
+    osifont, the minus written as its en dash (not the whole line in the fallback font)."""
+    t = Text((100.0, 100.0), "Jм = JI − Jкр − Jрот·u²", 3.5, layer="text", id="t")
+    assert fonts.drawable_minus(t.text) == "Jм = JI – Jкр – Jрот·u²"
+    el = ET.fromstring(render_svg(Sheet(Page("A3"), (t,))).encode("utf-8")).find(
+        f".//{SVG}text[@id='t']")
+    assert el.get("font-family").startswith("'osifont'")
+    assert "".join(el.itertext()) == "Jм = JI – Jкр – Jрот·u²"
+    assert SHEAR.search(el.get("transform"))

@@ -339,6 +339,19 @@ def blank_chars(family: str, text: str) -> str:
     return "".join(dict.fromkeys(ch for ch in text if ord(ch) in info.blank))
 
 
+MINUS, EN_DASH = "\u2212", "\u2013"
+
+
+def drawable_minus(text: str) -> str:
+    """``text`` with its minus signs (U+2212, which osifont lacks) written as the en dash
+    osifont has, when that lets osifont letter the whole text; else ``text`` unchanged
+    (it is then lettered in the fallback family, slanted all the same)."""
+    if MINUS not in text:
+        return text
+    swapped = text.replace(MINUS, EN_DASH)
+    return swapped if not missing_chars("osifont", swapped) else text
+
+
 @lru_cache(maxsize=4096)
 def choose_family(text: str) -> str:
     """The family that letters ``text``: the first of FONT_CHAIN drawing all of it.

@@ -46,6 +46,7 @@ import io
 import math
 import re
 from contextlib import contextmanager
+from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
 
@@ -336,6 +337,8 @@ class _Writer:
     def add_text(self, t: Text) -> None:
         from ezdxf.enums import TextEntityAlignment
 
+        if t.layer != "title":
+            t = replace(t, text=fonts.drawable_minus(t.text))  # as the SVG letters it
         family = fonts.choose_family(t.text)
         style = TEXT_STYLES.get(family, (DEFAULT_TEXT_STYLE, ""))[0]
         attribs = {"layer": t.layer, "style": style}

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import svgwrite
@@ -132,9 +133,10 @@ def _text(dwg: svgwrite.Drawing, t: Text, lang: str | None):
     """A text element: the decimal comma on a Russian sheet, the indices of quantities as
     subscripts (``tspan``: smaller, dropped under the baseline, then back); the title
     block's texts as written."""
-    attrs = _with_id(_text_attrs(t), t.id)
     if t.layer == "title":
-        return dwg.text(t.text, **attrs)
+        return dwg.text(t.text, **_with_id(_text_attrs(t), t.id))
+    t = replace(t, text=fonts.drawable_minus(t.text))  # osifont's dash for the minus
+    attrs = _with_id(_text_attrs(t), t.id)
     text = decimal_comma(t.text) if lang == "ru" else t.text
     runs = subscript_runs(text)
     if len(runs) == 1 and not runs[0][1]:
