@@ -51,7 +51,9 @@ def assert_same_bytes(fresh: Path, committed: Path) -> None:
     new, old = fresh.read_bytes(), committed.read_bytes()
     if new == old:
         return
-    where = f"{committed.relative_to(ROOT)} differs from a run without system fonts"
+    where = (f"{committed.relative_to(ROOT)} differs from a run without system fonts: if the "
+             f"output changed on purpose, regenerate drawings/ with the commands of "
+             f"drawings/README.md (the sheets AND the press's teaching pages)")
     if fresh.suffix == ".svg":
         # matplotlib's own path output may change between its releases: when the
         # committed figures come from another matplotlib, compare the rest byte for byte
