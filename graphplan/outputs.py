@@ -72,10 +72,9 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
     unit = None
     if "delta" in analysis.mech.settings.get("dynamics", {}):  # sheet 3 needs δ
         from .drawing import dynamics_sheet
-        from .dynamics import machine_unit
         from .reports import dynamics_csv, dynamics_markdown
 
-        unit = machine_unit(analysis)
+        unit = analysis.unit
         out.update(sheets({"sheet3": dynamics_sheet(analysis, lang=lang, unit=unit)}))
         out["dynamics.ru.md"] = dynamics_markdown(unit, "ru")
         out["dynamics.en.md"] = dynamics_markdown(unit, "en")

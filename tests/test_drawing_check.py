@@ -100,10 +100,9 @@ def _plants(variant, labels):
 
     from graphplan.checking.checks import reference_for
     from graphplan.checking.drawing.measure import construction
-    from graphplan.plans import plan_scales
-
     ref = reference_for(variant)
-    kl, kv, ka = plan_scales(ref.mech, ref.kin)
+    sc1 = ref.analysis.sheet1
+    kl, kv, ka = sc1.kl, sc1.kv, sc1.ka
     sc = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm}
     out = []
     for lab in labels:

@@ -28,7 +28,6 @@ from graphplan.reports.force_tables import (
     force_readings,
     forces_csv,
     forces_markdown,
-    moment_curve,
     seed_comparison_markdown,
 )
 
@@ -151,7 +150,7 @@ def test_press_working_position_2(readings):
 
 def test_moment_curve_at_the_positions(press):
     an, forces = press
-    c = moment_curve(an)
+    c = an.curve
     travel, M = c
     assert len(travel) == len(M) >= 360
     assert np.all(np.diff(travel) > 0) and travel[0] == 0.0 and travel[-1] < 360.0
@@ -187,6 +186,6 @@ def test_every_example(name):
     forces = solve_forces(an.mech, an.kin, compute_loads(an.mech, an.kin, an.cycle))
     text = forces_markdown(an, "en") + forces_csv(an)
     assert not re.search(r"\b(nan|inf)\b", text, re.IGNORECASE)
-    c = moment_curve(an)
+    c = an.curve
     big = float(np.abs(forces.M_bal).max())
     assert np.allclose(c.M_positions, forces.M_bal, rtol=REL, atol=1e-12 * big)

@@ -12,7 +12,6 @@ import pytest
 from graphplan.files import bundled_example
 from graphplan.geometry import norm
 from graphplan.model import load
-from graphplan.plans import plan_scales
 from graphplan.project import analyze
 from graphplan.reports.plan_tables import (
     CSV_COLUMNS,
@@ -185,7 +184,7 @@ def test_no_nan_or_inf_anywhere(name, precision):
 
 def test_press_position_2_reads_pa_as_va_over_kv():
     a = analysis("press")
-    kl, kv, _ = plan_scales(a.mech, a.kin)
+    kl, kv = a.sheet1.kl, a.sheet1.kv
     # By hand: ω1 = π·n1/30 = π·55/30 = 5.7596 rad/s; vA = ω1·lOA = 5.7596·0.08 = 0.4608 m/s.
     # The press gets Kv = 0.01 (m/s)/mm (the sheet's grid of plans; it was 0.005 before
     # the sheet's scales), so pa = vA/Kv = 0.4608/0.01 = 46.08 mm.

@@ -22,7 +22,6 @@ from graphplan.plans import velocity_plan
 from graphplan.project import analyze, sheet_scales
 from graphplan.teaching import PLANS, lesson, page_name, teaching_page, write_lesson
 from graphplan.teaching.captions import ZERO_MM, localise, mm, num, result_text
-from graphplan.teaching.context import context
 from graphplan.teaching.drawing import COLOURS, GREY, frame_svg
 from graphplan.teaching.model import Result
 from graphplan.teaching.page import CSP
@@ -143,7 +142,7 @@ def test_force_captions_quote_the_exact_reactions(path):
     (a linear solve of all groups at once), and the lever's note quotes the force plans'
     Mур and its own, equal by the power balance."""
     a = analysis_of(path)
-    ctx = context(a)
+    ctx = a  # the project: its loads, forces and sheet scales, solved once
     checked = 0
     for k in range(a.kin.n):
         les = lesson(a, "forces", a.kin.labels[k])
@@ -364,7 +363,7 @@ def test_notebook_views(press):
     arrows = [g for g in root.iter(f"{SVG}g") if g.get("class") == "arrow"]
     assert len(arrows) == len({e.name for s in plan.steps for e in s.elements
                                if e.kind == "segment" and e.start != e.end})
-    ctx = context(press)
+    ctx = press
     from graphplan.plans import force_plans
 
     fp = force_plans(press.mech, press.kin, ctx.forces, ctx.loads, 1, sc.kl)[0]

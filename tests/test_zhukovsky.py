@@ -34,7 +34,8 @@ from graphplan.forces import (
     power_balance_moment,
     solve_forces,
 )
-from graphplan.plans import EXACT, Reader, discrepancy_pct, plan_scales, zhukovsky_lever
+from graphplan.plans import EXACT, Reader, discrepancy_pct, zhukovsky_lever
+from graphplan.project import sheet_scales
 from graphplan.units import Scale
 
 REL = 1e-9
@@ -74,7 +75,8 @@ def example(name):
         m = g.load(bundled_example(name))
         cycle = g.analyse_cycle(m)
         kin = g.sweep(m, cycle)
-        kl, kv, _ = plan_scales(m, kin)
+        sc = sheet_scales(m, kin)
+        kl, kv = sc.kl, sc.kv
         _CACHE[name] = (m, cycle, kin, kl, kv)
     return _CACHE[name]
 

@@ -217,7 +217,7 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
 
     ref = ref or Reference.of(variant)
     mech, kin = ref.mech, ref.kin
-    sc = sheet_scales(mech, kin)
+    sc = ref.analysis.sheet1 if kin is ref.analysis.kin else sheet_scales(mech, kin)
     kl, kv, ka = sc.kl.per_mm, sc.kv.per_mm, sc.ka.per_mm
     cr = mech.crank
     piv, A = cr.pivot, cr.pin

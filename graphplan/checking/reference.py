@@ -87,8 +87,10 @@ class Reference:
     @cached_property
     def loads(self) -> dict[str, Loads]:
         mech, kin, cy = self.mech, self.kin, self.cycle
-        rule = compute_loads(mech, kin, cy)
-        return {"rule": rule, "full": compute_loads(mech, kin, cy, neglect_below=0.0),
+        own = kin is self.analysis.kin  # the variant's positions: the project's loads
+        rule = self.analysis.loads if own else compute_loads(mech, kin, cy)
+        full = self.analysis.loads_full if own else compute_loads(mech, kin, cy, neglect_below=0.0)
+        return {"rule": rule, "full": full,
                 "reversed": _reverse_inertia(rule),
                 "no-inertia": compute_loads(mech, kin, cy, inertia=False)}
 

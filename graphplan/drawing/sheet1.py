@@ -361,7 +361,7 @@ def turning_arrow(c: Pt, r: float, start_deg: float, sweep_deg: float, ccw: bool
 def _rotation_arrow(c: Pt, crank, phi0: float, kl: float) -> list[Item]:
     """The sense of rotation of the crank: a 70° arc opposite its first position."""
     return turning_arrow(c, _rotation_radius(crank, kl), math.degrees(phi0) + 145.0, 70.0,
-                         crank.omega > 0, 25.0, layer="position_plan", ident="pp-omega")
+                         crank.sense > 0, 25.0, layer="position_plan", ident="pp-omega")
 
 
 def _rotation_label_anchor(c: Pt, crank, phi0: float, kl: float) -> Pt:
@@ -511,7 +511,7 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
         A1 by default, or the variant's ``drawing.format``.
     """
     mech, kin = analysis.mech, analysis.kin
-    sc = sheet_scales(mech, kin, page)
+    sc = analysis.sheet1 if page is None else sheet_scales(mech, kin, page)
     w = WORDS[lang]
     items: list[Item] = []
     items += position_plan_items(analysis, sc, lang)

@@ -21,7 +21,6 @@ from dataclasses import replace
 import numpy as np
 from shapely.geometry import Point
 
-from ..forces import compute_loads, solve_forces
 from ..plans import force_plans, zhukovsky_lever
 from ..project import (
     CAPTION,
@@ -178,11 +177,11 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
 def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None) -> Sheet:
     """Sheet 2 of the project for ``analysis`` (see the module docstring)."""
     mech, kin = analysis.mech, analysis.kin
+    own_page = page is not None  # else the variant's page: the project's scales
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    sc = sheet_scales(mech, kin, page)
-    loads = compute_loads(mech, kin, analysis.cycle)
-    forces = solve_forces(mech, kin, loads)
-    s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page)
+    sc = sheet_scales(mech, kin, page) if own_page else analysis.sheet1
+    loads, forces = analysis.loads, analysis.forces
+    s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page) if own_page else analysis.sheet2
     w = WORDS[lang]
     f = page.frame
     n_groups = len(mech.dyads)
@@ -251,10 +250,9 @@ def _kp(scale: Scale, lang: str) -> str:
 def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
     """Mур(φ) over the turn (exact), the positions marked: matplotlib, played into the
     sheet's own items (:mod:`graphplan.drawing.mpl_items`: its letters stay text)."""
-    from ..reports import moment_curve
     from .mpl_items import figure_items
 
-    curve = moment_curve(analysis)
+    curve = analysis.curve
     fig = moment_figure(curve, box.width, box.height, lang)
     return [figure_items(fig, (box.x0, box.y0), id="s2-moment-curve", lang=lang)]
 

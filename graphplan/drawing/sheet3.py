@@ -308,7 +308,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
 
     mech = analysis.mech
     page = page or Page("A1")
-    u = unit or machine_unit(analysis)
+    u = unit or analysis.unit or machine_unit(analysis)  # the last: the error without δ
     w = WORDS[lang]
     f = page.frame
     tb = page.title_block_rect

@@ -188,7 +188,7 @@ def _first(mech: Mechanism, analysis: Analysis) -> tuple[float, float]:
     first = str(mech.positions.number_from)
     labels = analysis.kin.labels
     k = labels.index(first) if first in labels else 0
-    return float(analysis.kin.phi[k]), (1.0 if mech.crank.omega > 0 else -1.0)
+    return float(analysis.kin.phi[k]), mech.crank.sense
 
 
 def _grid(mech: Mechanism, grid: int | None) -> int:
@@ -202,7 +202,7 @@ def _resisting_moment(analysis: Analysis, kin: Kinematics, neglect_below: float)
     """Mс = −sense·Mур without inertia forces, at the positions of ``kin``."""
     mech = analysis.mech
     loads = compute_loads(mech, kin, analysis.cycle, inertia=False, neglect_below=neglect_below)
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     return -sense * solve_forces(mech, kin, loads).M_bal
 
 
@@ -262,8 +262,15 @@ def reduced_moment(analysis: Analysis, grid: int | None = None, *,
     pos_M = _resisting_moment(analysis, analysis.kin, neglect_below)
     every = resistance_breaks(analysis, ends=True)
 
+    solved: dict[bytes, Array] = {}  # Mс at a set of travels, solved once per set
+
     def at(t):
-        return _power_moment(analysis, phi0 + sense * np.asarray(t, float))
+        t = np.asarray(t, float)
+        key = t.tobytes()
+        if key not in solved:
+            solved[key] = _power_moment(analysis, phi0 + sense * t)
+            solved[key].flags.writeable = False
+        return solved[key]
 
     A = exact_work(at, tau, every) if neglect_below == 0.0 else None
     return ReducedMoment(tau, phi, M, analysis.kin.labels, pos_tau, pos_M,

@@ -1,5 +1,6 @@
 """Forces: the applied loads and the kinetostatics (reactions and the balancing moment)."""
 
+from .curve import CURVE_POINTS, MomentCurve, moment_curve
 from .kinetostatics import COND_LIMIT, Forces, Reaction, dyad_pairs, reaction_name, solve_forces
 from .loads import (
     JUMP_TOL,
@@ -24,11 +25,13 @@ from .loads import (
 
 __all__ = [
     "COND_LIMIT",
+    "CURVE_POINTS",
     "JUMP_TOL",
     "SHAPE_NODES",
     "ForceLoad",
     "Forces",
     "Loads",
+    "MomentCurve",
     "MomentLoad",
     "Reaction",
     "compute_loads",
@@ -39,6 +42,7 @@ __all__ = [
     "load_breaks",
     "load_power",
     "load_values",
+    "moment_curve",
     "output_travel",
     "point_velocity",
     "power_balance_moment",

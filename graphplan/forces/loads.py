@@ -204,7 +204,7 @@ def cycle_travel(mech: Mechanism, cycle: Cycle, phi) -> Array:
     For a 720° cycle the positions' φ run over two turns (0 … 4π), so φ and φ + 2π are
     different moments of the process with the same kinematics.
     """
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     return np.mod((np.asarray(phi, float) - cycle.origin) * sense, cycle.period)
 
 
@@ -393,7 +393,7 @@ def _kinks(d, lo: float, hi: float, every_kink: bool = True) -> list[int]:
 def _travel_angle(mech: Mechanism, cycle: Cycle, lt: LinkTravel, a: float, b: float,
                   x: float, falling: bool) -> float:
     """τ in [a, b] (one stroke of the travel link) where its x reaches ``x`` (bisection)."""
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     lo, hi = a, b
     for _ in range(80):
         mid = 0.5 * (lo + hi)

@@ -170,7 +170,7 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
         If the mobility is not 1 (e.g. a dyad reuses a link number).
     """
     analyse_structure(mech)  # W = 1 and class-II groups, before any link angle is trusted
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     grid = np.linspace(0.0, 2 * math.pi, CHECK_GRID, endpoint=False)
     try:
         turn = solve(mech, grid)  # assembles, checks lock-ups and finiteness over the turn
@@ -262,7 +262,7 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
 def _dead_centres(mech: Mechanism, link: str, working: int, grid, pos, vel):
     """Dead centres of ``link`` over the turn: ``(kind, (start, end), q_start, q_end, chord,
     turn)``; ``()`` and zeros when its coordinate never stops."""
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     kind, q, rate, point = link_coordinate(mech, link, pos, vel)
     zero = np.sign(rate) != np.sign(np.roll(rate, -1))
     if not (zero.any() and np.ptp(q) > 1e-12):
@@ -346,7 +346,7 @@ def in_working_stroke(mech: Mechanism, cycle: Cycle, phi) -> NDArray[np.bool_]:
     """True where the crank is between the start and end dead centres (in rotation sense)."""
     if not cycle.dead_centres:
         return np.zeros(np.shape(phi), bool)
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     t = _travel(phi, cycle.dead_centres[0], sense)
     return t < cycle.working_turn
 
@@ -453,6 +453,6 @@ def stroke_angle(mech: Mechanism, cycle: Cycle, fraction: float) -> float:
     (0…1) of it; needs the dead centres."""
     if not cycle.dead_centres:
         raise InputError(f"{mech.source}: the output has no dead centres, so no working stroke")
-    sense = 1.0 if mech.crank.omega > 0 else -1.0
+    sense = mech.crank.sense
     return _stroke_angle(mech, cycle.dead_centres[0], cycle.working_turn, sense,
                          cycle.q_start, cycle.q_end, fraction) % (2 * math.pi)

@@ -162,6 +162,18 @@ class Crank:
     rpm: float
     omega: float
 
+    @property
+    def n1(self) -> float:
+        """The crank's speed n1, rpm (> 0), as the variant gives it (or 30·|ω1|/π)."""
+        return self.rpm
+
+    @property
+    def sense(self) -> float:
+        """+1 for a counter-clockwise crank, −1 for a clockwise one: the sign of ω1 (never 0).
+
+        The crank's travel in its sense of rotation is ``sense·(φ − φ_first)``."""
+        return 1.0 if self.omega > 0 else -1.0
+
 
 @dataclass(frozen=True, slots=True)
 class PointOnLink:

@@ -371,7 +371,7 @@ def velocity_plan(mech: Mechanism, kin, k: int, kl: Scale, kv: Scale,
     o, a = cr.pivot, cr.pin
     va = abs(cr.omega) * cr.length
     pa_mm = reader(va / kv.per_mm)
-    d = unit_vector(perp(P[a] - P[o])) * math.copysign(1.0, cr.omega)
+    d = unit_vector(perp(P[a] - P[o])) * cr.sense
     b.points[lower(a)] = pa_mm * d
     b.read("p" + lower(a), "p", lower(a), f"v_{a}")
     b.add_step(f"v_{a} = ω1·l_{o}{a}",
@@ -765,17 +765,3 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         for ln in dy.links:
             _similar_points(mech, b, img, ln, P, rate_map, "acceleration")
     return b.build(kin.labels[k], eps, rel)
-
-
-
-def plan_scales(mech: Mechanism, kin) -> tuple[Scale, Scale, Scale]:
-    """Kl, Kv, Ka as sheet 1 draws them (see :func:`graphplan.project.scales.sheet_scales`).
-
-    Kl fits the plan of positions in its column of the sheet, Kv and Ka fit the
-    largest plan of all positions in one cell of the grid of plans; a scale fixed
-    in the variant's ``[drawing]`` section is used as given.
-    """
-    from ..project import sheet_scales
-
-    s = sheet_scales(mech, kin)
-    return s.kl, s.kv, s.ka

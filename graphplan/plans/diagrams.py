@@ -260,7 +260,7 @@ def _first(mech: Mechanism, cycle: Cycle) -> tuple[float, float]:
     """Absolute crank angle of the first position (rad) and the sense of rotation (±1)."""
     first = str(mech.positions.number_from)
     k = cycle.labels.index(first) if first in cycle.labels else 0
-    return float(cycle.phi[k]), (1.0 if mech.crank.omega > 0 else -1.0)
+    return float(cycle.phi[k]), mech.crank.sense
 
 
 def _pole(ideal: float, mech: Mechanism, name: str) -> float:

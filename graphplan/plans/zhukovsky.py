@@ -382,14 +382,14 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
               Element("segment", f"h_{name}", (0.0, 0.0), as_xy(foot), "arm")], (rd.name,))
 
     f_bal = abs(total) / pa.mm
-    m_bal = math.copysign(1.0, cr.omega) * mu * total
+    m_bal = cr.sense * mu * total
     a_t = turned[pin + "'"]
     fvec = -math.copysign(f_bal, total) * perp(a_t / pa.mm)  # its moment about p is −Σ M_p
     # the text writes round-off (a dead centre: every arm ~0) as 0, relative to the moments
     # the forces could make on a lever of this size
     size = sum(f.magnitude for f in forces) * pa.mm
     t_s = 0.0 if abs(total) <= 1e-12 * size else total
-    f_s, m_s = abs(t_s) / pa.mm, math.copysign(1.0, cr.omega) * mu * t_s
+    f_s, m_s = abs(t_s) / pa.mm, cr.sense * mu * t_s
     step("Σ M_p = 0: F_ур·pa + Σ M_p(F_i) = 0",
          f"Σ M_p(F_i) = {t_s:+.5g} N·mm; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
          f"{f_s:.5g} N at {pin}' ⟂ p{pin}'; "

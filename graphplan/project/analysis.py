@@ -1,29 +1,114 @@
-"""The first stages of a TMM project on one variant: structure, cycle, exact kinematics.
+"""A TMM project on one variant, solved once: :func:`solve_project` → :class:`Project`.
 
-:func:`analyze` runs them in order and returns one frozen :class:`Analysis`,
-the input of every report, plan and sheet.
+The stages in the textbook's order: structure, cycle and exact kinematics (solved by
+:func:`solve_project`), then on first use and once per project — the loads with the
+variant's neglect rule and with nothing neglected, the reactions and Mур of both, sheet 1's
+scales (Kl, Kv, Ka), sheet 2's (the force plans' room, the lever's Kv) and the machine unit
+of sheet 3. Every report, plan, sheet, lesson and check reads them off the project; nothing
+solves a stage again. (``analyze`` and ``Analysis`` are the old names of the same.)
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import TYPE_CHECKING, TypeVar
 
 from ..kinematics import Cycle, Kinematics, analyse_cycle, sweep
 from ..model import Mechanism, Structure, analyse
 from ..plans import acceleration_plan, velocity_plan
 
+if TYPE_CHECKING:
+    from ..dynamics import MachineUnit
+    from ..forces import Forces, Loads, MomentCurve
+    from .scales import Sheet1Scales, Sheet2Scales
 
-@dataclass(frozen=True, slots=True)
-class Analysis:
-    """Structure, cycle and kinematics of a variant's positions, and the warnings where the
-    machine is probably not the one meant (:mod:`graphplan.project.plausibility`)."""
+_T = TypeVar("_T")
+
+
+@dataclass(frozen=True)
+class Project:
+    """One variant solved: structure, cycle, kinematics of its positions, the warnings where
+    the machine is probably not the one meant (:mod:`graphplan.project.plausibility`), and
+    the later stages as properties solved on first use and kept (a frozen value: a stage is
+    never solved twice for one project, and never changes once solved)."""
 
     mech: Mechanism
     structure: Structure
     cycle: Cycle
     kin: Kinematics
     warnings: tuple[str, ...] = ()
+    _stages: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    # --- the stages -------------------------------------------------------------------
+
+    @cached_property
+    def loads(self) -> Loads:
+        """The applied loads at the positions, with the variant's neglect rule."""
+        from ..forces import compute_loads
+
+        return compute_loads(self.mech, self.kin, self.cycle)
+
+    @cached_property
+    def loads_full(self) -> Loads:
+        """The applied loads at the positions with nothing neglected."""
+        from ..forces import compute_loads
+
+        return compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0)
+
+    @cached_property
+    def forces(self) -> Forces:
+        """Reactions of every pair and Mур at the positions (of :attr:`loads`)."""
+        from ..forces import solve_forces
+
+        return solve_forces(self.mech, self.kin, self.loads)
+
+    @cached_property
+    def forces_full(self) -> Forces:
+        """Reactions and Mур with nothing neglected (of :attr:`loads_full`)."""
+        from ..forces import solve_forces
+
+        return solve_forces(self.mech, self.kin, self.loads_full)
+
+    @cached_property
+    def sheet1(self) -> Sheet1Scales:
+        """Sheet 1's layout and scales Kl, Kv, Ka (on the variant's page)."""
+        from .scales import sheet_scales
+
+        return sheet_scales(self.mech, self.kin)
+
+    @cached_property
+    def sheet2(self) -> Sheet2Scales:
+        """Sheet 2's layout: the force plans' room, the lever's Kv (on the variant's page)."""
+        from .scales import sheet2_scales
+
+        return sheet2_scales(self.mech, self.kin, self.forces, self.cycle)
+
+    @cached_property
+    def curve(self) -> MomentCurve:
+        """Mур(φ) over one turn, exact on a fine grid, the variant's rules (sheet 2)."""
+        from ..forces import moment_curve
+
+        return moment_curve(self.mech, self.kin, self.cycle)
+
+    @cached_property
+    def unit(self) -> MachineUnit | None:
+        """The machine unit of sheet 3 (flywheel, motor, simulation), when the variant gives
+        ``dynamics.delta``; else None."""
+        if "delta" not in self.mech.settings.get("dynamics", {}):
+            return None
+        from ..dynamics import machine_unit
+
+        return machine_unit(self)
+
+    def stage(self, key: Hashable, solve: Callable[[], _T]) -> _T:
+        """A stage of a higher layer (a report's readings at a precision) solved once per
+        project: ``solve()`` the first time ``key`` is asked for, the kept value after."""
+        if key not in self._stages:
+            self._stages[key] = solve()
+        return self._stages[key]
 
     def _repr_html_(self) -> str:
         """Jupyter: the tables of ``graphplan analyze`` (structure, cycle, kinematics)."""
@@ -84,9 +169,7 @@ class Analysis:
 
         for entry, t in zip(positions, cycle_travel(m, cy, self.kin.phi), strict=True):
             entry["cycle_phase_deg"] = math.degrees(float(t))
-        from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
-
-        sc, note = _report_scales(m, self.kin, sheet_scales)
+        sc, note = _report_scales(self)
         kl, kv, ka = sc.kl, sc.kv, sc.ka
         mechanism["scales"] = {s.symbol: {"value": s.per_mm, "unit": s.unit, "basis": s.basis}
                                for s in (kl, kv, ka)}
@@ -104,22 +187,18 @@ class Analysis:
         if "delta" in self.mech.settings.get("dynamics", {}):
             from ..dynamics import machine_unit
 
-            out["dynamics"] = (unit or machine_unit(self)).to_json()
+            out["dynamics"] = (unit or self.unit or machine_unit(self)).to_json()
         return out
 
     def _add_forces(self, positions: list[dict], sc) -> None:
         """Per position: the exact kinetostatics (``forces``) with the variant's rules, and
         ``M_bal_full``, the balancing moment with nothing neglected (N·m, CCW+)."""
-        from ..forces import compute_loads, solve_forces
-
-        loads = compute_loads(self.mech, self.kin, self.cycle)
-        forces = solve_forces(self.mech, self.kin, loads)
-        full = solve_forces(self.mech, self.kin,
-                            compute_loads(self.mech, self.kin, self.cycle, neglect_below=0.0))
+        loads, forces, full = self.loads, self.forces, self.forces_full
         from ..plans import force_plans, zhukovsky_lever
         from .scales import sheet2_scales
 
-        s2 = sheet2_scales(self.mech, self.kin, forces, self.cycle)
+        s2 = (self.sheet2 if sc is self.sheet1
+              else sheet2_scales(self.mech, self.kin, forces, self.cycle))
 
         for k, entry in enumerate(positions):
             f = forces.as_json(k)
@@ -142,16 +221,18 @@ class Analysis:
                                   **_marks(lever)}
 
 
-def _report_scales(m, kin, sheet_scales):
+def _report_scales(project: Project):
     """The scales of the report: sheet 1's, or — when sheet 1 cannot hold the plans of
     every position (48 positions and more) — those of a sheet drawing an even sample of
     them, so that the JSON never depends on a sheet's layout. Returns (scales, note)."""
     from dataclasses import replace
 
     from ..errors import LayoutError
+    from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
 
+    m, kin = project.mech, project.kin
     try:
-        return sheet_scales(m, kin), ""
+        return project.sheet1, ""
     except LayoutError as exc:
         first = str(exc)
     drawing = m.settings.get("drawing", {})
@@ -179,8 +260,9 @@ def _marks(*plans) -> dict:
             "ill_conditioned": note(plans)}
 
 
-def analyze(mech: Mechanism) -> Analysis:
-    """Run structure, cycle and kinematics on a loaded variant.
+def solve_project(mech: Mechanism) -> Project:
+    """Solve a loaded variant: structure, cycle and kinematics now, the later stages of the
+    :class:`Project` on first use, each once.
 
     Raises
     ------
@@ -191,4 +273,10 @@ def analyze(mech: Mechanism) -> Analysis:
     structure = analyse(mech)
     cycle = analyse_cycle(mech)
     kin = sweep(mech, cycle)  # the solver guarantees finite values (SingularPoseError otherwise)
-    return Analysis(mech, structure, cycle, kin, machine_warnings(mech, cycle))
+    return Project(mech, structure, cycle, kin, machine_warnings(mech, cycle))
+
+
+Analysis = Project
+"""The old name of :class:`Project`."""
+analyze = solve_project
+"""The old name of :func:`solve_project`."""

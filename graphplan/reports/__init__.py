@@ -2,18 +2,15 @@
 
 from .dynamics_tables import T, dynamics_csv, dynamics_markdown, position_rows
 from .force_tables import (
-    CURVE_POINTS,
     SEED,
     SEED_NAME,
     TINY,
     LoadRow,
-    MomentCurve,
     PositionForces,
     curve_markdown,
     force_readings,
     forces_csv,
     forces_markdown,
-    moment_curve,
     seed_comparison_markdown,
 )
 from .plan_tables import (
@@ -30,7 +27,6 @@ from .plan_tables import (
 from .tables import TEXT, analysis_text, cycle_text, format_table, kinematics_text, structure_text
 
 __all__ = [
-    "CURVE_POINTS",
     "SEED",
     "SEED_NAME",
     "SUMMARY_CELL",
@@ -38,7 +34,6 @@ __all__ = [
     "TINY",
     "TINY_MM",
     "LoadRow",
-    "MomentCurve",
     "PositionForces",
     "PositionPlans",
     "T",
@@ -52,7 +47,6 @@ __all__ = [
     "forces_markdown",
     "format_table",
     "kinematics_text",
-    "moment_curve",
     "plan_readings",
     "plan_table_rows",
     "plans_csv",

@@ -17,10 +17,10 @@ variant's axes, as in :mod:`graphplan.forces.kinetostatics`. **Mур** (``M_bal`
 balancing moment the motor applies to the crank so that it turns at constant ω1. The
 moment of the resisting forces reduced to the crank (приведённый момент сил
 сопротивления) is ``Mс = −Mур``. The seed plots Mур ("кривая моментов сил
-сопротивления" built "по полученным значениям Мур"), and so does :func:`moment_curve`.
+сопротивления" built "по полученным значениям Мур"), and so does :func:`graphplan.forces.moment_curve`.
 
 :func:`forces_markdown` is for people (ru/en), :func:`forces_csv` for scripts,
-:func:`moment_curve` the exact Mур(φ) over one turn, and
+:func:`curve_markdown` the table of the exact Mур(φ) (``project.curve``), and
 :func:`seed_comparison_markdown` the document ``examples/press.md``: the seed's figures
 beside graphplan's.
 """
@@ -35,8 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..forces import Loads, compute_loads, solve_forces
-from ..kinematics import solve
+from ..forces import Loads, MomentCurve
 from ..plans import (
     EXACT,
     Conditioning,
@@ -47,12 +46,9 @@ from ..plans import (
     force_plans,
     zhukovsky_lever,
 )
-from ..project import Analysis, sheet2_scales, sheet_scales
+from ..project import Analysis
 from ..safe_text import markdown_cell
 from ..units import Scale, fmt
-
-CURVE_POINTS = 360
-"""Points of :func:`moment_curve`'s uniform grid over one turn of the crank."""
 
 TINY = 1e-9
 """Relative size below which a value is zero (solver noise) in the tables."""
@@ -262,17 +258,17 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
         In the order of ``analysis.kin``.
     """
     prec = _precision(analysis, precision)
-    key = (id(analysis), prec)
-    if _LAST.get("key") == key and _LAST.get("analysis") is analysis:
-        return list(_LAST["positions"])
+    # solved once per project and precision (the Markdown in two languages and the CSV
+    # read it thrice)
+    return list(analysis.stage(("force_readings", prec), lambda: _force_readings(analysis, prec)))
+
+
+def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ...]:
     mech, kin = analysis.mech, analysis.kin
-    sc = sheet_scales(mech, kin)
-    loads = compute_loads(mech, kin, analysis.cycle)
-    full = compute_loads(mech, kin, analysis.cycle, neglect_below=0.0)
-    forces = solve_forces(mech, kin, loads)
-    m_full = solve_forces(mech, kin, full).M_bal
+    sc, s2 = analysis.sheet1, analysis.sheet2
+    loads, full, forces = analysis.loads, analysis.loads_full, analysis.forces
+    m_full = analysis.forces_full.M_bal
     draft = Reader(prec)
-    s2 = sheet2_scales(mech, kin, forces, analysis.cycle)
     out = []
     for k in range(kin.n):
         ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm)
@@ -286,95 +282,7 @@ def force_readings(analysis: Analysis, precision: float | None = 0.5) -> list[Po
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
                                   sc.kl, float(np.max(np.abs(forces.M_bal))), cond))
-    _LAST.update(key=key, analysis=analysis, positions=tuple(out))
-    return out
-
-
-_LAST: dict = {}
-"""The last :func:`force_readings` (the Markdown in two languages and the CSV read it thrice)."""
-
-
-# --- the curve of moments ------------------------------------------------------------------
-
-
-@dataclass(frozen=True, slots=True)
-class MomentCurve:
-    """Exact Mур over one turn of the crank, and at the positions.
-
-    Unpacks as ``travel_deg, M = moment_curve(analysis)``.
-
-    Attributes
-    ----------
-    travel_deg : ndarray (N,)
-        Crank travel from the first position in the direction of rotation, degrees,
-        increasing in [0, 360) — [0, 720) for a four-stroke cycle: the uniform grid
-        with the positions' travels merged in.
-    phi_deg : ndarray (N,)
-        The absolute crank angle φ of each point, degrees in [0, 360).
-    M : ndarray (N,)
-        Mур, N·m, counter-clockwise positive (``Mс = −Mур`` is the moment of the resisting
-        forces reduced to the crank).
-    labels : tuple[str, ...]
-        The positions' labels, in the order of ``analysis.kin``.
-    position_travel_deg, position_phi_deg, M_positions : ndarray
-        The travel, φ and Mур of each position (the same values as in ``M`` at
-        ``index``).
-    index : ndarray of int
-        Index of each position in the grid.
-    """
-
-    travel_deg: np.ndarray
-    phi_deg: np.ndarray
-    M: np.ndarray
-    labels: tuple[str, ...]
-    position_travel_deg: np.ndarray
-    position_phi_deg: np.ndarray
-    M_positions: np.ndarray
-    index: np.ndarray
-
-    def __iter__(self):
-        return iter((self.travel_deg, self.M))
-
-
-def moment_curve(analysis: Analysis, points: int = CURVE_POINTS, *,
-                 neglect_below: float | None = None) -> MomentCurve:
-    """Exact Mур(φ) on a fine grid over one turn, vectorised (one kinetostatics sweep).
-
-    The kinematics of ``points`` equally spaced crank angles from the first position
-    (:func:`graphplan.kinematics.exact.solve`), with the positions' own angles merged in, the
-    loads of :func:`graphplan.forces.loads.compute_loads` (the variant's rules unless
-    ``neglect_below`` is given) and :func:`graphplan.forces.kinetostatics.solve_forces`.
-
-    Sign: Mур is the balancing moment on the crank, CCW positive; the seed plots it as
-    the curve of the moments of the resisting forces (their reduced moment is −Mур).
-    Where the neglect rule switches a load on or off the curve jumps (at the press, where
-    Q grows past ten times G3 the weight and inertia of the ram are dropped).
-
-    Returns
-    -------
-    MomentCurve
-    """
-    if points < 2:
-        raise ValueError("moment_curve needs at least 2 points")
-    mech, kin = analysis.mech, analysis.kin
-    sense = 1.0 if mech.crank.omega >= 0 else -1.0
-    phi0 = float(kin.phi[0])
-    cycle = math.degrees(analysis.cycle.period)  # 360°, or 720° for a four-stroke process
-    turns = round(cycle / 360.0)
-    pos_travel = np.degrees(sense * (kin.phi - phi0)) % cycle
-    grid = np.linspace(0.0, cycle, points * turns, endpoint=False)
-    keep = np.all(np.abs(grid[:, None] - pos_travel[None, :]) > 1e-9, axis=1)
-    travel = np.concatenate([grid[keep], pos_travel])
-    order = np.argsort(travel, kind="stable")
-    travel = travel[order]
-    index = np.argsort(order)[len(travel) - len(pos_travel):]
-    phi = phi0 + sense * np.radians(travel)
-    phi[index] = kin.phi  # the positions at exactly their own angles
-    fine = solve(mech, phi)
-    loads = compute_loads(mech, fine, analysis.cycle, neglect_below=neglect_below)
-    M = solve_forces(mech, fine, loads).M_bal
-    return MomentCurve(travel, np.degrees(phi) % 360.0, M, kin.labels, pos_travel,
-                       np.degrees(kin.phi) % 360.0, M[index].copy(), index)
+    return tuple(out)
 
 
 # --- formatting ----------------------------------------------------------------------------
@@ -602,7 +510,7 @@ def curve_markdown(analysis: Analysis, lang: str = "ru",
                    curve: MomentCurve | None = None) -> list[str]:
     """Lines of the Markdown table of the curve of Mур at the positions."""
     w = _words(lang)
-    c = curve if curve is not None else moment_curve(analysis)
+    c = curve if curve is not None else analysis.curve
     rows = [[lab, _f(t), _f(p), _f(m), _f(-m)] for lab, t, p, m in
             zip(c.labels, c.position_travel_deg, c.position_phi_deg, c.M_positions,
                 strict=True)]
@@ -872,6 +780,6 @@ def seed_comparison_markdown(analysis: Analysis, precision: float | None = None)
     return text
 
 
-__all__ = ["CSV_COLUMNS", "CURVE_POINTS", "SEED", "LoadRow", "MomentCurve", "PositionForces",
-           "curve_markdown", "force_readings", "forces_csv", "forces_markdown", "moment_curve",
+__all__ = ["CSV_COLUMNS", "SEED", "LoadRow", "PositionForces",
+           "curve_markdown", "force_readings", "forces_csv", "forces_markdown",
            "seed_comparison_markdown"]

@@ -36,7 +36,6 @@ from ..plans import (
     intersections,
     kinematic_conditioning,
     plan_name,
-    plan_scales,
     velocity_plan,
 )
 from ..project import Analysis
@@ -140,7 +139,7 @@ class PositionPlans:
 
 
 def plan_readings(analysis: Analysis, precision: float = 0.0) -> list[PositionPlans]:
-    """Build the plans of every position at the scales of :func:`plan_scales`.
+    """Build the plans of every position at sheet 1's scales (``analysis.sheet1``).
 
     Parameters
     ----------
@@ -155,11 +154,16 @@ def plan_readings(analysis: Analysis, precision: float = 0.0) -> list[PositionPl
     """
     if not (math.isfinite(precision) and precision >= 0):
         raise ValueError(f"the reading precision must be finite and ≥ 0 mm (got {precision!r})")
-    key = (id(analysis), float(precision))
-    if _LAST.get("key") == key and _LAST.get("analysis") is analysis:
-        return list(_LAST["plans"])
+    # solved once per project and precision (the Markdown in two languages and the CSV
+    # read it thrice)
+    return list(analysis.stage(("plan_readings", float(precision)),
+                               lambda: _plan_readings(analysis, float(precision))))
+
+
+def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans, ...]:
     mech, kin = analysis.mech, analysis.kin
-    kl, kv, ka = plan_scales(mech, kin)
+    sc = analysis.sheet1
+    kl, kv, ka = sc.kl, sc.kv, sc.ka
     reader = Reader(precision)
     out = []
     for k in range(kin.n):
@@ -176,12 +180,7 @@ def plan_readings(analysis: Analysis, precision: float = 0.0) -> list[PositionPl
             cond = Conditioning(kin.labels[k], 0.0, intersections(vp) + intersections(ap))
         out.append(PositionPlans(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, vp, ap, ev, ea,
                                  kl, k, float(precision), cond))
-    _LAST.update(key=key, analysis=analysis, plans=tuple(out))
-    return out
-
-
-_LAST: dict = {}
-"""The last :func:`plan_readings` (the Markdown in two languages and the CSV read it thrice)."""
+    return tuple(out)
 
 
 # --- records -------------------------------------------------------------------------------

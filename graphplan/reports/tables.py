@@ -100,7 +100,7 @@ def cycle_text(a: Analysis, lang: str = "en") -> str:
     m, cy = a.mech, a.cycle
     lines = [t["cycle"].format(link=m.output.link), ""]
     lines.append(t["omega1"].format(rpm=m.crank.rpm, w=abs(m.crank.omega),
-                                    sense=t["ccw"] if m.crank.omega > 0 else t["cw"]))
+                                    sense=t["ccw"] if m.crank.sense > 0 else t["cw"]))
     if cy.dead_centres:
         lines.append(t["dead"].format(a=math.degrees(cy.dead_centres[0]),
                                       b=math.degrees(cy.dead_centres[1])))

@@ -25,7 +25,6 @@ import numpy as np
 from ..forces import reaction_name
 from ..plans import ForcePlan, Step, force_plans, position_mm, unit_vector
 from .captions import WORDS, num, shown
-from .context import context
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
 ARROW_MM = 15.0  #: shortest arrow of a force on a scheme (direction only), mm
@@ -36,9 +35,9 @@ _MOMENT = re.compile(r"ΣM_(?P<c>[^(\s]+)\(link (?P<links>[^)]+)\): (?P<rest>.*?
 def forces_lesson(analysis, k: int) -> Lesson:
     """The force plans of position k as a lesson (module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    ctx = context(analysis)
-    sc, loads = ctx.sheet1, ctx.loads
-    plans = force_plans(mech, kin, ctx.forces, loads, k, sc.kl, room_mm=ctx.sheet2.room_mm)
+    sc, loads = analysis.sheet1, analysis.loads
+    plans = force_plans(mech, kin, analysis.forces, loads, k, sc.kl,
+                        room_mm=analysis.sheet2.room_mm)
     label = kin.labels[k]
     P = position_mm(kin, k, sc.kl.per_mm, mech.crank.pivot)
     origin = np.asarray(kin.pos.points[mech.crank.pivot][k], float)

@@ -22,7 +22,6 @@ import re
 import numpy as np
 
 from ..plans import Plan, Step, acceleration_plan, velocity_plan
-from ..project import sheet_scales
 from .captions import WORDS, ZERO_MM, num, shown, unit
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -36,7 +35,7 @@ def plan_lesson(analysis, k: int, kind: str) -> Lesson:
     construction is exact, as on the sheet.
     """
     mech, kin = analysis.mech, analysis.kin
-    sc = sheet_scales(mech, kin)
+    sc = analysis.sheet1
     vp = velocity_plan(mech, kin, k, sc.kl, sc.kv)
     plan = vp if kind == "velocity" else acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp)
     label = kin.labels[k]

@@ -16,17 +16,15 @@ import numpy as np
 
 from ..plans import Lever, zhukovsky_lever
 from .captions import WORDS, num, unit
-from .context import context
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
 
 def lever_lesson(analysis, k: int) -> Lesson:
     """Zhukovsky's lever of position k as a lesson (module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    ctx = context(analysis)
-    sc = ctx.sheet1
-    lever = zhukovsky_lever(mech, kin, ctx.loads, k, sc.kl, ctx.sheet2.lever_kv(kin, k),
-                            reference=float(ctx.forces.M_bal[k]))
+    sc = analysis.sheet1
+    lever = zhukovsky_lever(mech, kin, analysis.loads, k, sc.kl, analysis.sheet2.lever_kv(kin, k),
+                            reference=float(analysis.forces.M_bal[k]))
     label = kin.labels[k]
     panel = Panel("lever", {lang: f"{WORDS[lang]['zhukovsky']}, {WORDS[lang]['position']} "
                                   f"{label}" for lang in ("ru", "en")},

@@ -22,7 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ...plans import acceleration_plan, plan_scales, velocity_plan
+from ...plans import acceleration_plan, velocity_plan
+from ...project import sheet_scales
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,7 +92,9 @@ def _without_normal(plan, normal: str):
 def _layout(ref, labels, plant: Plant | None):
     """Each plan to draw: (kind, caption label, scale symbol, scale written, points,
     segments, letters) in plan mm."""
-    kl, kv, ka = plan_scales(ref.mech, ref.kin)
+    sc = (ref.analysis.sheet1 if ref.kin is ref.analysis.kin
+          else sheet_scales(ref.mech, ref.kin))  # with the student's extra positions
+    kl, kv, ka = sc.kl, sc.kv, sc.ka
     out = []
     for lab in labels:
         for kind in ("velocity", "acceleration"):
