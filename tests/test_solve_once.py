@@ -36,7 +36,8 @@ STAGES = {
         kw.get("kinds"))),
     "solve_forces": ("graphplan.forces", lambda mech, kin, loads, *a, **kw: (
         _phi(kin), loads.inertia, loads.neglect_below, id(loads))),
-    "sheet_scales": ("graphplan.project", lambda mech, kin, page=None: (_phi(kin), page)),
+    "sheet_scales": ("graphplan.project",
+                     lambda mech, kin, page=None, **kw: (_phi(kin), page)),
     "sheet2_scales": ("graphplan.project",
                       lambda mech, kin, forces, cycle, page=None: (_phi(kin), page)),
     "moment_curve": ("graphplan.forces", lambda mech, kin, cycle, *a, **kw: (_phi(kin),)),

@@ -77,7 +77,7 @@ class Project:
         """Sheet 1's layout and scales Kl, Kv, Ka (on the variant's page)."""
         from .scales import sheet_scales
 
-        return sheet_scales(self.mech, self.kin)
+        return sheet_scales(self.mech, self.kin, cycle=self.cycle, forces=self.forces)
 
     @cached_property
     def sheet2(self) -> Sheet2Scales:

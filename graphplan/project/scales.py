@@ -161,12 +161,13 @@ def _longest(plan) -> float:
     return max((r.exact_mm for r in plan.readings.values()), default=0.0)
 
 
-def acceleration_positions(mech: Mechanism, kin) -> tuple[int, ...]:
+def acceleration_positions(mech: Mechanism, kin, cycle=None, forces=None) -> tuple[int, ...]:
     """Positions whose acceleration plans sheet 1 draws, large, as students draw them.
 
     ``drawing.accelerations`` (labels) when the variant gives it; else the positions of
     the force analysis (``kinetostatics.positions``, or by default the working position(s)
     and one idle position, :func:`default_positions`): the plans sheet 2 is built on.
+    ``cycle`` and ``forces`` are the project's (solved here when not given).
     """
     which = positions_by_label(mech, kin, "drawing", "accelerations")
     if which is not None:
@@ -177,15 +178,17 @@ def acceleration_positions(mech: Mechanism, kin) -> tuple[int, ...]:
     from ..forces import compute_loads, solve_forces
     from ..kinematics import analyse_cycle
 
-    cycle = analyse_cycle(mech)
-    loads = compute_loads(mech, kin, cycle)
-    return default_positions(mech, kin, solve_forces(mech, kin, loads), cycle)
+    cycle = analyse_cycle(mech) if cycle is None else cycle
+    if forces is None:
+        forces = solve_forces(mech, kin, compute_loads(mech, kin, cycle))
+    return default_positions(mech, kin, forces, cycle)
 
 
 _CACHE: list = []  # (mech, kin, format, scales) of the last calls: sheet_scales is pure
 
 
-def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales:
+def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
+                 forces=None) -> Sheet1Scales:
     """Choose Kl, Kv, Ka for sheet 1: Kl from the usual series (1, 2, 2.5, 4, 5 × 10^k),
     Kv and Ka from :data:`graphplan.units.PLAN_SERIES`.
 
@@ -195,18 +198,19 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None) -> Sheet1Scales
     between the velocity plans of the drawn positions and the acceleration plans of
     :func:`acceleration_positions` so that both are as large as they can be; then the
     largest plan of each kind fits its cell, construction lines included, and no vector is
-    longer than VECTOR_MAX.
+    longer than VECTOR_MAX. ``cycle`` and ``forces``: the project's, for the positions of
+    the force analysis (solved here when not given).
     """
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
     for m, kn, fmt_, res in _CACHE:
         if m is mech and kn is kin and fmt_ == page.format:
             return res
-    res = _sheet_scales(mech, kin, page)
+    res = _sheet_scales(mech, kin, page, cycle, forces)
     _CACHE[:] = [*_CACHE[-3:], (mech, kin, page.format, res)]
     return res
 
 
-def _sheet_scales(mech: Mechanism, kin, page: Page) -> Sheet1Scales:
+def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> Sheet1Scales:
     fixed = mech.settings.get("drawing", {})
     fine = one_turn(mech, kin)
     paths = trajectories(mech, kin, fine)
@@ -227,7 +231,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page) -> Sheet1Scales:
         if kl.per_mm == kl_m:
             break
         kl_m = kl.per_mm
-    acc = acceleration_positions(mech, kin)
+    acc = acceleration_positions(mech, kin, cycle, forces)
     # an acceleration plan is built on its position's velocity plan: that one is drawn too
     which = tuple(sorted(set(plan_positions(mech, kin)) | set(acc)))
     shape, longest = _plan_shapes(mech, kin, kl, which, acc)
