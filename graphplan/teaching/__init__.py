@@ -21,6 +21,7 @@ diagrams and the energy–mass diagram).
 
 from __future__ import annotations
 
+import hashlib
 import re
 from pathlib import Path
 
@@ -75,10 +76,19 @@ def lesson(analysis, plan: str = "velocity", position: str | None = None) -> Les
 
 def page_name(plan: str, position: str | None) -> str:
     """File name of a page: ``teach-velocity-2.html``, ``teach-forces-(2).html``,
-    ``teach-flywheel.html`` (characters other than letters, digits and ``()_.-`` → ``_``)."""
+    ``teach-flywheel.html``.
+
+    Characters other than Latin letters, digits and ``()_.-`` become ``_``; a label that
+    loses a character that way, or has a capital letter (Windows folders ignore case), gets
+    the first 8 hex digits of its SHA-1 too, so that two labels never share a file
+    (``(р)`` and ``(х)``: ``teach-velocity-(_)-1b2c….html`` and ``…-(_)-9f0e….html``).
+    """
     if position is None:
         return f"teach-{plan}.html"
-    safe = re.sub(r"[^0-9A-Za-z()_.\-]", "_", str(position))
+    label = str(position)
+    safe = re.sub(r"[^0-9A-Za-z()_.\-]", "_", label)
+    if safe != label or label != label.lower():
+        safe += "-" + hashlib.sha1(label.encode("utf-8")).hexdigest()[:8]
     return f"teach-{plan}-{safe}.html"
 
 
