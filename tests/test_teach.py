@@ -398,7 +398,10 @@ def test_russian_words_replace_the_constructions_english(press):
 COMMITTED = Path(__file__).resolve().parent.parent / "drawings" / "press"
 
 
-@pytest.mark.parametrize("page", sorted(COMMITTED.glob("teach-*.html")), ids=lambda p: p.name)
+LESSONS = sorted(p for p in COMMITTED.glob("teach-*.html") if p.name != "teach-index.html")
+
+
+@pytest.mark.parametrize("page", LESSONS, ids=lambda p: p.name)
 def test_committed_pages_are_up_to_date(press, page):
     """The pages in drawings/press are what `graphplan teach` writes now (structure and
     every reading; regenerate with the command in graphplan/teaching/command.py)."""
@@ -413,6 +416,17 @@ def test_committed_pages_are_up_to_date(press, page):
                 [round(float(x), 6) for x in re.findall(r'data-mm="([^"]+)"', t)])
 
     assert shape(text) == shape(fresh)
+
+
+def test_the_committed_index_lists_every_committed_lesson():
+    """drawings/press/teach-index.html is what `graphplan teach` writes for that folder."""
+    from graphplan.teaching.index import index_page
+
+    fresh = index_page(COMMITTED, variant="Кривошипный пресс",
+                       labels=("1", "2", "3", "4", "5", "6", "7", "8", "(2)", "(3)"))
+    links = re.findall(r'href="([^"]+)"', (COMMITTED / "teach-index.html").read_text("utf-8"))
+    assert links == re.findall(r'href="([^"]+)"', fresh)
+    assert sorted(links) == [p.name for p in LESSONS]
 
 
 def _page_words(page: str) -> set[str]:
