@@ -73,6 +73,15 @@ def _parser() -> argparse.ArgumentParser:
     n.add_argument("--lang", choices=("en", "ru"), default="ru", help="language of the note")
     n.add_argument("--pdf", action="store_true",
                    help="also a PDF of the note, through LibreOffice where it is installed")
+    w = sub.add_parser("new", help="start a variant file from a family (press, engine, "
+                       "compressor, pump, shaper, slotter, crusher, fourbar, …), every key "
+                       "explained")
+    w.add_argument("family", help="the family: a bundled example's name or its Russian name "
+                   "(двигатель, компрессор, насос, строгальный, долбёжный, дробилка, …)")
+    w.add_argument("-o", "--output", required=True, metavar="FILE",
+                   help="the new variant file (never overwrites a file)")
+    w.add_argument("--lang", choices=("ru", "en"), default="ru",
+                   help="language of the explanations (default: ru)")
     for name, command in (("check", check_command), ("teach", teach_command)):
         command.add_arguments(sub.add_parser(name, help=command.HELP))
     return p
@@ -157,8 +166,26 @@ def _note(args) -> int:
     return 0
 
 
-COMMANDS = {"analyze": _analyze, "sheets": _sheets, "note": _note, "check": check_command.run,
-            "teach": teach_command.run}
+def _new(args) -> int:
+    from .errors import InputError
+    from .files import write_atomic
+    from .model.template import variant_template
+    from .safe_text import terminal_text
+
+    out = Path(args.output)
+    if out.exists() or out.is_symlink():
+        raise InputError(f"{out}: the file exists; a new variant never overwrites a file "
+                         "(choose another name)")
+    text = variant_template(args.family, lang=args.lang, name=out.name)
+    write_atomic(out, text)
+    print(terminal_text(f"{out}: " + ("заготовка варианта; проверьте её: graphplan analyze "
+                                      if args.lang == "ru" else "a new variant; check it: "
+                                      "graphplan analyze ") + str(out)))
+    return 0
+
+
+COMMANDS = {"new": _new, "analyze": _analyze, "sheets": _sheets, "note": _note,
+            "check": check_command.run, "teach": teach_command.run}
 
 
 class Terminated(KeyboardInterrupt):
