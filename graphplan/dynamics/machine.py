@@ -269,7 +269,7 @@ def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> Ma
     choice = None
     if M_const > 0:  # a motor drives the machine
         power = required_power(M_const, m.omega1, eta)
-        n1 = m.omega1 * 30.0 / math.pi
+        n1 = mech.crank.n1  # as the variant gives it (ω1·30/π picked up round-off)
         choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
                               sync_rpm=dyn.get("motor_speed"))
     else:  # the loads drive it (an engine): its mean effective power, no motor
