@@ -17,13 +17,14 @@
 import sys
 from pathlib import Path
 
+from graphplan.teaching.context import context
+
 from graphplan.dynamics import dynamic_model, flywheel, simulate
 from graphplan.files import bundled_example
 from graphplan.model import load
 from graphplan.plans import acceleration_plan, velocity_plan
 from graphplan.project import analyze, sheet_scales
 from graphplan.teaching import lesson, write_lesson
-from graphplan.teaching.context import context
 
 OUT = Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else Path(
     "tutorial-out")

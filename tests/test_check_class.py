@@ -27,7 +27,7 @@ from graphplan.files import bundled_example
 EXAMPLES = Path(bundled_example("press")).parent
 OWN = Path(__file__).parent / "data" / "crank_rocker.toml"
 # every example with a drawn force analysis, and variants nobody wrote the checker for
-VARIANTS = sorted(p for p in EXAMPLES.glob("*.toml")) + [OWN]
+VARIANTS = [*sorted(p for p in EXAMPLES.glob("*.toml")), OWN]
 
 
 def _report(s) -> str:

@@ -93,7 +93,7 @@ def test_debug_shows_the_traceback(tmp_path):
 
 
 def test_json_plans_per_position(capsys):
-    code, out, _ = run(capsys, "analyze", "--json")
+    _code, out, _ = run(capsys, "analyze", "--json")
     data = json.loads(out)
     assert data["mechanism"]["scales"]["Kl"]["basis"] == "Kl = lOA/OA = 0.08/80 = 0.001 m/mm"
     for p in data["positions"]:
@@ -106,11 +106,12 @@ def test_json_plans_per_position(capsys):
         assert seg["pb"] * plans["Kv"] == pytest.approx(vb, rel=1e-6, abs=1e-12)
         assert seg["πb"] * plans["Ka"] == pytest.approx(ab, rel=1e-6, abs=1e-12)
         # the normal component of the rod: n_BA = ω2²·l_AB / Ka
-        assert seg["n_BA"] * plans["Ka"] == pytest.approx(p["omega"]["2"] ** 2 * 0.2, rel=1e-6, abs=1e-12)
+        assert seg["n_BA"] * plans["Ka"] == pytest.approx(p["omega"]["2"] ** 2 * 0.2, rel=1e-6,
+                                                          abs=1e-12)
 
 
 def test_sheets_writes_the_sheet_tables_and_report(capsys, tmp_path):
-    code, out, err = run(capsys, "sheets", "-o", str(tmp_path / "press"))
+    code, _out, err = run(capsys, "sheets", "-o", str(tmp_path / "press"))
     assert code == 0 and err == ""
     names = sorted(p.name for p in (tmp_path / "press").iterdir())
     assert names == ["analysis.json", "dynamics.csv", "dynamics.en.md", "dynamics.ru.md",

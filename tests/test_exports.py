@@ -50,11 +50,11 @@ from graphplan.drawing.sheet import (  # noqa: E402
 from graphplan.errors import GraphplanError, InputError, LayoutError  # noqa: E402
 from graphplan.render import (  # noqa: E402
     TOLERANCE,
-    extra,  # noqa: E402
+    extra,
     figure_paths,
     parse_transform,
     path_subpaths,
-    pdf_bytes,  # noqa: E402
+    pdf_bytes,
 )
 from graphplan.render import dxf as dxf_mod  # noqa: E402
 from graphplan.render import formats as exports  # noqa: E402

@@ -1,4 +1,5 @@
-"""Kinetostatics (graphplan.forces.loads, graphplan.forces.kinetostatics) checked by independent routes.
+"""Kinetostatics (graphplan.forces.loads, graphplan.forces.kinetostatics) checked by
+independent routes.
 
 * Virtual power (Zhukovsky): M_ур·ω1 + Σ F·v_point + Σ M·ω_link = 0 at every position,
   inertia included — it uses only the kinematics and the loads, never the reactions.

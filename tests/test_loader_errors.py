@@ -910,7 +910,7 @@ def test_prp_with_guides_parallel_at_one_angle():
         "guides": [{"link": "1", "through": "A", "angle": 0},
                    {"link": "4", "through": [0, 50], "angle": 0}]}),
         set_("points", []), set_("links", {}), set_("loads", []))
-    msg, exc = analysis_error(doc, g.AssemblyError)
+    msg, _exc = analysis_error(doc, g.AssemblyError)
     assert msg == (f"{SRC}: dyad PRP(2-3) cannot be assembled at φ = 0.00°: "
                    "its two guides are parallel")
 

@@ -737,8 +737,11 @@ OPS = [op_delete, op_replace_any, op_replace_number, op_replace_number, op_scale
        op_branch, op_count, op_list_length, op_add_key, op_drop_section]
 
 
+BASE_NAMES = tuple(sorted(BASES))
+
+
 @st.composite
-def mutated(draw, base_names=tuple(sorted(BASES))):
+def mutated(draw, base_names=BASE_NAMES):
     name = draw(st.sampled_from(base_names))
     doc = copy.deepcopy(BASES[name])
     for _ in range(draw(st.integers(1, 3))):

@@ -1,6 +1,7 @@
 """The Motive "Delphi" catalogue (graphplan/data/motors_delphi.csv): rotor inertia and the rest.
 
-The file is read through :func:`graphplan.dynamics.motor.load_catalogue` with an explicit path, so these
+The file is read through :func:`graphplan.dynamics.motor.load_catalogue` with an explicit path,
+so these
 tests do not depend on the series being registered in ``motor._FILES``.
 """
 

@@ -10,7 +10,8 @@ from graphplan.geometry import norm
 from graphplan.plans import EXACT, Reader, acceleration_plan, velocity_plan
 from graphplan.units import fit_scale, nice_ceil
 
-EXAMPLES = sorted(glob.glob(str(__import__("pathlib").Path(__file__).parents[1] / "examples" / "*.toml")))
+EXAMPLES = sorted(glob.glob(str(__import__("pathlib").Path(__file__).parents[1] / "examples"
+                              / "*.toml")))
 
 
 def scales(m, k):
@@ -27,7 +28,8 @@ def test_nice_scale_is_the_next_of_the_series(x):
     mant = s / 10 ** math.floor(math.log10(s))
     assert s >= x and round(mant, 9) in (1, 2, 2.5, 4, 5)
     # nothing of the series lies between x and s
-    below = [m * 10**e for e in range(-4, 4) for m in (1, 2, 2.5, 4, 5) if x <= m * 10**e < s * (1 - 1e-12)]
+    below = [m * 10**e for e in range(-4, 4) for m in (1, 2, 2.5, 4, 5)
+             if x <= m * 10**e < s * (1 - 1e-12)]
     assert below == []
 
 
@@ -61,7 +63,8 @@ def test_exact_readback_equals_kinematics(path):
                 assert ap.rates[ln] == pytest.approx(k.acc.epsilon[ln][i], rel=1e-6, abs=1e-8)
         for key, v in vp.sliding.items():
             assert v == pytest.approx(k.vel.sliding[key][i], rel=1e-6, abs=1e-9 * vmax)
-            assert ap.sliding[key] == pytest.approx(k.acc.sliding[key][i], rel=1e-6, abs=1e-9 * amax)
+            assert ap.sliding[key] == pytest.approx(k.acc.sliding[key][i], rel=1e-6,
+                                                    abs=1e-9 * amax)
         # every intersection step records its angle and the error bound it implies
         for st in vp.steps + ap.steps:
             if st.angle_deg is not None:
@@ -72,7 +75,7 @@ def test_exact_readback_equals_kinematics(path):
 def test_drafting_mode_errs_like_a_hand_drawing():
     m = g.load(EXAMPLES[[p.endswith("press.toml") for p in EXAMPLES].index(True)])
     k = g.sweep(m, g.analyse_cycle(m))
-    kl, kv, ka = scales(m, k)
+    kl, kv, _ka = scales(m, k)
     errs = []
     for i in range(k.n):
         vp = velocity_plan(m, k, i, kl, kv, Reader(0.5))

@@ -39,7 +39,8 @@ def test_positions_are_the_seeds(press):
         # (the seed measured 37.39 mm).
         ("(2)", 273.2949, 7.8632, 37.389),
         # (3): ψ = 10°. r sinψ = 13.8919, r cosψ = 78.7846, sqrt(200² − 13.8919²) = 199.5169,
-        # |OB| = 278.3016 mm; β = asin(13.8919/200) = asin(0.069459) = 3.9829°; h21 = 13.8919·278.3015/200
+        # |OB| = 278.3016 mm; β = asin(13.8919/200) = asin(0.069459) = 3.9829°;
+        # h21 = 13.8919·278.3015/200
         # = 19.331 mm (the seed measured 19.33 mm).
         ("(3)", 278.3016, 3.9829, 19.331),
     ],
@@ -60,7 +61,7 @@ def test_working_positions_by_hand(press, label, ob_mm, beta_deg, h21_mm):
 
 
 def test_acceleration_scale_of_the_seed(press):
-    m, _, kin = press
+    _m, _, kin = press
     # Ka = ω1²·l_OA / 100 mm: (π·55/30)² · 0.08 / 100 = 5.75959² · 0.0008 = 0.026539
     a_A = np.linalg.norm(kin.acc.points["A"], axis=1)
     assert a_A / 100 == pytest.approx(np.full(kin.n, 0.026539), abs=1e-6)

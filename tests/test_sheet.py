@@ -122,7 +122,7 @@ def test_line_styles_follow_gost_2_303():
 def test_items_validate_their_input():
     with pytest.raises(InputError, match="layer"):
         Line((0, 0), (1, 1), THIN, layer="nowhere")
-    with pytest.raises(InputError, match="GOST 2.304"):
+    with pytest.raises(InputError, match=r"GOST 2\.304"):
         Text((0, 0), "x", 3.0, layer="text")
     with pytest.raises(InputError, match="one non-empty line"):
         Text((0, 0), "a\nb", 3.5, layer="text")

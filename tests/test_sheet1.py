@@ -117,7 +117,7 @@ def test_vectors_read_off_the_svg_give_the_exact_kinematics(name):
 
 
 def test_svg_is_a1_in_millimetres_with_the_title_block_in_place():
-    _, sheet, svg = built("press")
+    _, _sheet, svg = built("press")
     root = ET.fromstring(svg)
     assert root.get("width") == "841mm" and root.get("height") == "594mm"
     assert root.get("viewBox") == "0 0 841 594"
@@ -133,7 +133,7 @@ def test_svg_is_a1_in_millimetres_with_the_title_block_in_place():
 
 
 def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed():
-    a, sheet, svg = built("press")
+    a, sheet, _svg = built("press")
     texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
     # Kl is the seed's: the crank, 0.08 m, drawn 80 mm
     assert "Kl = lOA/OA = 0.08/80 = 0.001 м/мм" in texts

@@ -81,7 +81,7 @@ def test_dead_centre_extras_are_not_default_positions():
 
 
 def test_wide_table_says_what_it_left_out():
-    a, sheet = built("shaper")
+    _a, sheet = built("shaper")
     titles = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)
               and t.id == "s2-table-title"]
     table = _table(sheet)

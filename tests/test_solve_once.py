@@ -19,7 +19,7 @@ import pytest
 import graphplan.cli
 import graphplan.drawing
 import graphplan.outputs
-import graphplan.reports  # noqa: F401  (every module that may hold a stage is loaded)
+import graphplan.reports
 from graphplan.files import bundled_example
 
 

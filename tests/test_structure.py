@@ -59,7 +59,8 @@ def test_groups_are_found_on_the_pair_graph_not_copied():
     ("kind", "body", "expected"),
     [
         ("RRR", 'joints = ["A", "B", "C"]\nlengths = [0.3, 0.25]', "II₁(2,3)"),
-        ("RRP", 'joints = ["A", "B"]\nlength = 0.3\nguide = { link = "0", through = [0, 0], angle = 0 }',
+        ("RRP", 'joints = ["A", "B"]\nlength = 0.3\n'
+                'guide = { link = "0", through = [0, 0], angle = 0 }',
          "II₂(2,3)"),
         ("RPR", 'joints = ["A", "C"]', "II₃(2,3)"),
         ("RPP", 'joints = ["A", "D"]\nguide = { link = "0", through = [0, 0], angle = 0 }',
@@ -93,7 +94,8 @@ guides = [{ link = "3", through = "O3", angle = 0 }, { link = "0", through = [0,
 def test_reused_link_number_breaks_mobility():
     # links 2 and 1 for the dyad: link 1 (the crank) appears again, so n = 2 and
     # p5 = 4 lower pairs: W = 3·2 − 2·4 = −2
-    text = FRAME + '[[dyads]]\nkind = "RRR"\nlinks = ["2", "1"]\njoints = ["A", "B", "C"]\nlengths = [0.3, 0.25]\n'
+    text = FRAME + ('[[dyads]]\nkind = "RRR"\nlinks = ["2", "1"]\njoints = ["A", "B", "C"]\n'
+                    'lengths = [0.3, 0.25]\n')
     m = g.loads(text, source="bad.toml")
     with pytest.raises(g.StructureError) as exc:
         g.analyse_structure(m)
@@ -104,7 +106,8 @@ def test_reused_link_number_breaks_mobility():
 
 def test_cycle_refuses_a_frame_link_reused_by_a_dyad():
     # an RRR with links ["2", "0"] would turn the frame: the cycle must not run
-    text = FRAME + '[[dyads]]\nkind = "RRR"\nlinks = ["2", "0"]\njoints = ["A", "B", "C"]\nlengths = [0.3, 0.25]\n'
+    text = FRAME + ('[[dyads]]\nkind = "RRR"\nlinks = ["2", "0"]\njoints = ["A", "B", "C"]\n'
+                    'lengths = [0.3, 0.25]\n')
     m = g.loads(text, source="bad.toml")
     with pytest.raises(g.StructureError):
         g.analyse_cycle(m)

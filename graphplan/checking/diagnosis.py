@@ -221,14 +221,18 @@ class Diagnoser:
         for r in (1e3, 1e-3, 1e6, 1e-6):
             if abs(computed / written / r - 1) <= 0.01:
                 big = r > 1
+                slip = ("kilo-units written with the base unit" if big
+                        else "base units written with the kilo-unit")
                 en = (f"the numbers give {num(computed)}, the result {text} is "
                       f"{'1/' if big else ''}{num(r if big else 1 / r)} of it"
                       f"{'' if big else ' times more'}: a unit slip (the number of "
-                      f"{'kilo-units written with the base unit' if big else 'base units written with the kilo-unit'}"
+                      f"{slip}"
                       f"; graphplan: {self._u(f, f.e)}).")
+                slip_ru = ("число в кН записано с единицей Н" if big
+                           else "число в Н записано с единицей кН")
                 ru = (f"числа дают {num(computed, 'ru')}, а результат {text} — в "
                       f"{num(r if r > 1 else 1 / r, 'ru')} раз {'меньше' if big else 'больше'}: "
-                      f"перепутаны единицы ({'число в кН записано с единицей Н' if big else 'число в Н записано с единицей кН'}"
+                      f"перепутаны единицы ({slip_ru}"
                       f"; по расчёту {self._u(f, f.e, 'ru')}).")
                 return Diag("unit", en, ru)
         return None

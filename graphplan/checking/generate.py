@@ -334,7 +334,7 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                 return
             kp, kp_t = scale, _fmt(scale, 6)
             size = fp.readings[basis].value
-            lines.append(GenLine("Кр", f"{{{basis}}}/{{{basis}_mm}}",
+            lines.append(GenLine("Кр", f"{{{basis}}}/{{{basis}_mm}}",  # noqa: B023 (this k)
                                  (Operand(basis, _fmt(size, 6)),
                                   Operand(f"{basis}_mm", _fmt(size / kp, decimals=2))),
                                  "Н/мм", 4, tags=("scale",), result_text=kp_t))

@@ -98,7 +98,7 @@ def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeome
         half = np.array([(x1 - x0) / 2, (y1 - y0) / 2])
         dirs = list(_DIRECTIONS)
         if r.prefer_deg is not None:
-            dirs = [r.prefer_deg, r.prefer_deg + 30, r.prefer_deg - 30] + dirs
+            dirs = [r.prefer_deg, r.prefer_deg + 30, r.prefer_deg - 30, *dirs]
         best = None
         ring = gap
         while ring <= max_radius + 1e-9:

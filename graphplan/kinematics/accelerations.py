@@ -80,7 +80,8 @@ def solve_accelerations(mech: Mechanism, pos: PositionState, vel: VelocityState)
 
     Notes
     -----
-    Computed on complex numbers ``x + iy`` as :func:`graphplan.kinematics.velocities.solve_velocities`.
+    Computed on complex numbers ``x + iy`` as
+    :func:`graphplan.kinematics.velocities.solve_velocities`.
     """
     n = pos.phi.shape[0]
     P = {k: as_complex(x) for k, x in pos.points.items()}

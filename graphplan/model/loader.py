@@ -148,7 +148,8 @@ class _Reader:
         if not isinstance(value, str):
             raise self.fail(path, f"expected a string (got {_typename(value)} {value!r})")
         if choices is not None and value not in choices:
-            raise self.fail(path, f"expected one of {', '.join(map(repr, choices))} (got {value!r})")
+            raise self.fail(path, f"expected one of {', '.join(map(repr, choices))} "
+                                  f"(got {value!r})")
         return value
 
     def name(self, value: Any, path: str) -> str:
@@ -279,7 +280,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
             r.keys(r.table(data[sec], sec), sec, allowed)
 
     variant = r.table(data.get("variant", {}), "variant")
-    unit_name = r.string(variant.get("length_unit", "m"), "variant.length_unit", tuple(LENGTH_UNITS))
+    unit_name = r.string(variant.get("length_unit", "m"), "variant.length_unit",
+                         tuple(LENGTH_UNITS))
     unit = LENGTH_UNITS[unit_name]
     name = r.string(variant.get("name", Path(r.source).stem), "variant.name")
 
@@ -388,7 +390,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
                     if toward is None:
                         raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
                     if "along" in pt:
-                        raise r.fail(f"{path}.fraction", "give either 'fraction' or 'along', not both")
+                        raise r.fail(f"{path}.fraction",
+                                     "give either 'fraction' or 'along', not both")
                     fraction = r.number(pt["fraction"], f"{path}.fraction", lo=-100, hi=100)
                 along = r.length(pt.get("along", 0.0), f"{path}.along", unit, signed=True)
                 across = r.length(pt.get("across", 0.0), f"{path}.across", unit, signed=True)
@@ -569,7 +572,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         if "turn" in et and "from" not in et:
             raise r.fail(f"{path}.turn", "goes with 'from'")
         if "phi" in et:
-            extras.append(ExtraPosition(label, phi=math.radians(r.number(et["phi"], f"{path}.phi"))))
+            phi = math.radians(r.number(et["phi"], f"{path}.phi"))
+            extras.append(ExtraPosition(label, phi=phi))
         elif "from" in et:
             extras.append(ExtraPosition(
                 label,

@@ -522,7 +522,8 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         u1, u2 = _guide_dir(kin, k, k1), _guide_dir(kin, k, k2)
         b1 = _coincident(b, img, g1.link, B, P, rate_map)
         b2 = _coincident(b, img, g2.link, B, P, rate_map)
-        eq = f"v_{B} = v_{B}{g1.link} + v_{B}{i}{B}{g1.link} = v_{B}{g2.link} + v_{B}{j}{B}{g2.link}"
+        eq = (f"v_{B} = v_{B}{g1.link} + v_{B}{i}{B}{g1.link} "
+              f"= v_{B}{g2.link} + v_{B}{j}{B}{g2.link}")
         _close_two_lines(b, eq, bb,
                          b.points[b1], u1, f"∥ guide of {i} through {b1}",
                          b.points[b2], u2, f"∥ guide of {j} through {b2}")
@@ -583,7 +584,8 @@ def _lay(b: _Builder, name: str, frm: str, vec_mm: Vec2, role: str, eq: str, wha
     b.points[name] = b.points[frm] + length * d
     b.read(name, frm, name, eq.split(" =")[0])
     b.add_step(eq, f"{what}: {length:.2f} mm from {frm}.", f"{what_ru}: {length:.2f} мм от {frm}.",
-               [Element("segment", name, as_xy(b.points[frm]), as_xy(b.points[name]), role)], (name,))
+               [Element("segment", name, as_xy(b.points[frm]), as_xy(b.points[name]), role)],
+               (name,))
     return name
 
 

@@ -131,7 +131,11 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)",
           "", f"## {t['motor']}", ""]
     if mo is None:  # driven by its loads (an engine): the constant moment is Mс
-        L += [f"- {'нагрузки совершают положительную работу за цикл (двигатель): постоянный момент — момент сопротивления потребителя Mс' if ru else 'the loads do positive work over the cycle (an engine): the constant moment is the consumer’s resistance Mс'} = {fmt(fw.M_d, 6)} {Nm}",
+        engine = ("нагрузки совершают положительную работу за цикл (двигатель): постоянный "
+                  "момент — момент сопротивления потребителя Mс" if ru else
+                  "the loads do positive work over the cycle (an engine): the constant moment "
+                  "is the consumer’s resistance Mс")
+        L += [f"- {engine} = {fmt(fw.M_d, 6)} {Nm}",
               f"- P = |Mс|·ω1·η = {fmt(u.power_W, 6)} {'Вт' if ru else 'W'}"]
     else:
         L += [f"- Pс = Mд·ω1 = {fmt(fw.M_d, 6)}·{fmt(w, 5)} = {fmt(fw.P_c, 6)} "

@@ -17,7 +17,8 @@ variant's axes, as in :mod:`graphplan.forces.kinetostatics`. **Mур** (``M_bal`
 balancing moment the motor applies to the crank so that it turns at constant ω1. The
 moment of the resisting forces reduced to the crank (приведённый момент сил
 сопротивления) is ``Mс = −Mур``. The seed plots Mур ("кривая моментов сил
-сопротивления" built "по полученным значениям Мур"), and so does :func:`graphplan.forces.moment_curve`.
+сопротивления" built "по полученным значениям Мур"), and so does
+:func:`graphplan.forces.moment_curve`.
 
 :func:`forces_markdown` is for people (ru/en), :func:`forces_csv` for scripts,
 :func:`curve_markdown` the table of the exact Mур(φ) (``project.curve``), and
@@ -496,7 +497,8 @@ def forces_markdown(analysis: Analysis, lang: str = "ru", precision: float | Non
     w = _words(lang)
     positions = force_readings(analysis, precision)
     prec = positions[0].precision
-    out = [f"# {w['title']} — {markdown_cell(analysis.mech.name)}", "", w["note"].format(p=fmt(prec))]
+    out = [f"# {w['title']} — {markdown_cell(analysis.mech.name)}", "",
+           w["note"].format(p=fmt(prec))]
     for pf in positions:
         out += _position_markdown(pf, lang)
     out += ["", *curve_markdown(analysis, lang)]

@@ -88,7 +88,8 @@ def structure_text(a: Analysis, lang: str = "en") -> str:
     lines += ["", t["groups"] + ":",
               "  " + t["initial"].format(frame=m.frame_link, crank=m.crank.link)]
     for g in st.groups:
-        lines.append("  " + t["group"].format(formula=g.formula, links=f"{g.links[0]}, {g.links[1]}",
+        lines.append("  " + t["group"].format(formula=g.formula,
+                                              links=f"{g.links[0]}, {g.links[1]}",
                                               kind=g.kind, num=g.kind_number))
     lines += ["", f"{t['formula']}: {st.formula}"]
     return "\n".join(lines)

@@ -2,7 +2,8 @@
 energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics.reduction`).
 
 Only the public results of :func:`graphplan.dynamics.reduction.flywheel` (and its
-:class:`~graphplan.dynamics.reduction.WorkDiagrams`) and of :func:`graphplan.dynamics.reduction.dynamic_model`
+:class:`~graphplan.dynamics.reduction.WorkDiagrams`) and of
+:func:`graphplan.dynamics.reduction.dynamic_model`
 are drawn; nothing is solved again. Sign conventions are those of
 :mod:`graphplan.dynamics.reduction`: moments positive in the sense of rotation, so the resisting
 moment Mс is negative where it resists and ``Aс`` falls; the abscissa is the crank

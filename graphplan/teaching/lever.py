@@ -1,4 +1,5 @@
-"""The lesson of Zhukovsky's lever of one position (:func:`graphplan.plans.zhukovsky.zhukovsky_lever`).
+"""The lesson of Zhukovsky's lever of one position
+(:func:`graphplan.plans.zhukovsky.zhukovsky_lever`).
 
 Steps as the construction orders them: the velocity plan turned by 90°, each couple
 replaced by two forces, each force applied at the image of its point with its arm
