@@ -288,8 +288,11 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
     try:
         data = tomllib.loads(text)
     except (tomllib.TOMLDecodeError, ValueError) as exc:
+        from ..model.mistakes import toml_hint
+
         msg = " ".join(str(exc).split())
-        raise StudentFileError(f"{source}: not valid TOML ({msg})") from None
+        raise StudentFileError(f"{source}: not valid TOML ({msg})"
+                               + toml_hint(text, str(exc))) from None
     except RecursionError:
         raise StudentFileError(f"{source}: not valid TOML (nested too deeply)") from None
     r = _Read(source, text)

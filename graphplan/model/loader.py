@@ -155,7 +155,10 @@ class _Reader:
     def name(self, value: Any, path: str) -> str:
         s = self.string(value, path)
         if not NAME_RE.fullmatch(s):
-            raise self.fail(path, f"expected a point name like 'A', 'S2', 'O3' (got {s!r})")
+            from .mistakes import lookalike_hint
+
+            raise self.fail(path, f"expected a point name like 'A', 'S2', 'O3' (got {s!r})"
+                            + lookalike_hint(s))
         return s
 
     def link(self, value: Any, path: str) -> str:
@@ -246,7 +249,10 @@ def loads(text: str, source: str = "<string>") -> Mechanism:
     try:
         data = tomllib.loads(text)
     except (tomllib.TOMLDecodeError, ValueError) as exc:  # ValueError: e.g. a 5000-digit integer
-        raise InputError(one_line(f"{source}: not valid TOML ({exc})")) from None
+        from .mistakes import toml_hint
+
+        raise InputError(one_line(f"{source}: not valid TOML ({exc})"
+                                  + toml_hint(text, str(exc)))) from None
     except RecursionError:
         raise InputError(f"{source}: not valid TOML (nested too deeply)") from None
     mech = _build(data, _Reader(source))
