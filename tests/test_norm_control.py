@@ -289,3 +289,65 @@ def test_point_names_that_are_a_plans_letters_break_nothing(tmp_path, name, mapp
     got = [p["forces"]["M_bal"] for p in report["positions"]]
     want = [p["forces"]["M_bal"] for p in ref["positions"]]
     assert np.allclose(got, want, rtol=1e-9, atol=1e-9)
+
+
+def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(monkeypatch):
+    """Mур(φ) on sheet 2 is the curve of every load (the neglect rule of the positions' force
+    plans made false steps of ~100 N·m on the press where it switched a load off) and it
+    is closed: it ends at 360° on its first value."""
+    import graphplan.drawing.sheet2 as s2
+    from graphplan.reports import moment_curve
+
+    seen = {}
+    real = s2.moment_figure
+
+    def spy(curve, *args, **kw):
+        seen["curve"] = curve
+        seen["fig"] = real(curve, *args, **kw)
+        return seen["fig"]
+
+    monkeypatch.setattr(s2, "moment_figure", spy)
+    a = analysis("press")
+    s2.kinetostatics_sheet(a)
+    every = moment_curve(a, neglect_below=0.0)
+    ruled = moment_curve(a)
+    assert np.allclose(seen["curve"].M, every.M, rtol=0, atol=1e-9)
+    assert not np.allclose(ruled.M, every.M, rtol=0, atol=1.0)  # the rule does drop loads
+    x, y = seen["fig"].axes[0].lines[0].get_data()
+    assert x[0] == 0.0 and x[-1] == 360.0 and y[-1] == y[0]
+    assert "все нагрузки" in s2.WORDS["ru"]["curve"]
+
+
+def test_sheets_count_only_on_the_first_sheet():
+    """GOST 2.104: graph 8 (Листов) is filled on the first sheet of a document only."""
+    ids = {n: {it.id: it for it in iter_leaves(sheet("press", n).all_items()) if it.id}
+           for n in (1, 2)}
+    assert ids[1]["tb-sheets"].text == "3"
+    assert "tb-sheets" not in ids[2]
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_sheet_1_carries_the_structural_analysis(name):
+    a = analysis(name)
+    texts = {it.id: it.text for it in iter_leaves(sheet(name, 1).items)
+             if isinstance(it, Text) and it.id and it.id.startswith("structure-")}
+    body = list(texts.values())
+    assert texts["structure-title"] == "Структурный анализ"
+    assert a.structure.mobility_equation in body
+    assert any(a.structure.formula in t for t in body)
+    assert sum("группа II класса" in t for t in body) == len(a.structure.groups)
+    key = "ψ = " if a.cycle.output_kind == "rocker" else "H = "
+    assert any(t.startswith(key) for t in body)
+
+
+@pytest.mark.parametrize("n", [1, 2])
+@pytest.mark.parametrize("name", ["press", "shaper"])
+def test_no_line_thinner_than_gost_thin_line(name, n):
+    """GOST 2.303: the thin line is S/3 … S/2 (S = 0.7 mm: at least 0.23 mm); the diagrams'
+    node ordinates and pole rays were 0.15–0.175 mm grey."""
+    from graphplan.drawing.sheet import S
+
+    thin = [(it.id, it.style.width) for it in iter_leaves(sheet(name, n).all_items())
+            if getattr(it, "style", None) is not None and not isinstance(it, Text)
+            and it.style.width > 0 and it.style.width < S / 3 - 1e-9]
+    assert thin == []

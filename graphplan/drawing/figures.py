@@ -280,12 +280,12 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
             chords = (d.s_nodes, d.v_chords, d.a_chords)[k]
             if k == 0:  # s: the exact curve, the node ordinates and the chords between them
                 ax.plot(d.phi_deg, d.s, "-k", lw=MAIN * MM)
-                ax.vlines(d.node_deg, 0.0, chords, colors="black", lw=0.6 * THIN * MM)
+                ax.vlines(d.node_deg, 0.0, chords, colors="black", lw=THIN * MM)
                 ax.plot(d.node_deg, chords, "-k", lw=THIN * MM)
                 continue
             px = -pole * x_per_mm
             for r in chords[: d.intervals]:  # rays from the pole, parallel to the chords
-                ax.plot([px, 0.0], [0.0, r], "-", color="0.45", lw=0.7 * THIN * MM)
+                ax.plot([px, 0.0], [0.0, r], "-", color="black", lw=THIN * MM)
             ax.plot([px], [0.0], "o", color="black", markersize=1.2 * MM, clip_on=False)
             ax.text(px - 2.5 * x_per_mm, 0.0, f"P{k}", ha="right", va="center",
                     **_font("P1", TEXT_H))  # left of the pole: clear of its rays

@@ -18,7 +18,15 @@ from shapely.geometry import Polygon
 
 from ..kinematics import output_coordinate
 from ..plans import Plan, Reader, acceleration_plan, velocity_plan
-from ..project import CAPTION, PLAN_MARGIN, SLOT_OVER, Sheet1Scales, sheet_scales, titled_table
+from ..project import (
+    CAPTION,
+    PLAN_MARGIN,
+    SLOT_OVER,
+    STRUCTURE_LINE,
+    Sheet1Scales,
+    sheet_scales,
+    titled_table,
+)
 from .labels import LabelRequest, place_labels
 from .sheet import (
     DASHDOT,
@@ -190,6 +198,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     for fp in mech.frame_points:
         items += _support(P(mech.frame_points[fp]), f"pp-support-{fp}")
     items += _rotation_arrow(P(pivot), mech.crank, float(kin.phi[0]), kl)
+    labels += _stroke_arcs(analysis, P(pivot), kl, lang, items)
     labels.insert(0, LabelRequest(_rotation_label_anchor(P(pivot), mech.crank, float(kin.phi[0]),
                                                          kl), "ω1", 5.0, group="omega"))
     # letters of the first position
@@ -339,6 +348,30 @@ def link_items(mech, kin, k: int, P, style: Style, ident: str, layer: str,
     return items
 
 
+ARC_OFFSET = 7.0  #: the arcs of the working and idle strokes run this far outside the crank circle
+
+
+def _stroke_arcs(analysis, c: Pt, kl: float, lang: str, items: list) -> list[LabelRequest]:
+    """The crank's arcs of the working (р.х.) and idle (х.х.) strokes between the dead
+    centres, thin, outside the crank circle (appended to ``items``); their letters."""
+    cy, cr = analysis.cycle, analysis.mech.crank
+    if not cy.dead_centres:
+        return []
+    r = cr.length / kl + ARC_OFFSET
+    start = math.degrees(cy.dead_centres[0])
+    work = math.degrees(cy.working_turn)
+    full = math.degrees(cy.period) if cy.period <= 2 * math.pi + 1e-9 else 360.0
+    sense = 1.0 if cr.omega >= 0 else -1.0
+    names = ("р.х.", "х.х.") if lang == "ru" else ("w.s.", "i.s.")
+    out = []
+    for n, (a0, sweep) in enumerate(((start, work), (start + sense * work, full - work))):
+        lo, hi = (a0, a0 + sweep) if sense > 0 else (a0 - sweep, a0)
+        items.append(Arc(c, r, lo + 2.0, hi - 2.0, THIN, layer="position_plan",
+                         id=f"pp-arc-{'working' if n == 0 else 'idle'}"))
+        out.append(LabelRequest(arc_point(c, r, (lo + hi) / 2), names[n], 3.5, group="arcs"))
+    return out
+
+
 def _rotation_radius(crank, kl: float) -> float:
     return max(6.0, min(12.0, 0.4 * crank.length / kl))
 
@@ -468,11 +501,74 @@ def title_block(mech, lang: str, sheet_no: int, what: str) -> TitleBlock:
     return TitleBlock(
         designation=str(tb.get("designation", "")), title=title,
         litera=str(tb.get("litera", "У")), scale=str(tb.get("scale", "")),
-        sheet=int(tb.get("sheet", sheet_no)), sheets=tb.get("sheets"),
+        sheet=int(tb.get("sheet", sheet_no)),
+        # graph 8 "Листов": the number of sheets, on the first sheet only (GOST 2.104, 4.2)
+        sheets=tb.get("sheets") if int(tb.get("sheet", sheet_no)) == 1 else None,
         organisation=org, mass=str(tb.get("mass", "")),
         signatures=signatures(str(tb.get("author", "")), str(tb.get("checker", "")),
                               date=str(tb.get("date", ""))),
     )
+
+
+STRUCTURE_WORDS = {
+    "ru": {"title": "Структурный анализ", "formula": "Формула строения",
+           "group": "группа II класса {order} порядка {kind} вида",
+           "stroke": "H = {v} м (ход звена {link})", "swing": "ψ = {v}° (размах звена {link})",
+           "arcs": "φр.х = {w}°, φх.х = {i}° (рабочий и холостой ход)",
+           "ratio": "K = {k}", "mech": "механизм II класса"},
+    "en": {"title": "Structural analysis", "formula": "Formula of structure",
+           "group": "class II group, order {order}, kind {kind}",
+           "stroke": "H = {v} m (stroke of link {link})",
+           "swing": "ψ = {v}° (swing of link {link})",
+           "arcs": "φw = {w}°, φi = {i}° (working and idle strokes)",
+           "ratio": "K = {k}", "mech": "a class II mechanism"},
+}
+
+_KIND_RU = {"RRR": "ВВВ", "RRP": "ВВП", "RPR": "ВПВ", "PRP": "ПВП", "RPP": "ВПП"}
+
+
+def structure_lines(analysis, lang: str) -> list[str]:
+    """The structural analysis as sheet 1 writes it: Chebyshev's W = 3n − 2p5 − p4, the
+    formula of structure, each Assur group (class, order, kind), the stroke H of a sliding
+    output or the swing ψ of a rocking one with the time ratio K, and the crank angles of
+    the working and idle strokes."""
+    from .mpl_items import decimal_comma
+
+    w = STRUCTURE_WORDS[lang]
+    st, cy, mech = analysis.structure, analysis.cycle, analysis.mech
+    lines = [st.mobility_equation, f"{w['formula']}: {st.formula} — {w['mech']}"]
+    for g in st.groups:
+        kind = f"{g.kind} ({_KIND_RU[g.kind]})" if lang == "ru" else g.kind
+        lines.append(f"{kind}({'-'.join(g.links)}): "
+                     + w["group"].format(order=g.order, kind=g.kind_number))
+    out = mech.output.link
+    if cy.output_kind == "rocker":
+        first = w["swing"].format(v=f"{math.degrees(cy.swing):.2f}", link=out)
+    else:
+        first = w["stroke"].format(v=f"{cy.stroke:.4g}", link=out)
+    if cy.dead_centres:
+        first += ", " + w["ratio"].format(k=f"{cy.time_ratio:.3f}")
+        turn = math.degrees(cy.working_turn)
+        lines += [first, w["arcs"].format(w=f"{turn:.1f}",
+                                          i=f"{math.degrees(cy.period) - turn:.1f}")]
+    else:
+        lines.append(first)
+    return [decimal_comma(x) if lang == "ru" else x for x in lines]
+
+
+def structure_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
+    """The block of the structural analysis above the scales (lines of
+    :func:`structure_lines`, 3.5 mm, or 2.5 mm where a line is wider than the block)."""
+    r = sc.layout.structure
+    if r is None:
+        return []
+    items: list[Item] = [Text((r.x0, r.y0 + 6.0), STRUCTURE_WORDS[lang]["title"], 5.0,
+                              layer="text", id="structure-title")]
+    for i, line in enumerate(structure_lines(analysis, lang)):
+        h = 3.5 if text_width(Text((0, 0), line, 3.5, layer="text")) <= r.width else 2.5
+        items.append(Text((r.x0, r.y0 + 9.0 + STRUCTURE_LINE * (i + 1) - 1.5), line, h,
+                          layer="text", id=f"structure-{i}"))
+    return items
 
 
 def scales_items(sc: Sheet1Scales, lang: str) -> list[Item]:
@@ -530,6 +626,7 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
                             f"ap{k}")
         items += ill_mark_items(ap, cell, f"ap{k}", lang)
     items += scales_items(sc, lang)
+    items += structure_items(analysis, sc, lang)
     items += table_block(analysis, sc, lang)
     if diagrams:
         items += diagram_block(analysis, sc, lang)

@@ -69,12 +69,12 @@ ARROW_MM = 16.0  #: length of a load's or reaction's arrow on the scheme (direct
 
 WORDS = {
     "ru": {"scheme": "Схема, пол.", "plan": "План сил", "crank": "Кривошип", "lever":
-           "Рычаг Жуковского", "curve": "Уравновешивающий момент Mур(φ)",
+           "Рычаг Жуковского", "curve": "Уравновешивающий момент Mур(φ), все нагрузки",
            "table": "Силовой расчёт", "sheet": "Силовой анализ", "pos": "Пол.",
            "head": ("Пол.", "φ, °", "Kp, Н/мм"), "kN": "кН",
            "tail": ("h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
     "en": {"scheme": "Scheme, pos.", "plan": "Force plan", "crank": "Crank", "lever":
-           "Zhukovsky's lever", "curve": "Balancing moment Mур(φ)",
+           "Zhukovsky's lever", "curve": "Balancing moment Mур(φ), all loads",
            "table": "Force analysis", "sheet": "Force analysis", "pos": "Pos.",
            "head": ("Pos.", "φ, °", "Kp, N/mm"), "kN": "kN",
            "tail": ("h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
@@ -252,7 +252,14 @@ def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
     sheet's own items (:mod:`graphplan.drawing.mpl_items`: its letters stay text)."""
     from .mpl_items import figure_items
 
+<<<<<<< HEAD
     curve = analysis.curve
+=======
+    # every load in every position: the neglect rule (a load under neglect_below of the
+    # largest is dropped) is the force plans' rule for one position; on the curve it made
+    # false steps where it switched a load off (the press: ~100 N·m at four places)
+    curve = moment_curve(analysis, neglect_below=0.0)
+>>>>>>> 798bfe3 (Sheets 1-2 (issue 18, increment 3): the items of a TMM sheet)
     fig = moment_figure(curve, box.width, box.height, lang)
     return [figure_items(fig, (box.x0, box.y0), id="s2-moment-curve", lang=lang)]
 
@@ -271,11 +278,14 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
         fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
         ax = fig.add_axes((22 / width_mm, 14 / height_mm, 1 - 28 / width_mm,
                            1 - 24 / height_mm))
-        ax.plot(curve.travel_deg, curve.M, "-k", lw=0.5 * MM)
+        period = 720.0 if curve.travel_deg[-1] > 360 else 360.0  # a 720° cycle
+        # the curve is closed: the turn ends where it began
+        ax.plot(np.append(curve.travel_deg, period), np.append(curve.M, curve.M[0]), "-k",
+                lw=0.5 * MM)
         ax.plot(curve.position_travel_deg, curve.M_positions, "o", color="black",
                 markersize=1.2 * MM)
         ax.axhline(0.0, color="black", lw=0.25 * MM)
-        ax.set_xlim(0, 720 if curve.travel_deg[-1] > 360 else 360)  # a 720° cycle
+        ax.set_xlim(0, period)
         ax.set_xticks(curve.position_travel_deg)
         ax.set_xticklabels(spaced_labels(curve.position_travel_deg, list(curve.labels),
                                          (width_mm - 28.0) / 360.0),

@@ -13,8 +13,12 @@ from .layout import (
     SCALES_BLOCK,
     SHEET2_CELL_MIN,
     SHEET2_STRIP,
+<<<<<<< HEAD
     VECTOR_HARD,
     VECTOR_MAX,
+=======
+    STRUCTURE_LINE,
+>>>>>>> 798bfe3 (Sheets 1-2 (issue 18, increment 3): the items of a TMM sheet)
     FittedTable,
     Sheet1Layout,
     diagram_min,
@@ -63,6 +67,7 @@ __all__ = [
     "SHEET2_STRIP",
     "SLACK",
     "SLOT_OVER",
+    "STRUCTURE_LINE",
     "TRAJECTORY_POINTS",
     "VECTOR_HARD",
     "VECTOR_MAX",

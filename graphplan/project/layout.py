@@ -25,6 +25,13 @@ GAP = 8.0  #: clearance between regions, mm
 CAPTION = 7.0  #: caption strip above a plan cell, mm
 ROW = 7.0  #: row height of the table (3.5 mm lettering)
 SCALES_BLOCK = 27.0  #: height of the block of scales (three lines of 3.5 mm + title)
+STRUCTURE_LINE = 6.0  #: line pitch of the structural analysis block (3.5 mm lettering), mm
+
+
+def structure_block_height(n_groups: int) -> float:
+    """Height of sheet 1's block of the structural analysis: its title, W, the formula of
+    structure, a line per Assur group, the stroke (swing) and time ratio, the arcs."""
+    return 13.0 + STRUCTURE_LINE * (4 + n_groups)
 DIAGRAM_MIN = (200.0, 130.0)  #: smallest useful box of the three diagrams, mm
 DIAGRAM_MAX_H = 240.0
 
@@ -54,6 +61,7 @@ class Sheet1Layout:
     table: Rect
     scales: Rect
     plan_size: float = 0.0  #: the smaller defining vector (pa, πa) the cells allow, mm
+    structure: Rect | None = None  #: the block of the structural analysis
 
     @property
     def cells(self) -> tuple[Rect, ...]:
@@ -97,7 +105,8 @@ def _grid(x0: float, y0: float, w: float, h: float, n: int, shape: tuple[float, 
 def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
                   n_plans: int | None = None, n_acc: int | None = None,
                   shape: tuple[float, float, float, float] = (2.0, 2.0, 2.0, 2.0),
-                  longest: tuple[float, float] = (2.0, 2.0)) -> Sheet1Layout:
+                  longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1
+                  ) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
     The region right of the left column holds, above the table's strip, a grid of the
@@ -128,7 +137,8 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     n_a = n_v if n_acc is None else n_acc
     table_h = ROW * (n_positions + 1) + CAPTION
     tb_w, tb_h = TITLE_BLOCK_SIZE
-    strip = max(table_h, tb_h + GAP + SCALES_BLOCK)
+    struct_h = structure_block_height(n_groups)
+    strip = max(table_h, tb_h + GAP + SCALES_BLOCK + struct_h)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
     W, H = gx1 - gx0, gy1 - gy0
     cap_v, cap_a = VECTOR_HARD / max(longest[0], 1.0), VECTOR_HARD / max(longest[1], 1.0)
@@ -166,7 +176,9 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     tbx = f.x1 - tb_w
     table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
     scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
-    return Sheet1Layout(page, plan_box, diagrams, v_cells, a_cells, table, scales, size)
+    structure = Rect(tbx, scales.y0 - struct_h, f.x1 - 4.0, scales.y0)
+    return Sheet1Layout(page, plan_box, diagrams, v_cells, a_cells, table, scales, size,
+                        structure)
 
 
 @dataclass(frozen=True, slots=True)

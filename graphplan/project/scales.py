@@ -237,7 +237,8 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
     shape, longest = _plan_shapes(mech, kin, kl, which, acc)
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
-    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape, longest)
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape, longest,
+                           len(mech.dyads))
     va = abs(cr.omega) * cr.length
     aa = cr.omega**2 * cr.length
 
