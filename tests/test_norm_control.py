@@ -296,7 +296,7 @@ def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(monkeypat
     plans made false steps of ~100 N·m on the press where it switched a load off) and it
     is closed: it ends at 360° on its first value."""
     import graphplan.drawing.sheet2 as s2
-    from graphplan.reports import moment_curve
+    from graphplan.forces import moment_curve
 
     seen = {}
     real = s2.moment_figure
@@ -309,8 +309,8 @@ def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(monkeypat
     monkeypatch.setattr(s2, "moment_figure", spy)
     a = analysis("press")
     s2.kinetostatics_sheet(a)
-    every = moment_curve(a, neglect_below=0.0)
-    ruled = moment_curve(a)
+    every = moment_curve(a.mech, a.kin, a.cycle, neglect_below=0.0)
+    ruled = moment_curve(a.mech, a.kin, a.cycle)
     assert np.allclose(seen["curve"].M, every.M, rtol=0, atol=1e-9)
     assert not np.allclose(ruled.M, every.M, rtol=0, atol=1.0)  # the rule does drop loads
     x, y = seen["fig"].axes[0].lines[0].get_data()

@@ -252,14 +252,9 @@ def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
     sheet's own items (:mod:`graphplan.drawing.mpl_items`: its letters stay text)."""
     from .mpl_items import figure_items
 
-<<<<<<< HEAD
+    # every load in every position (Project.curve): the neglect rule is the force plans'
+    # rule for one position; on the curve it made false steps where it switched a load off
     curve = analysis.curve
-=======
-    # every load in every position: the neglect rule (a load under neglect_below of the
-    # largest is dropped) is the force plans' rule for one position; on the curve it made
-    # false steps where it switched a load off (the press: ~100 N·m at four places)
-    curve = moment_curve(analysis, neglect_below=0.0)
->>>>>>> 798bfe3 (Sheets 1-2 (issue 18, increment 3): the items of a TMM sheet)
     fig = moment_figure(curve, box.width, box.height, lang)
     return [figure_items(fig, (box.x0, box.y0), id="s2-moment-curve", lang=lang)]
 

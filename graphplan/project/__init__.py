@@ -13,12 +13,9 @@ from .layout import (
     SCALES_BLOCK,
     SHEET2_CELL_MIN,
     SHEET2_STRIP,
-<<<<<<< HEAD
+    STRUCTURE_LINE,
     VECTOR_HARD,
     VECTOR_MAX,
-=======
-    STRUCTURE_LINE,
->>>>>>> 798bfe3 (Sheets 1-2 (issue 18, increment 3): the items of a TMM sheet)
     FittedTable,
     Sheet1Layout,
     diagram_min,

@@ -88,10 +88,12 @@ class Project:
 
     @cached_property
     def curve(self) -> MomentCurve:
-        """Mур(φ) over one turn, exact on a fine grid, the variant's rules (sheet 2)."""
+        """Mур(φ) over one turn, exact on a fine grid, every load (sheet 2): the variant's
+        neglect rule belongs to the force plans of the positions; on the curve it made false
+        steps where it switched a load off."""
         from ..forces import moment_curve
 
-        return moment_curve(self.mech, self.kin, self.cycle)
+        return moment_curve(self.mech, self.kin, self.cycle, neglect_below=0.0)
 
     @cached_property
     def unit(self) -> MachineUnit | None:
