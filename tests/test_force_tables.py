@@ -4,7 +4,7 @@
   equals the exact kinetostatics (solve_forces) to 1e-9; ``mm·scale = value``.
 * The ru and en Markdown differ in their words, not in their columns; no nan/inf.
 * The press's working position (2) lands on the seed's figures (hand arithmetic below).
-* The curve of Mур at the positions equals solve_forces' M_bal there.
+* The curve of Mур at the positions equals solve_forces' M_bal there, every load counted.
 * examples/press.md is a fresh generation of seed_comparison_markdown.
 """
 
@@ -156,7 +156,13 @@ def test_moment_curve_at_the_positions(press):
     assert np.all(np.diff(travel) > 0) and travel[0] == 0.0 and travel[-1] < 360.0
     assert np.isfinite(M).all()
     big = float(np.abs(forces.M_bal).max())
-    assert np.allclose(c.M_positions, forces.M_bal, rtol=REL, atol=1e-12 * big)
+    # the curve carries every load (issue 18: the neglect rule is the positions' force plans',
+    # it made false steps on the curve): at the positions, the kinetostatics of every load
+    from graphplan.forces import compute_loads, solve_forces
+
+    every = solve_forces(an.mech, an.kin, compute_loads(an.mech, an.kin, an.cycle,
+                                                        neglect_below=0.0)).M_bal
+    assert np.allclose(c.M_positions, every, rtol=REL, atol=1e-12 * big)
     assert np.array_equal(M[c.index], c.M_positions)
     assert np.allclose(c.position_travel_deg, travel[c.index])
     # the seed's press: M_ур is positive in the idle stroke's first half (the motor lifts
@@ -186,6 +192,8 @@ def test_every_example(name):
     forces = solve_forces(an.mech, an.kin, compute_loads(an.mech, an.kin, an.cycle))
     text = forces_markdown(an, "en") + forces_csv(an)
     assert not re.search(r"\b(nan|inf)\b", text, re.IGNORECASE)
-    c = an.curve
+    c = an.curve  # every load (issue 18)
+    every = solve_forces(an.mech, an.kin, compute_loads(an.mech, an.kin, an.cycle,
+                                                        neglect_below=0.0)).M_bal
     big = float(np.abs(forces.M_bal).max())
-    assert np.allclose(c.M_positions, forces.M_bal, rtol=REL, atol=1e-12 * big)
+    assert np.allclose(c.M_positions, every, rtol=REL, atol=1e-12 * big)
