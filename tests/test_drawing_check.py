@@ -25,7 +25,7 @@ EX = ROOT / "examples"
 def sheets(tmp_path_factory):
     """graphplan's own sheet 1 of the press and of the Scotch yoke, as DXF and SVG."""
     out = tmp_path_factory.mktemp("sheets")
-    for ex in ("press", "scotch_yoke"):
+    for ex in ("press", "scotch_yoke", "fourbar", "offset_slider"):
         assert main(["sheets", str(EX / f"{ex}.toml"), "--format", "svg,dxf", "-o",
                      str(out / ex)]) == 0
     return out
@@ -35,17 +35,24 @@ def _wrong(rep):
     return [(f.where, f.quantity, f.kind) for f in rep.wrong]
 
 
-@pytest.mark.parametrize("ex", ["press", "scotch_yoke"])
-@pytest.mark.parametrize("fmt", ["dxf", "svg"])
+@pytest.mark.parametrize("ex,fmt", [("press", "dxf"), ("press", "svg"),
+                                    ("scotch_yoke", "dxf"), ("scotch_yoke", "svg"),
+                                    ("fourbar", "dxf"), ("offset_slider", "svg")])
 def test_graphplans_own_sheet_is_right(sheets, ex, fmt):
     dc = check_drawing(sheets / ex / f"sheet1.{fmt}", EX / f"{ex}.toml", lang="en")
     rep = dc.report
     assert rep.ok, _wrong(rep)
-    # every plan of every position is found, under its caption, and measured
+    # every plan the sheet draws is found, under its caption, and measured
+    import re
+
     kinds = {(j.found.kind, j.position) for j in dc.plans}
-    labels = dc.ref.labels
-    assert kinds == {(k, lab) for k in ("velocity", "acceleration") for lab in labels}
-    assert len(rep.figures) > 10 * len(labels)
+    drawn = set()
+    for t in dc.drawing.texts:
+        m = re.fullmatch(r"План (скоростей|ускорений), пол\. (\S+)", t.text)
+        if m:
+            drawn.add(({"скоростей": "velocity", "ускорений": "acceleration"}[m[1]], m[2]))
+    assert len(drawn) >= 6 and kinds == drawn
+    assert len(rep.figures) > 4 * len(drawn)
     assert all(f.verdict != "wrong" for f in rep.figures)
 
 
@@ -61,24 +68,30 @@ def test_dxf_and_svg_read_alike(sheets):
 
 
 def test_planted_in_graphplans_export(sheets, tmp_path):
-    """graphplan's DXF with the student's errors typed into it: Kv written twice too big
-    (every velocity plan at another scale), two captions swapped (another position)."""
+    """graphplan's DXF with the student's errors typed into it: Ka written twice the
+    scale the plans are drawn at (every acceleration plan at another scale), two captions
+    swapped (the plans of positions 2 and 3 under each other's numbers)."""
     import ezdxf
 
     doc = ezdxf.readfile(sheets / "press" / "sheet1.dxf")
+    accel = set()
     for t in doc.modelspace().query("TEXT"):
-        if t.dxf.text.startswith("Kv = "):
-            t.dxf.text = "Kv = 0.02 (м/с)/мм"
-        elif t.dxf.text == "План ускорений, пол. 2":
-            t.dxf.text = "План ускорений, пол. 3"
-        elif t.dxf.text == "План ускорений, пол. 3":
-            t.dxf.text = "План ускорений, пол. 2"
+        text = t.dxf.text
+        if text.startswith("Ka = "):
+            ka = float(text.split("=")[-1].split()[0].replace(",", "."))
+            t.dxf.text = f"Ka = {2 * ka:g} (м/с²)/мм"
+        elif text == "План скоростей, пол. 2":
+            t.dxf.text = "План скоростей, пол. 3"
+        elif text == "План скоростей, пол. 3":
+            t.dxf.text = "План скоростей, пол. 2"
+        elif text.startswith("План ускорений, пол. "):
+            accel.add(text.rsplit(" ", 1)[1])
     doc.saveas(tmp_path / "planted.dxf")
     rep = check_drawing(tmp_path / "planted.dxf", EX / "press.toml", lang="en").report
     primary = [f for f in rep.wrong if f.primary]
-    scale = {f.position for f in primary if f.kind == "scale" and "velocity plan" in f.where}
-    assert scale == set(check_drawing(sheets / "press" / "sheet1.dxf", EX / "press.toml"
-                                      ).ref.labels)
+    scale = {f.position for f in primary if f.kind == "scale" and
+             "acceleration plan" in f.where}
+    assert accel and scale == accel
     other = {f.position for f in primary if f.kind == "other-variant"}
     assert other == {"2", "3"}
 
