@@ -223,7 +223,11 @@ def test_command_line(sheets, tmp_path, capsys):
     assert main(["check", "--drawing", str(sheet), "--variant", str(EX / "press.toml"),
                  "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["summary"]["wrong"] == 0 and data["summary"]["ok"] > 100
+    assert data["summary"]["wrong"] == 0 and data["summary"]["ok"] > 50
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = json.loads((ROOT / "graphplan" / "data" / "schema" / "check.schema.json"
+                         ).read_text(encoding="utf-8"))
+    jsonschema.validate(data, schema)  # the calculation checker's JSON, same keys
     out = tmp_path / "out"
     assert main(["check", "--drawing", str(sheets / "press"), "--variant",
                  str(EX / "press.toml"), "-o", str(out)]) == 1  # sheets 2 and 3: no plan

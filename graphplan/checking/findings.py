@@ -38,7 +38,8 @@ from dataclasses import dataclass, field
 
 VERDICTS = ("ok", "inaccurate", "wrong", "not compared")
 KINDS = ("arithmetic", "consistency", "unit", "scale", "sign", "other-variant", "lever-arm",
-         "geometry", "formula", "label", "propagated", "model", "coriolis", "unreadable")
+         "geometry", "formula", "label", "propagated", "model", "coriolis", "unreadable",
+         "direction", "missing", "closure")  # the last three: a drawing's (checking/drawing)
 
 
 @dataclass(frozen=True, slots=True)

@@ -59,12 +59,15 @@ KIND_WORDS = {
            "scale": "scale", "sign": "sign", "other-variant": "other variant/position",
            "lever-arm": "lever arm", "geometry": "geometry", "formula": "formula",
            "label": "label", "propagated": "propagated", "model": "model",
-           "coriolis": "Coriolis", "unreadable": "unreadable"},
+           "coriolis": "Coriolis", "unreadable": "unreadable",
+           # a drawing's (checking/drawing)
+           "direction": "direction", "missing": "left out", "closure": "not closed"},
     "ru": {"arithmetic": "арифметика", "consistency": "согласованность", "unit": "единицы",
            "scale": "масштаб", "sign": "знак", "other-variant": "чужой вариант/положение",
            "lever-arm": "плечо", "geometry": "геометрия", "formula": "формула",
            "label": "обозначение", "propagated": "следствие", "model": "расчёт",
-           "coriolis": "Кориолис", "unreadable": "не прочитано"},
+           "coriolis": "Кориолис", "unreadable": "не прочитано",
+           "direction": "направление", "missing": "пропущено", "closure": "не замкнут"},
 }
 
 
