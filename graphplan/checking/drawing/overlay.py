@@ -15,7 +15,7 @@ import numpy as np
 
 from ..words import num
 
-BLUE = "#1f5fbf"
+BLUE = "#00a060"  # graphplan's construction: a green no CAD layer colour is by default
 RED = "#d01010"
 
 
@@ -69,6 +69,7 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
         bad = [f for f in dc.report.findings if f.verdict == "wrong" and j.key and
                j.key in f.where]
         names = {f.quantity.lstrip("∠") for f in bad}
+        placed: dict[tuple[int, int], int] = {}
         for sg in L.segments:
             if sg.name not in names or sg.start not in inv or sg.end not in inv:
                 continue
@@ -83,6 +84,10 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
             body.append(f"<circle cx='{eb[0]:.2f}' cy='{H - eb[1]:.2f}' r='0.9' fill='none' "
                         f"stroke='{RED}' stroke-width='0.25'/>")
             mid = (a + b) / 2
+            # labels of lines drawn over each other stand one under another
+            key = (round(mid[0]), round(mid[1]))
+            mid = mid - np.array([0.0, 2.8 * placed.get(key, 0)])
+            placed[key] = placed.get(key, 0) + 1
             unit = "мм" if lang == "ru" else "mm"
             body.append(f"<text x='{mid[0] + 1:.2f}' y='{H - mid[1] - 1:.2f}' font-size='2.2' "
                         f"fill='{RED}' font-family='sans-serif'>{_e(sg.name)}: "
@@ -97,9 +102,9 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
             m = 12.0
             crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m,
                           j.key))
-    legend = ("graphplan's construction (blue), wrong segments (red) with the measured ≠ "
+    legend = ("graphplan's construction (green, dashed), wrong segments (red) with the measured ≠ "
               "expected length, rings where the construction puts the point" if lang != "ru"
-              else "построение graphplan (синим), неверные отрезки (красным): измерено ≠ "
+              else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): измерено ≠ "
               "по построению, кружки — где точка по построению")
     content = "\n".join(body)
     out = [_svg(x0 - 5, H - y1 - 5, x1 - x0 + 10, y1 - y0 + 10, content, legend)]
