@@ -104,8 +104,8 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
                           j.key))
     legend = ("graphplan's construction (green, dashed), wrong segments (red) with the measured ≠ "
               "expected length, rings where the construction puts the point" if lang != "ru"
-              else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): измерено ≠ "
-              "по построению, кружки — где точка по построению")
+              else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): "
+              "измерено ≠ по построению, кружки — где точка по построению")
     content = "\n".join(body)
     out = [_svg(x0 - 5, H - y1 - 5, x1 - x0 + 10, y1 - y0 + 10, content, legend)]
     for vx, vy, vw, vh, title in crops:
