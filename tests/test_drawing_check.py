@@ -258,18 +258,20 @@ def test_force_plans_and_h21_of_graphplans_sheet2(tmp_path):
 
 def test_student_file_names_its_drawing(tmp_path, capsys):
     """[work] drawing: the sheet is checked with the calculation, and what the student
-    wrote (pb = 31,5 мм) against what they drew (42,19 мм)."""
+    wrote (pb = 31,5 мм) against what they drew (graphplan's pb at the sheet's Kv)."""
     student_sheet(EX / "press.toml", tmp_path / "sheet.dxf", ["2", "(2)"])
     (tmp_path / "ivanov.toml").write_text(
         f'[work]\nvariant = "{(EX / "press.toml").as_posix()}"\ndrawing = "sheet.dxf"\n'
         'lang = "en"\n\n[[positions]]\nlabel = "2"\n'
-        'figures = { pb = "31,5 мм", pa = "46,08 мм" }\n', encoding="utf-8")
+        'figures = { pb = "31,5 мм" }\n', encoding="utf-8")
     assert main(["check", str(tmp_path / "ivanov.toml"), "--json"]) == 1
     data = json.loads(capsys.readouterr().out)
     wrong = [f for f in data["findings"] if f["verdict"] == "wrong"]
     assert [(f["quantity"], f["kind"]) for f in wrong] == [("pb", "consistency")]
-    assert abs(wrong[0]["expected"] - 42.19) < 0.05  # as drawn
-    assert any(f["where"].startswith("sheet.dxf: ") for f in data["figures"])
+    drawn = [f for f in data["figures"] if f["where"].startswith("sheet.dxf: ") and
+             f["quantity"] == "pb" and f["position"] == "2"]
+    assert len(drawn) == 1 and drawn[0]["verdict"] == "ok"
+    assert wrong[0]["expected"] == drawn[0]["stated"]  # what is drawn
     (tmp_path / "bad.toml").write_text(
         f'[work]\nvariant = "{(EX / "press.toml").as_posix()}"\ndrawing = "nope.dxf"\n\n'
         '[[positions]]\nlabel = "2"\nfigures = { pb = 1 }\n', encoding="utf-8")

@@ -172,11 +172,16 @@ def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
 
 
 def _cells(plans):
-    """Where each plan goes: a grid of cells 130 mm wide, 120 mm high."""
+    """Where each plan goes (its pole): a grid, velocity plans above acceleration plans,
+    the cells as large as the largest plan and 40 mm between plans."""
+    xs = [float(v[0]) for p in plans for v in p[4].values()]
+    ys = [float(v[1]) for p in plans for v in p[4].values()]
+    w = max(xs) - min(xs) + 40.0
+    h = max(ys) - min(ys) + 50.0
     for i, p in enumerate(plans):
         col = i // 2
         row = i % 2
-        yield p, np.array([70.0 + 130.0 * col, 330.0 - 150.0 * row])
+        yield p, np.array([20.0 - min(xs) + w * col, 20.0 - min(ys) + h * (1 - row)])
 
 
 def _dxf(plans, path: Path, origin: np.ndarray, inches: bool) -> None:
@@ -249,7 +254,10 @@ def _pdf(plans, path: Path) -> None:
     from matplotlib.patches import Polygon
 
     with matplotlib.rc_context({"pdf.fonttype": 42, "font.family": "DejaVu Sans"}):
-        W, H = 594.0, 420.0  # A2 landscape, mm
+        placed = [c + v for p, c in _cells(plans) for v in p[4].values()]
+        # the page: A2 landscape (mm), or larger when the plans need it
+        W = max(594.0, max(float(q[0]) for q in placed) + 60.0)
+        H = max(420.0, max(float(q[1]) for q in placed) + 40.0)
         fig = plt.figure(figsize=(W / 25.4, H / 25.4))
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_xlim(0, W)
