@@ -102,6 +102,27 @@ def fmt(x: float, digits: int = 6) -> str:
     return s
 
 
+def plain(x: float, digits: int = 6, *, sign: bool = False) -> str:
+    """``x`` to ``digits`` significant figures as a student writes it, never with an
+    exponent: no trailing zeros (``0.4608``, ``364220``, ``0.00001234``); ``sign`` writes
+    ``+`` before a positive number (as ``{x:+g}``). Values that are not finite: ``str(x)``.
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        return str(x)
+    lead = "+" if sign and x > 0 else ""
+    if x == 0:
+        return lead + "0"
+    s = f"{x:.{digits}g}"
+    if "e" in s:
+        mag = math.floor(math.log10(abs(float(s))))
+        dec = max(0, digits - 1 - mag)
+        s = f"{float(s):.{dec}f}"
+        if "." in s:
+            s = s.rstrip("0").rstrip(".")
+    return lead + s
+
+
 @dataclass(frozen=True, slots=True)
 class Scale:
     """A scale factor: ``per_mm`` physical units per millimetre of the plan.

@@ -6,6 +6,7 @@ pages of every example and position, the frames, the command line and the notebo
 from __future__ import annotations
 
 import html
+import json
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -204,7 +205,7 @@ def test_flywheel_segment_kl_gives_the_wittenbauer_inertia(press):
     b_up = max(dT[i] - w * w * (1 + delta) / 2 * Iv[i] for i in range(len(dT)))
     b_lo = min(dT[i] - w * w * (1 - delta) / 2 * Iv[i] for i in range(len(dT)))
     assert kl.value == pytest.approx((b_up - b_lo) / (w * w * delta), rel=1e-9)
-    curve = next(mk for s in les.steps for mk in s.marks if mk.name == "ΔT(Iv)")
+    curve = next(mk for s in les.steps for mk in s.marks if mk.name == "ΔT(JII)")
     pts = np.array(curve.points)
     span = float(np.ptp(pts[:, 1]))
     for name, above in (("tangent-max", True), ("tangent-min", False)):
@@ -215,6 +216,51 @@ def test_flywheel_segment_kl_gives_the_wittenbauer_inertia(press):
         assert gap.min() > -1e-3 * span  # the whole curve on one side (thinned curve)
         assert gap.min() < 1e-2 * span  # and touching it
     assert_quotes(result_text(kl, "en"), kl)
+
+
+def _lesson_text(les, lang: str = "en") -> str:
+    parts = [*les.scales]
+    for s in les.steps:
+        parts += [s.equation, s.text[lang], *(n[lang] for n in s.notes)]
+    return "\n".join(parts)
+
+
+def _quotes(text: str, value: float, rel: float) -> bool:
+    return any(math.isclose(x, value, rel_tol=rel, abs_tol=1e-9) for x in quoted(text))
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_flywheel_lesson_is_sheet_3s_machine_unit(path):
+    """The flywheel lesson draws sheet 3's machine unit: every scale (Kφ, KM, H, KA, KT, KJ),
+    kl, JI, Jм and the flywheel's size and mass are those of drawings/<example>/analysis.json
+    (what sheet 3 and dynamics.ru.md write) and of the project's machine unit, and its
+    captions hold no table of vectors (the quantities are scalars)."""
+    a = analysis_of(path)
+    if a.unit is None:
+        pytest.skip("no dynamics.delta: no sheet 3")
+    u = a.unit
+    sheet = json.loads((COMMITTED.parent / path.stem / "analysis.json").read_text("utf-8"))
+    dyn = sheet["dynamics"]
+    les = lesson(a, "flywheel")
+    text = _lesson_text(les)
+    fw, wd = u.flywheel, u.flywheel.work
+    sc = dyn["scales"]
+    for key, mine in (("Kphi", wd.Kphi), ("KM", wd.KM), ("H_mm", wd.H), ("KA", wd.KA),
+                      ("KT", fw.KT), ("KI", fw.KI)):
+        assert mine == pytest.approx(sc[key], rel=1e-9), key  # the sheet's own scales
+        assert _quotes(text, sc[key], 5e-4), (key, sc[key])  # written in the lesson
+    kl = next(r for r in les.results if r.segment == "kl")
+    assert kl.mm == pytest.approx(dyn["tangents"]["kl_mm"], rel=1e-9)
+    assert kl.value == pytest.approx(dyn["J_I"], rel=1e-9)
+    for value in (dyn["J_I"], dyn["I_flywheel"], dyn["flywheel"]["mass"], dyn["flywheel"]["D"],
+                  dyn["flywheel"]["rim_speed"], dyn["tangents"]["psi_max_deg"],
+                  dyn["tangents"]["psi_min_deg"]):
+        assert _quotes(text, value, 5e-4), (value, text)
+    if dyn["I_rotor_reduced"]:
+        assert "Jрот·u²" in text and _quotes(text, dyn["I_rotor_reduced"], 5e-4)
+    assert all(not s.terms for s in les.steps)
+    for lang in ("ru", "en"):
+        assert 'class="terms"' not in teaching_page(les, lang)
 
 
 # ------------------------------------------------------------- pages of every example
@@ -389,7 +435,8 @@ def test_russian_words_replace_the_constructions_english(press):
     assert "через" in text and " through " not in re.sub(r"<svg.*?</svg>", "", text, flags=re.S)
     assert localise("ΣM_B(link 2): Rτ12·AB = 0", "ru") == "ΣM_B(звено 2): Rτ12·AB = 0"
     assert num(423918.40231) == "423918" and num(0.421887) == "0.4219"
-    assert num(1.5849e7) == "1.585·10^7"
+    # never an exponent: a student writes 15850000 N·mm and 0.00001234 m, not 1.585·10^7
+    assert num(1.5849e7) == "15850000" and num(1.2341e-5) == "0.00001234"
 
 
 # ------------------------------------------------------------- the committed pages

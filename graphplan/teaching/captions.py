@@ -1,9 +1,9 @@
 """The words and numbers of the captions, in Russian and English.
 
 Numbers are written as a student writes them: lengths on the drawing to 0.01 mm, values
-to four significant figures without an exponent between 10⁻³ and 10⁶ (``423918 N``,
-``0.4219 m/s``), otherwise as ``1.234·10^7``; a scale with up to six figures
-(:func:`graphplan.units.fmt`).
+to four significant figures (``423918 N``, ``0.4219 m/s``), a scale with up to six
+figures (:func:`graphplan.units.plain`) — never with an exponent, which a student does not
+write in a calculation (``18260000 N·mm``, not ``1.826·10^7``).
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..plans import ZERO_MM
-from ..units import UNITS_RU, fmt, unit_text
+from ..units import UNITS_RU, plain, unit_text
 from .model import Result
 
 WORDS = {
@@ -109,7 +109,8 @@ def unit(u: str, lang: str) -> str:
 
 
 def num(x: float, sig: int = 4) -> str:
-    """A value to ``sig`` significant figures, no exponent within 10⁻³ … 10⁶."""
+    """A value to ``sig`` significant figures (trailing zeros kept within 10⁻³ … 10⁶),
+    never with an exponent."""
     x = float(x)
     if x == 0 or not math.isfinite(x):
         return "0" if x == 0 else str(x)
@@ -118,7 +119,7 @@ def num(x: float, sig: int = 4) -> str:
         dec = max(0, sig - 1 - mag)
         s = f"{x:.{dec}f}"
         return "0" if float(s) == 0 else s
-    return fmt(x, sig)
+    return plain(x, sig)
 
 
 def shown(r: Result) -> float:
@@ -135,7 +136,7 @@ def mm(x: float) -> str:
 def result_text(r: Result, lang: str) -> str:
     """``pb = 42.19 mm → v_B = pb·Kv = 42.19·0.01 = 0.4219 m/s`` (or the laid-off form)."""
     u_mm, u = unit("mm", lang), unit(r.unit, lang)
-    k = fmt(r.per_mm)
+    k = plain(r.per_mm)
     if abs(r.mm) < ZERO_MM:  # a dead centre: round-off, not a length
         r = Result(r.segment, r.quantity, 0.0, shown(r), r.unit, r.factor, r.per_mm, r.laid)
     if r.laid:
@@ -145,5 +146,5 @@ def result_text(r: Result, lang: str) -> str:
             f"{mm(r.mm)}·{k} = {num(r.value)} {u}")
 
 
-__all__ = ["KIND_TITLES", "UNITS_RU", "WORDS", "ZERO_MM", "localise", "mm", "num", "result_text",
-           "scale_text", "shown", "unit"]
+__all__ = ["KIND_TITLES", "UNITS_RU", "WORDS", "ZERO_MM", "localise", "mm", "num", "plain",
+           "result_text", "scale_text", "shown", "unit"]
