@@ -223,10 +223,11 @@ def flywheel_lesson(analysis) -> Lesson:
                   f"({fw.difference_pct:+.2f} %)")]
     motor = unit_.motor
     rotor_en = rotor_ru = ""
-    if rotor > 0 and motor is not None:
-        rotor_en = (f" The motor's rotor already gives Jрот·u² = {plain(motor.motor.inertia_kg_m2)}"
+    j_rot = None if motor is None else motor.motor.inertia_kg_m2
+    if rotor > 0 and motor is not None and j_rot is not None:
+        rotor_en = (f" The motor's rotor already gives Jрот·u² = {plain(j_rot)}"
                     f"·{plain(motor.u, 4)}² = {num(rotor, 6)} kg·m² (u = n_ном/n1).")
-        rotor_ru = (f" Ротор двигателя уже даёт Jрот·u² = {plain(motor.motor.inertia_kg_m2)}"
+        rotor_ru = (f" Ротор двигателя уже даёт Jрот·u² = {plain(j_rot)}"
                     f"·{plain(motor.u, 4)}² = {num(rotor, 6)} кг·м² (u = n_ном/n1).")
     add(1, "result", "JI = kl·KT/(ω²·δ)",
         _two(f"The segment kl between the tangents on the ΔT axis gives the constant reduced "
