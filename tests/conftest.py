@@ -9,9 +9,33 @@ reproduction blob.
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
+import pytest
 from hypothesis import settings
 
 settings.register_profile("ci", derandomize=True, print_blob=True)
 settings.register_profile("dev", print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "dev"))
+
+
+@pytest.fixture(scope="session")
+def solved():
+    """``solved(name_or_path)`` → the :class:`graphplan.project.Project` of an example (a
+    bundled example's name or a variant's path), solved once for the whole test session:
+    its stages (loads, reactions, sheet scales, the machine unit…) are solved on first use
+    and shared by every test that asks for the same example."""
+    from graphplan import load
+    from graphplan.files import bundled_example
+    from graphplan.project import solve_project
+
+    projects: dict[str, object] = {}
+
+    def get(example):
+        path = Path(example) if str(example).endswith(".toml") else bundled_example(example)
+        key = str(Path(path).resolve())
+        if key not in projects:
+            projects[key] = solve_project(load(path))
+        return projects[key]
+
+    return get

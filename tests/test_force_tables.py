@@ -37,10 +37,9 @@ NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
 
 
 @pytest.fixture(scope="module")
-def press():
-    an = analyze(g.load(bundled_example("press")))
-    loads = compute_loads(an.mech, an.kin, an.cycle)
-    return an, solve_forces(an.mech, an.kin, loads)
+def press(solved):
+    an = solved("press")  # the session's project (tests/conftest.py)
+    return an, an.forces
 
 
 @pytest.fixture(scope="module")

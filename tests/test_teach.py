@@ -41,18 +41,15 @@ def parse(s: str) -> float:
     return float(s)
 
 
-_ANALYSES: dict[str, object] = {}
-
-
-def analysis_of(path: Path):
-    if path.stem not in _ANALYSES:
-        _ANALYSES[path.stem] = analyze(load(path))
-    return _ANALYSES[path.stem]
+@pytest.fixture(scope="session")
+def analysis_of(solved):
+    """The example's project, solved once for the session (tests/conftest.py)."""
+    return solved
 
 
 @pytest.fixture(scope="module")
-def press():
-    return analysis_of(bundled_example("press"))
+def press(analysis_of):
+    return analysis_of("press")
 
 
 def quoted(text: str) -> list[float]:
@@ -84,7 +81,7 @@ def _exact_vector(kin, table, quantity: str, k: int):
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_kinematic_captions_quote_the_exact_velocities_and_accelerations(path):
+def test_kinematic_captions_quote_the_exact_velocities_and_accelerations(path, analysis_of):
     """Every v_X, v_XY, a_X the velocity and acceleration lessons read off their plans is
     the exact solver's (closed-form loop equations, not a construction) to round-off, and
     every angular velocity a caption derives is the solver's ω with its sense."""
@@ -138,7 +135,7 @@ def test_press_velocity_steps_by_hand(press):
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_force_captions_quote_the_exact_reactions(path):
+def test_force_captions_quote_the_exact_reactions(path, analysis_of):
     """Each reaction a force plan's caption reads (segment·Kp) is the exact kinetostatics'
     (a linear solve of all groups at once), and the lever's note quotes the force plans'
     Mур and its own, equal by the power balance."""
@@ -286,7 +283,7 @@ def _check_page(text: str, les, lang: str) -> None:
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_every_plan_of_every_position_makes_a_page(path):
+def test_every_plan_of_every_position_makes_a_page(path, analysis_of):
     a = analysis_of(path)
     for plan in PLANS:
         for label in (a.kin.labels if plan != "flywheel" else [None]):
