@@ -47,10 +47,6 @@ APART = {"checking", "teaching"}
 #: Imports inside a Jupyter display hook (a method named ``_repr_*_``) are the standing
 #: exception and need no entry: a value shows itself as the picture or table of its stage.
 ALLOWED_UPWARD: dict[tuple[str, str], str] = {
-    ("graphplan.dynamics.reduction", "graphplan.project"):
-        "takes an Analysis; to take the kinematics and the loads (solve_project)",
-    ("graphplan.dynamics.machine", "graphplan.project"):
-        "takes an Analysis; to take the dynamic model and the diagram sizes (solve_project)",
     ("graphplan.model.loader", "graphplan.dynamics"):
         "validates motor_series/motor_speed against the motor catalogue; the catalogue's "
         "names and speeds to move below the loader",

@@ -32,7 +32,6 @@ import numpy as np
 
 from ..errors import InputError
 from ..paper import Page
-from ..project import Analysis
 from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
 from .reduction import (
     STEEL,
@@ -40,6 +39,7 @@ from .reduction import (
     Flywheel,
     FlywheelSize,
     Simulation,
+    Solved,
     dynamic_model,
     flywheel,
     flywheel_size,
@@ -242,7 +242,7 @@ class MachineUnit:
         }
 
 
-def machine_unit(analysis: Analysis, *, model: DynamicModel | None = None) -> MachineUnit:
+def machine_unit(analysis: Solved, *, model: DynamicModel | None = None) -> MachineUnit:
     """Motor, gear ratio, flywheel and its check for the variant of ``analysis``.
 
     Raises

@@ -55,15 +55,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import GraphplanError, InputError, LayoutError
 from ..forces import compute_loads, cycle_travel, load_breaks, load_power, solve_forces
-from ..kinematics import Kinematics, solve
+from ..kinematics import Cycle, Kinematics, solve
 from ..model import Mechanism
-from ..project import Analysis
 from ..units import nice_ceil
 
 Array = NDArray[np.float64]
@@ -76,6 +76,20 @@ MAX_POLE_MM = 80.0
 """Largest pole distance H of the work diagrams, mm (the pole stays near the drawing)."""
 RIM_SPEED_LIMIT = 40.0
 """Largest rim speed ω·D/2 of a steel flywheel, m/s (method B.4.10: 40–50 m/s)."""
+
+
+class Solved(Protocol):
+    """What the dynamics reads of a solved variant (a :class:`graphplan.project.Project`):
+    the mechanism, its cycle and the kinematics of its positions."""
+
+    @property
+    def mech(self) -> Mechanism: ...
+
+    @property
+    def kin(self) -> Kinematics: ...
+
+    @property
+    def cycle(self) -> Cycle: ...
 
 
 class DynamicsError(GraphplanError, ValueError):
@@ -183,7 +197,7 @@ class DynamicModel:
                    source, delta)
 
 
-def _first(mech: Mechanism, analysis: Analysis) -> tuple[float, float]:
+def _first(mech: Mechanism, analysis: Solved) -> tuple[float, float]:
     """Absolute angle of the first position (rad) and the sense of rotation (±1)."""
     first = str(mech.positions.number_from)
     labels = analysis.kin.labels
@@ -198,7 +212,7 @@ def _grid(mech: Mechanism, grid: int | None) -> int:
     return g
 
 
-def _resisting_moment(analysis: Analysis, kin: Kinematics, neglect_below: float) -> Array:
+def _resisting_moment(analysis: Solved, kin: Kinematics, neglect_below: float) -> Array:
     """Mс = −sense·Mур without inertia forces, at the positions of ``kin``."""
     mech = analysis.mech
     loads = compute_loads(mech, kin, analysis.cycle, inertia=False, neglect_below=neglect_below)
@@ -206,7 +220,7 @@ def _resisting_moment(analysis: Analysis, kin: Kinematics, neglect_below: float)
     return -sense * solve_forces(mech, kin, loads).M_bal
 
 
-def _power_moment(analysis: Analysis, phi: Array) -> Array:
+def _power_moment(analysis: Solved, phi: Array) -> Array:
     """Mс = (Σ F·v + Σ M·ω)/|ω1| of the weights and the variant's loads at crank angles φ
     (virtual power; equal to −sense·Mур without inertia, and cheaper)."""
     mech = analysis.mech
@@ -241,7 +255,7 @@ def exact_work(at, tau: Array, breaks) -> Array:
     return cum[np.searchsorted(nodes, tau)]
 
 
-def reduced_moment(analysis: Analysis, grid: int | None = None, *,
+def reduced_moment(analysis: Solved, grid: int | None = None, *,
                    neglect_below: float = 0.0) -> ReducedMoment:
     """Exact Mс(φ) over one turn (uniform grid of ``grid`` intervals) and at the positions.
 
@@ -278,7 +292,7 @@ def reduced_moment(analysis: Analysis, grid: int | None = None, *,
                          at if neglect_below == 0.0 else None, period)
 
 
-def resistance_breaks(analysis: Analysis, ends: bool = False) -> tuple[float, ...]:
+def resistance_breaks(analysis: Solved, ends: bool = False) -> tuple[float, ...]:
     """Crank travel (rad, from the first position) of every interior break of the variant's
     load diagrams: the abscissae where a load jumps or its slope changes, in every loaded
     stroke (:func:`graphplan.forces.loads.load_breaks`); with ``ends`` also the ends of
@@ -321,7 +335,7 @@ def reduced_inertia(mech: Mechanism, kin: Kinematics) -> ReducedInertia:
     return ReducedInertia(I_const + I_var, I_var, dI, I_const)
 
 
-def dynamic_model(analysis: Analysis, grid: int | None = None, *,
+def dynamic_model(analysis: Solved, grid: int | None = None, *,
                   neglect_below: float = 0.0) -> DynamicModel:
     """Mс and Iп of a variant on the grid and at its positions (one kinematic sweep each)."""
     mech = analysis.mech
@@ -335,7 +349,7 @@ def dynamic_model(analysis: Analysis, grid: int | None = None, *,
                         None if eff is None else float(eff))
 
 
-def _model(obj: Analysis | DynamicModel) -> DynamicModel:
+def _model(obj: Solved | DynamicModel) -> DynamicModel:
     return obj if isinstance(obj, DynamicModel) else dynamic_model(obj)
 
 
@@ -409,14 +423,14 @@ def _cumtrapz(y: Array, x: Array) -> Array:
     return np.concatenate(([0.0], np.cumsum(0.5 * (y[1:] + y[:-1]) * np.diff(x))))
 
 
-def work_diagrams(obj: Analysis | DynamicModel, intervals: int = 24, *,
+def work_diagrams(obj: Solved | DynamicModel, intervals: int = 24, *,
                   length_mm: float = 240.0, height_mm: float = 60.0,
                   reading_mm: float | None = None) -> WorkDiagrams:
     """Integrate Mс graphically (method of chords) and exactly; Mд, Aд and ΔT.
 
     Parameters
     ----------
-    obj : Analysis or DynamicModel
+    obj : Project or DynamicModel
     intervals : int
         Equal intervals n of the graphical integration (≥ 4); the default 24 puts a node
         at every main position of an 8- or 12-position cycle.
@@ -625,7 +639,7 @@ def _wittenbauer(dT: Array, I_var: Array, w: float, delta: float) -> tuple[float
     return float(up[i]), float(lo[j]), i, j
 
 
-def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
+def flywheel(obj: Solved | DynamicModel, delta: float | None = None, *,
              intervals: int = 24, width_mm: float = 100.0, KI: float | None = None,
              KT: float | None = None, shape: str = "rim",
              ratio: float = 1.0, b_ratio: float = 0.2, h_ratio: float = 0.1,
@@ -635,7 +649,7 @@ def flywheel(obj: Analysis | DynamicModel, delta: float | None = None, *,
 
     Parameters
     ----------
-    obj : Analysis or DynamicModel
+    obj : Project or DynamicModel
     delta : float, optional
         δ; default the variant's ``dynamics.delta``.
     intervals : int
@@ -814,7 +828,7 @@ def steady_omega(m: DynamicModel, I_flywheel: float, dT: Array | None = None
     return mean(T0)[1], T0
 
 
-def simulate(obj: Analysis | DynamicModel, I_flywheel: float | None = None, *,
+def simulate(obj: Solved | DynamicModel, I_flywheel: float | None = None, *,
              cycles: int = 5, steps_per_cycle: int | None = None,
              omega_start: float | None = None, slip: float | None = None,
              delta: float | None = None) -> Simulation:
@@ -822,7 +836,7 @@ def simulate(obj: Analysis | DynamicModel, I_flywheel: float | None = None, *,
 
     Parameters
     ----------
-    obj : Analysis or DynamicModel
+    obj : Project or DynamicModel
     I_flywheel : float, optional
         Iм, kg·m²; default the Wittenbauer result of :func:`flywheel` for ``delta``.
     cycles : int
