@@ -25,7 +25,6 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import graphplan as g
-from graphplan.files import bundled_example
 from graphplan.forces import (
     ForceLoad,
     MomentLoad,
@@ -35,7 +34,6 @@ from graphplan.forces import (
     solve_forces,
 )
 from graphplan.plans import EXACT, Reader, discrepancy_pct, zhukovsky_lever
-from graphplan.project import sheet_scales
 from graphplan.units import Scale
 
 REL = 1e-9
@@ -67,18 +65,15 @@ def agree(actual, expected, big, what):
     assert abs(actual - expected) <= tol, f"{what}: {actual!r} vs {expected!r}"
 
 
-_CACHE: dict[str, tuple] = {}
+@pytest.fixture(scope="session")
+def example(solved):
+    """``example(name)`` → mechanism, cycle, kinematics, Kl and Kv of the session's project."""
 
+    def get(name):
+        p = solved(name)
+        return p.mech, p.cycle, p.kin, p.sheet1.kl, p.sheet1.kv
 
-def example(name):
-    if name not in _CACHE:
-        m = g.load(bundled_example(name))
-        cycle = g.analyse_cycle(m)
-        kin = g.sweep(m, cycle)
-        sc = sheet_scales(m, kin)
-        kl, kv = sc.kl, sc.kv
-        _CACHE[name] = (m, cycle, kin, kl, kv)
-    return _CACHE[name]
+    return get
 
 
 LOAD_SETS = {"variant": {}, "all": {"neglect_below": 0.0},
@@ -87,7 +82,7 @@ LOAD_SETS = {"variant": {}, "all": {"neglect_below": 0.0},
 
 @pytest.mark.parametrize("how", list(LOAD_SETS))
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_exact_lever_equals_force_plans_and_power(name, how):
+def test_exact_lever_equals_force_plans_and_power(name, how, example):
     m, cycle, kin, kl, kv = example(name)
     loads = compute_loads(m, kin, cycle, **LOAD_SETS[how])
     forces = solve_forces(m, kin, loads)
@@ -109,7 +104,7 @@ def test_exact_lever_equals_force_plans_and_power(name, how):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_lever_points_are_the_turned_velocities(name):
+def test_lever_points_are_the_turned_velocities(name, example):
     """Every force sits at x' = R₉₀·v_X/Kv (its point's velocity turned +90° CCW), and its
     moment about p is −F·v_X/Kv; the arm is |x'×F|/|F|."""
     m, cycle, kin, kl, kv = example(name)
@@ -131,7 +126,7 @@ def test_lever_points_are_the_turned_velocities(name):
                                          rel=1e-12)
 
 
-def test_couple_is_a_pair_of_forces_at_the_ends_of_the_link():
+def test_couple_is_a_pair_of_forces_at_the_ends_of_the_link(example):
     """Mи3 on the four-bar's rocker B–C: F = Mи3/l_BC ⟂ BC at B and C; on the lever the
     pair acts at b' and p (C is on the frame) and its moment is −Mи3·ω3/Kv."""
     m, cycle, kin, kl, kv = example("fourbar")
@@ -153,7 +148,7 @@ def test_couple_is_a_pair_of_forces_at_the_ends_of_the_link():
     assert any("Mи3" in s.text and "⟂" in s.text for s in lever.steps)
 
 
-def test_press_working_position_2_by_hand():
+def test_press_working_position_2_by_hand(example):
     """The seed's press at (2): the 10 % rule leaves only Q = 0.7·600 kN ≈ 419.93 kN on the
     ram, acting up (+y) against v_B. Kv = 0.01 (m/s)/mm, ω1 = π·55/30 = 5.7596 rad/s,
     pa = ω1·l_OA/Kv = 5.7596·0.08/0.01 = 46.077 mm; the plan turned +90° puts b' at
@@ -183,7 +178,7 @@ def test_press_working_position_2_by_hand():
     assert draft.discrepancy_pct == pytest.approx(0.934, abs=0.01)
 
 
-def test_point_p_is_not_the_pole():
+def test_point_p_is_not_the_pole(example):
     """The six-bar's punch point P (link 5) shares its letter with the pole p: on the plan it
     is p5 (constructions.plan_name), its image p5', never the pole; the ram translates, so
     p5' is d'."""
@@ -200,7 +195,7 @@ def test_point_p_is_not_the_pole():
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_drafting_discrepancy(name):
+def test_drafting_discrepancy(name, example):
     """At 0.5 mm the lever differs from the force plans by a few percent (measured: at most
     2.4 %, mean 0.4–1.1 % per example) where |M_ур| > 5 % of its largest value; near a zero
     of M_ур a percentage is meaningless, so there the absolute error is bounded instead."""
@@ -219,7 +214,7 @@ def test_drafting_discrepancy(name):
         assert all(f.arm.mm % 0.5 == 0 for f in lever.forces)
 
 
-def test_discrepancy_and_refusals():
+def test_discrepancy_and_refusals(example):
     assert discrepancy_pct(100.0, 95.0) == pytest.approx(5.0)
     assert discrepancy_pct(95.0, 100.0) == pytest.approx(5.0)
     assert discrepancy_pct(0.0, 0.0) == 0.0
@@ -292,7 +287,7 @@ def test_random_crank_sliders_and_fourbars(case):
 
 @pytest.mark.parametrize(("name", "block"), [("shaper", "2"), ("scotch_yoke", "2"),
                                              ("shaper_prp", "4")])
-def test_loads_on_a_slider_block(name, block):
+def test_loads_on_a_slider_block(name, block, example):
     """A block has one plan point: a force off it is placed with ω of the block read off
     the plan, a couple on it gets a second end 50 mm away on the position plan."""
     m, cycle, kin, kl, kv = example(name)
