@@ -123,7 +123,7 @@ def test_sheets_writes_the_sheet_tables_and_report(capsys, tmp_path):
     # the JSON's scales are the sheet's: Kl as the seed fixes it, Kv and Ka as printed
     assert report["positions"][0]["plans"]["Kl"] == 0.001
     kv = report["positions"][0]["plans"]["Kv"]
-    assert f"= {kv:g} (м/с)/мм</text>" in svg
+    assert _ends_a_text(svg, f"= {kv:g} (м/с)/мм".replace(".", ","))  # decimal comma
     assert not any(p.name.endswith(".tmp") for p in (tmp_path / "press").iterdir())
 
 
@@ -183,7 +183,7 @@ def test_sheets_on_a2(capsys, tmp_path):
     # the report's scales are the A2 sheet's, not the A1 default's
     kv = json.loads((tmp_path / "analysis.json").read_text(encoding="utf-8"))[
         "mechanism"]["scales"]["Kv"]["value"]
-    assert f"= {kv:g} (м/с)/мм</text>" in svg
+    assert _ends_a_text(svg, f"= {kv:g} (м/с)/мм".replace(".", ","))  # decimal comma
 
 
 def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
@@ -223,3 +223,12 @@ def test_json_carries_force_plans_and_the_lever(capsys):
     assert crank["M_bal"] == pytest.approx(p2["forces"]["M_bal"], rel=1e-9)
     assert p2["zhukovsky"]["M_bal"] == pytest.approx(p2["forces"]["M_bal"], rel=1e-9)
     assert p2["zhukovsky"]["discrepancy_pct"] < 1e-6
+
+
+def _ends_a_text(svg: str, tail: str) -> bool:
+    """A ``<text>`` of the SVG, its runs (subscripts) joined, ends with ``tail``."""
+    import xml.etree.ElementTree as ET
+
+    root = ET.fromstring(svg.encode("utf-8"))
+    return any("".join(t.itertext()).endswith(tail)
+               for t in root.iter("{http://www.w3.org/2000/svg}text"))

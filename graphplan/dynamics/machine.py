@@ -32,6 +32,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..paper import Page
+from ..units import nice_ceil
 from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
 from .reduction import (
     STEEL,
@@ -62,13 +63,7 @@ SCALE_SERIES = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 
 def round_scale(value: float) -> float:
     """The smallest member of :data:`SCALE_SERIES` × 10^k that is ≥ ``value`` (> 0)."""
-    k = math.floor(math.log10(value))
-    for exp in (k, k + 1):
-        for m in SCALE_SERIES:
-            s = m * 10.0**exp
-            if s >= value * (1 - 1e-12):
-                return float(f"{s:.12g}")
-    raise AssertionError("unreachable")  # pragma: no cover
+    return nice_ceil(value, SCALE_SERIES)
 
 
 def _room_for_dT(wd, M) -> float:
