@@ -7,13 +7,19 @@ counter-clockwise positive (the conventions of :mod:`graphplan.forces.kinetostat
 * weight ``G_k = m_k·g`` at the centre of mass S_k (``g`` is ``Mechanism.gravity``);
 * inertia force ``Pи_k = −m_k·a_Sk`` at S_k and inertia moment ``Mи_k = −J_Sk·ε_k``
   (d'Alembert); a slider has ε = ε of its guide's carrier, so none on a frame guide;
-* technological resistance (F_пс, the seed's ``Q``), only in the working stroke
-  (:func:`graphplan.kinematics.cycle.in_working_stroke`), of size ``f(s)·max`` where ``s`` is the
-  travel fraction of the working stroke and ``f`` the variant's diagram
-  (:func:`diagram_value`). A force acts at its point along the output's frame guide
-  ``u``: ``Q = −w·|Q|·u`` with ``w = output.working`` (±1), i.e. against the slider's
-  velocity, which points along ``w·u`` throughout the working stroke; a moment on a
-  rocker is ``Mс = −w·|M|``, against ω.
+* the variant's loads (:func:`resistance_loads`, docs/variant-format.md §6.2): a force at a
+  point or a couple on any moving link, of value ``f(x)·max − offset`` where ``f`` is the
+  diagram of the stroke the position is in (or over the crank angle) and x the travel
+  link's position in its stroke, 0 at its start dead centre and 1 at its end one
+  (:meth:`~graphplan.kinematics.cycle.LinkTravel.fraction`); the cycle is 2π or 4π of
+  crank travel from its origin (:func:`cycle_travel`), two strokes per turn.
+  Signs: ``resists`` — against the motion (a slider's along its frame guide: ``−w·d·|Q|·u``
+  with ``w`` the travel's working sense and ``d`` = ±1 on the strokes 0 → 1 and 1 → 0; a
+  point's: ``−|Q|·v/|v|``; a couple: against ω); ``drives`` — along it; ``diagram`` — the
+  value's sign: along ``angle`` or the slider's x, a couple CCW positive. The classical
+  technological resistance (the seed's ``Q``) is the default: the output's working stroke,
+  resisting, ``Q = −w·|Q|·u``.
+* round-off of ε (≤ 1e-12·ω1², at a dead centre where it vanishes) gives no inertia couple.
 
 Settings (``[kinetostatics]`` of the variant, overridable by keywords):
 

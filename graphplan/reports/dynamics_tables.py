@@ -63,7 +63,8 @@ def position_rows(u: MachineUnit, lang: str | None = None) -> list[list[str]]:
     rows = []
     for k, lab in enumerate(m.moment.labels):
         t = float(m.moment.pos_tau[k])
-        phi = math.degrees(m.moment.phi[0] + m.moment.sense * t) % 360.0
+        # φ in [0°, 720°) over a four-stroke cycle: the two turns' positions differ
+        phi = math.degrees(m.moment.phi[0] + m.moment.sense * t) % math.degrees(m.period)
         rows.append([lab, f"{phi:.1f}", v(float(m.moment.pos_M[k]), big_m),
                      v(float(m.pos_inertia.I_red[k]), big_i),
                      v(float(np.interp(t, wd.tau, wd.A_c)), big_a),
