@@ -290,7 +290,48 @@ def test_every_plan_of_every_position_makes_a_page(path, analysis_of):
             les = lesson(a, plan, label)
             assert les.steps and all(s.panel < len(les.panels) for s in les.steps)
             lang = "en" if len(les.steps) % 2 else "ru"
-            _check_page(teaching_page(les, lang), les, lang)
+            page = teaching_page(les, lang)
+            _check_page(page, les, lang)
+            _check_texts(les, page)
+
+
+SCIENTIFIC = re.compile(r"\d[eE][+-]?\d|·10\^")
+#: a negative factor written bare after a multiplication or division: 2·-1.383
+BARE_NEGATIVE = re.compile(r"[·/×]\s*[-−]\s*\d")
+
+
+def _visible(page: str) -> str:
+    for tag in ("script", "style", "svg"):
+        page = re.sub(rf"<{tag}.*?</{tag}>", " ", page, flags=re.S)
+    return html.unescape(re.sub(r"<[^>]+>", " ", page))
+
+
+def _check_texts(les, page: str) -> None:
+    """No exponent in any text of the lesson or its page; no bare negative factor; the
+    Coriolis step names the acceleration, its formula with the link's ω and the relative
+    velocity, and the rule of its direction; a projection is titled as one and defines u;
+    a step titled as an equation of moments is one (ΣM)."""
+    assert not SCIENTIFIC.search(_visible(page)), SCIENTIFIC.search(_visible(page))
+    for s in les.steps:
+        for lang in ("ru", "en"):
+            texts = [s.equation, s.text[lang], *(n[lang] for n in s.notes)]
+            for t in texts:
+                assert not SCIENTIFIC.search(t), (s.number, t)
+                assert not BARE_NEGATIVE.search(t), (s.number, t)
+        if any(m.role == "coriolis" for m in s.marks):
+            m = re.fullmatch(r"aᵏ_\w+ = 2·ω(\w+)·(v_\w+)", s.equation)
+            assert m, s.equation
+            link, rel = m[1], m[2]
+            assert "ускорение кориолиса" in s.text["ru"].lower(), s.text["ru"]
+            assert "Coriolis acceleration" in s.text["en"], s.text["en"]
+            if f"ω{link} = 0" not in s.text["en"]:
+                assert f"{rel}, повёрнутый на 90° в сторону вращения ω{link}" in s.text["ru"]
+                assert f"{rel} turned by 90° in the sense of ω{link}" in s.text["en"]
+        if s.kind == "moment":
+            assert s.equation.startswith("ΣM"), s.equation
+        if "·u" in s.equation:
+            assert s.kind == "projection", (s.kind, s.equation)
+            assert "u — единичный вектор" in s.text["ru"] and "u is the unit vector" in s.text["en"]
 
 
 def test_the_page_is_deterministic_and_carries_its_fonts(press):

@@ -28,7 +28,7 @@ import numpy as np
 
 from ..geometry import cross, perp
 from ..model import Dyad, Mechanism
-from ..units import Scale, unit_text
+from ..units import Scale, plain, unit_text
 
 Vec2 = np.ndarray
 
@@ -375,9 +375,11 @@ def velocity_plan(mech: Mechanism, kin, k: int, kl: Scale, kv: Scale,
     b.points[lower(a)] = pa_mm * d
     b.read("p" + lower(a), "p", lower(a), f"v_{a}")
     b.add_step(f"v_{a} = ω1·l_{o}{a}",
-               f"v_{a} = ω1·l_{o}{a} = {abs(cr.omega):.4g}·{cr.length:.4g} = {va:.4g} m/s; "
+               f"v_{a} = ω1·l_{o}{a} = {plain(abs(cr.omega), 4)}·{plain(cr.length, 4)} = "
+               f"{plain(va, 4)} m/s; "
                f"p{lower(a)} = v_{a}/Kv = {pa_mm:.2f} mm, ⟂ {o}{a} in the sense of ω1.",
-               f"v_{a} = ω1·l_{o}{a} = {abs(cr.omega):.4g}·{cr.length:.4g} = {va:.4g} м/с; "
+               f"v_{a} = ω1·l_{o}{a} = {plain(abs(cr.omega), 4)}·{plain(cr.length, 4)} = "
+               f"{plain(va, 4)} м/с; "
                f"p{lower(a)} = v_{a}/Kv = {pa_mm:.2f} мм, ⟂ {o}{a} в сторону ω1.",
                [b.segment("p" + lower(a), "p", lower(a), "absolute")], ("p" + lower(a),))
     rates[cr.link] = cr.omega
@@ -435,7 +437,7 @@ def _result(b: _Builder, eq: str, segments) -> None:
         elements.append(b.segment(name, frm, to, role))
         names.append(name)
         value = 0.0 if abs(rd.mm) < ZERO_MM else rd.value  # round-off written as 0
-        said = f"{quantity} = {name}·{rd.scale} = {value:.4g}"
+        said = f"{quantity} = {name}·{rd.scale} = {plain(value, 4)}"
         en.append(f"{name} = {rd.mm:.2f} mm → {said} {rd.unit}")
         ru.append(f"{name} = {rd.mm:.2f} мм → {said} {unit_text(rd.unit, 'ru')}")
     b.add_step(eq, "; ".join(en) + ".", "; ".join(ru) + ".", elements, tuple(names))
@@ -626,9 +628,11 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
     b.points[key(a)] = length * unit_vector(P[o] - P[a])
     b.read("π" + key(a), "π", key(a), f"a_{a}")
     b.add_step(f"a_{a} = ω1²·l_{o}{a}",
-               f"a_{a} = ω1²·l_{o}{a} = {W[cr.link] ** 2:.4g}·{cr.length:.4g} = {aa:.4g} m/s²; "
+               f"a_{a} = ω1²·l_{o}{a} = {plain(W[cr.link] ** 2, 4)}·{plain(cr.length, 4)} = "
+               f"{plain(aa, 4)} m/s²; "
                f"π{key(a)} = a_{a}/Ka = {length:.2f} mm, from {a} toward {o} (ε1 = 0).",
-               f"a_{a} = ω1²·l_{o}{a} = {W[cr.link] ** 2:.4g}·{cr.length:.4g} = {aa:.4g} м/с²; "
+               f"a_{a} = ω1²·l_{o}{a} = {plain(W[cr.link] ** 2, 4)}·{plain(cr.length, 4)} = "
+               f"{plain(aa, 4)} м/с²; "
                f"π{key(a)} = a_{a}/Ka = {length:.2f} мм, от {a} к {o} (ε1 = 0).",
                [b.segment("π" + key(a), "π", key(a), "absolute")], ("π" + key(a),))
     eps[cr.link] = 0.0
@@ -642,11 +646,14 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         vec = unit_vector(P[base] - P[tip]) * (W[link] ** 2 * l_m / ka.per_mm)
         an = _written(W[link] ** 2 * l_m, vec)
         _lay(b, name, frm, vec, "normal", f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {an:.4g} m/s², ∥ {tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {an:.4g} м/с², ∥ {tip}{base}")
+             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {plain(an, 4)} m/s², ∥ {tip}{base}",
+             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {plain(an, 4)} м/с², ∥ {tip}{base}")
         return name
 
-    def coriolis_from(frm: str, name: str, omega_k: float, v_r: float, u: Vec2, sign=1.0) -> str:
+    def coriolis_from(frm: str, name: str, omega_k: float, v_r: float, u: Vec2, link: str,
+                      rel: str, sign=1.0) -> str:
+        """Lay the Coriolis acceleration ``aᵏ = 2·ω_link·v_rel``: the relative velocity
+        ``rel`` turned by 90° in the sense of ω of the guiding ``link``."""
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
@@ -655,12 +662,22 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         w = omega_k if abs(omega_k) > 1e-12 * abs(cr.omega) else 0.0
         vr = abs(v_r) if abs(v_r) > 1e-12 * abs(cr.omega) * cr.length else 0.0
         ak = _written(abs(2 * omega_k * v_r), vec)
-        return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω·v_r",
-                    f"Coriolis aᵏ = 2·{w:.4g}·{vr:.4g} = {ak:.4g} "
-                    "m/s², the relative velocity turned 90° in the sense of ω",
-                    f"Кориолисово aᵏ = 2·{w:.4g}·{vr:.4g} = "
-                    f"{ak:.4g} м/с², относительная скорость, повёрнутая на 90° "
-                    "по ω")
+        sense = ("counter-clockwise", "против часовой стрелки") if w > 0 else (
+            "clockwise", "по часовой стрелке")
+        what = f"aᵏ = 2·|ω{link}|·{rel} = 2·{plain(abs(w), 4)}·{plain(vr, 4)} = {plain(ak, 4)}"
+        if w == 0:
+            return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
+                        f"Coriolis acceleration {what} m/s²: ω{link} = 0, no Coriolis "
+                        "acceleration in this position",
+                        f"Ускорение Кориолиса {what} м/с²: ω{link} = 0, ускорения Кориолиса "
+                        "в этом положении нет")
+        return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
+                    f"Coriolis acceleration {what} m/s² (ω{link} {sense[0]}); its direction: "
+                    f"the relative velocity {rel} turned by 90° in the sense of ω{link}, "
+                    f"i.e. {sense[0]}",
+                    f"Ускорение Кориолиса {what} м/с² (ω{link} {sense[1]}); направление — "
+                    f"правило: вектор относительной скорости {rel}, повёрнутый на 90° в "
+                    f"сторону вращения ω{link}, то есть {sense[1]}")
 
     S = vplan.sliding
     for dy in mech.dyads:
@@ -687,7 +704,8 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             u = _guide_dir(kin, k, sk)
             n1 = normal(pa, B, A, i, dy.lengths[0])
             bk = _coincident(b, img, g.link, B, P, rate_map)
-            kk = coriolis_from(bk, f"k_{B}{j}{g.link}", W[g.link], S[sk], u)
+            kk = coriolis_from(bk, f"k_{B}{j}{g.link}", W[g.link], S[sk], u, g.link,
+                               f"v_{B}{j}{B}{g.link}")
             eq = f"a_{B} = a_{A} + aⁿ_{B}{A} + aτ_{B}{A} = a_{B}{g.link} + aᵏ + aʳ"
             _close_two_lines(b, eq, pb, b.points[n1], perp(P[B] - P[A]), f"⟂{A}{B} through {n1}",
                              b.points[kk], u, f"∥ guide through {kk}")
@@ -707,7 +725,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             u = _guide_dir(kin, k, sk)
             a3 = pa + j
             n1 = normal(pc, A, C, j, length_m(C, A))
-            kk = coriolis_from(pa, f"k_{A}{j}", W[j], S[sk], u, sign=-1.0)
+            kk = coriolis_from(pa, f"k_{A}{j}", W[j], S[sk], u, j, f"v_{A}{A}{j}", sign=-1.0)
             eq = f"a_{A}{j} = a_{C} + aⁿ_{A}{C} + aτ_{A}{C} = a_{A} + aᵏ_{A}{j}{A} + aʳ_{A}{j}{A}"
             _close_two_lines(b, eq, a3, b.points[n1], perp(P[A] - P[C]), f"⟂{C}{A} through {n1}",
                              b.points[kk], u, f"∥ slot through {kk}")
@@ -726,8 +744,10 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             u1, u2 = _guide_dir(kin, k, k1), _guide_dir(kin, k, k2)
             b1 = _coincident(b, img, g1.link, B, P, rate_map)
             b2 = _coincident(b, img, g2.link, B, P, rate_map)
-            c1 = coriolis_from(b1, f"k_{B}{i}{g1.link}", W[g1.link], S[k1], u1)
-            c2 = coriolis_from(b2, f"k_{B}{j}{g2.link}", W[g2.link], S[k2], u2)
+            c1 = coriolis_from(b1, f"k_{B}{i}{g1.link}", W[g1.link], S[k1], u1, g1.link,
+                               f"v_{B}{i}{B}{g1.link}")
+            c2 = coriolis_from(b2, f"k_{B}{j}{g2.link}", W[g2.link], S[k2], u2, g2.link,
+                               f"v_{B}{j}{B}{g2.link}")
             eq = f"a_{B} = a_{B}{g1.link} + aᵏ1 + aʳ1 = a_{B}{g2.link} + aᵏ2 + aʳ2"
             _close_two_lines(b, eq, pb, b.points[c1], u1, f"∥ guide of {i} through {c1}",
                              b.points[c2], u2, f"∥ guide of {j} through {c2}")
@@ -748,8 +768,9 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             kj, ki = f"{j}/{g.link}", f"{i}/{j}"
             u, w = _guide_dir(kin, k, kj), _guide_dir(kin, k, ki)
             ak = _coincident(b, img, g.link, A, P, rate_map)
-            cs = coriolis_from(ak, f"k_{A}{j}{g.link}", W[g.link], S[kj], u)
-            cr_ = coriolis_from(pa, f"k_{A}{i}{j}", W[j], S[ki], w, sign=-1.0)
+            cs = coriolis_from(ak, f"k_{A}{j}{g.link}", W[g.link], S[kj], u, g.link,
+                               f"v_{A}{j}{A}{g.link}")
+            cr_ = coriolis_from(pa, f"k_{A}{i}{j}", W[j], S[ki], w, j, f"v_{A}{A}{j}", sign=-1.0)
             aj = pa + j
             eq = f"a_{A} = a_{A}{g.link} + aᵏ + aʳ_{A}{j}{A}{g.link} + aᵏ + aʳ_{A}{A}{j}"
             _close_two_lines(b, eq, aj, b.points[cs], u, f"∥ guide through {cs}",

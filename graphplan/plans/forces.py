@@ -60,7 +60,7 @@ from ..errors import SingularPoseError
 from ..forces import Forces, Loads, dyad_pairs, reaction_name
 from ..geometry import cross, perp
 from ..model import Mechanism
-from ..units import Scale, fit_scale
+from ..units import Scale, fit_scale, plain
 from .constructions import (
     EXACT,
     Element,
@@ -253,8 +253,8 @@ class _Draw:
         self.read(q, frm, to)
         if poly:
             self.poly.append((q, frm, to))
-        self.step(q, f"Lay {q} = {mag:.6g} N: {frm}{to} = {q}/Kp = {mm:.2f} mm, ∥ {q}.",
-                  f"Откладываем {q} = {mag:.6g} Н: {frm}{to} = {q}/Kp = {mm:.2f} мм, ∥ {q}.",
+        self.step(q, f"Lay {q} = {plain(mag, 6)} N: {frm}{to} = {q}/Kp = {mm:.2f} mm, ∥ {q}.",
+                  f"Откладываем {q} = {plain(mag, 6)} Н: {frm}{to} = {q}/Kp = {mm:.2f} мм, ∥ {q}.",
                   [self.seg(q, frm, to, role)], (q,))
         return to
 
@@ -280,12 +280,12 @@ class _Draw:
             self.arms[f"h_{f.name}@{cname}"] = h
             total += s * mag * h
             sym.append(f"{_sgn(s)} {f.name}·h_{f.name}")
-            num.append(f"{_sgn(s)} {mag:.6g}·{h:.2f}")
+            num.append(f"{_sgn(s)} {plain(mag, 6)}·{h:.2f}")
         for name, m in couples:
             if m != 0:
                 total += m / self.kl.per_mm
                 sym.append(f"{_sgn(m)} {name}/Kl")
-                num.append(f"{_sgn(m)} {abs(m):.6g}/{self.kl.per_mm:g}")
+                num.append(f"{_sgn(m)} {plain(abs(m), 6)}/{plain(self.kl.per_mm, 6)}")
         return total, sym, num
 
     def tangential(self, q, link, cname, c, x, e, arm_name, forces, couples) -> Vec2:
@@ -304,7 +304,7 @@ class _Draw:
         self.equations.append(eq)
         # the text writes round-off of the moments (a dead centre: 1e-13 N) as 0
         shown = 0.0 if abs(tau) <= 1e-12 * self.big else tau
-        nums = " ".join([f"{q}·{h:.2f}", *num, f"= 0 → {q} = {shown:.6g}"])
+        nums = " ".join([f"{q}·{h:.2f}", *num, f"= 0 → {q} = {plain(shown, 6)}"])
         none = none_ru = ""
         if not sym:
             none = f" (no known load of link {link} has a moment about {cname})"
@@ -334,9 +334,9 @@ class _Draw:
         else:
             x = None
             en = (f"{eq}: {q} = 0, so its point of application is undefined (x = M/N); the "
-                  f"same equation gives the pure couple of the pair M = {couple:.6g} N·m")
+                  f"same equation gives the pure couple of the pair M = {plain(couple, 6)} N·m")
             ru = (f"{eq}: {q} = 0, точка приложения не определена (x = M/N); то же уравнение "
-                  f"даёт момент пары M = {couple:.6g} Н·м")
+                  f"даёт момент пары M = {plain(couple, 6)} Н·м")
         tail = f"; {' '.join(num)}." if num else "."
         self.step(eq, en + tail, ru + tail)
         return couple, x
@@ -370,10 +370,12 @@ class _Draw:
             out[q] = self.read(q, a, b)
             r = self.readings[q]
             els.append(self.seg(q, a, b, "reaction"))
-            en.append(f"{q} = {a}{b} = {r.mm:.2f} mm → {q} = {r.mm:.2f}·{self.kp.per_mm:g} = "
-                      f"{r.value:.6g} N")
-            ru.append(f"{q} = {a}{b} = {r.mm:.2f} мм → {q} = {r.mm:.2f}·{self.kp.per_mm:g} = "
-                      f"{r.value:.6g} Н")
+            en.append(f"{q} = {a}{b} = {r.mm:.2f} mm → {q} = {r.mm:.2f}"
+                      f"·{plain(self.kp.per_mm, 6)} = "
+                      f"{plain(r.value, 6)} N")
+            ru.append(f"{q} = {a}{b} = {r.mm:.2f} мм → {q} = {r.mm:.2f}"
+                      f"·{plain(self.kp.per_mm, 6)} = "
+                      f"{plain(r.value, 6)} Н")
         self.step(eq, "; ".join(en) + ".", "; ".join(ru) + ".", els, tuple(out))
         return out
 
@@ -527,9 +529,15 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
         along = -sum((float(np.dot(f.vec, u)) for f in Fi), 0.0) + 0.0
         rn = along * u
         b.step(f"Rn{n0[1:]} + ΣF{i}·u = 0",
-               f"Block {i} along the slot (R{j}{i} ⟂ slot): Rn{n0[1:]} = −ΣF{i}·u = {along:.6g} N.",
-               f"Камень {i} вдоль кулисы (R{j}{i} ⟂ кулисе): Rn{n0[1:]} = −ΣF{i}·u = "
-               f"{along:.6g} Н.")
+               f"The forces on block {i} projected on the slot, where u is the unit vector "
+               f"along the slot; R{j}{i} ⟂ slot (no friction) has no projection, "
+               f"Rn{n0[1:]} is the component of R{n0[1:]} along u and ΣF{i}·u the sum of the "
+               f"projections of the known forces on block {i}: Rn{n0[1:]} = −ΣF{i}·u = "
+               f"{plain(along, 6)} N.",
+               f"Проекция сил, действующих на камень {i}, на направление кулисы, где u — "
+               f"единичный вектор вдоль кулисы; R{j}{i} ⟂ кулисе (трения нет) проекции не "
+               f"даёт, Rn{n0[1:]} — составляющая R{n0[1:]} вдоль u, ΣF{i}·u — сумма проекций "
+               f"известных сил камня {i}: Rn{n0[1:]} = −ΣF{i}·u = {plain(along, 6)} Н.")
         extra = [_F(f"Rn{n0[1:]}", rn, P[A])] if along else []
         t1 = b.tangential(f"Rτ{n0[1:]}", f"{i}+{j}", C, P[C], P[A], e1, f"h_Rτ{n0[1:]}",
                           Fi + Fj + extra, Mi + Mj)
@@ -619,7 +627,9 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
         mb += 0.0
         eq = " ".join([f"ΣM_{cr.pivot}(link {cr.link}): Mур/Kl", *sym, "= 0"])
         b.equations.append(eq)
-        nums = " ".join([f"Mур/{kl.per_mm:g}", *num, f"= 0 → Mур = {mb:.6g}"])
+        # round-off of the moments (a dead centre: 1e-13 N·m) is written 0
+        shown = 0.0 if abs(mb) <= 1e-12 * max(big, 1.0) * cr.length else mb
+        nums = " ".join([f"Mур/{plain(kl.per_mm, 6)}", *num, f"= 0 → Mур = {plain(shown, 6)}"])
         b.step(eq, f"{eq}; {nums} N·m (CCW positive).",
                f"{eq}; {nums} Н·м (против часовой стрелки — плюс).")
         e = b.chain("a", fs)

@@ -65,7 +65,7 @@ from ..forces import Loads, compute_loads, power_balance_moment
 from ..geometry import cross, perp
 from ..kinematics import Kinematics
 from ..model import Mechanism
-from ..units import Scale, fit_scale
+from ..units import Scale, fit_scale, plain
 from .constructions import (
     EXACT,
     Element,
@@ -336,11 +336,13 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
         applied.append((f"F'{m.name}", m.name, m.link, m.kind, a, A, -fb))
         applied.append((f"F''{m.name}", m.name, m.link, m.kind, b, B, fb))
         step(f"{m.name} = ±F·l_{pa_}{pb_}",
-             f"Couple {m.name} = {M:.4g} N·m on link {m.link}: two forces "
-             f"{m.name}/l_{pa_}{pb_} = {abs(M):.4g}/{l_ab:.4g} = {abs(M) / l_ab:.4g} N "
+             f"Couple {m.name} = {plain(M, 4)} N·m on link {m.link}: two forces "
+             f"{m.name}/l_{pa_}{pb_} = {plain(abs(M), 4)}/{plain(l_ab, 4)} = "
+             f"{plain(abs(M) / l_ab, 4)} N "
              f"⟂ {pa_}{pb_} at {pa_} and {pb_}.",
-             f"Момент {m.name} = {M:.4g} Н·м на звене {m.link}: пара сил "
-             f"{m.name}/l_{pa_}{pb_} = {abs(M):.4g}/{l_ab:.4g} = {abs(M) / l_ab:.4g} Н "
+             f"Момент {m.name} = {plain(M, 4)} Н·м на звене {m.link}: пара сил "
+             f"{m.name}/l_{pa_}{pb_} = {plain(abs(M), 4)}/{plain(l_ab, 4)} = "
+             f"{plain(abs(M) / l_ab, 4)} Н "
              f"⟂ {pa_}{pb_} в точках {pa_} и {pb_}.", [])
 
     biggest = max((float(np.hypot(*F)) for *_, F in applied), default=0.0)
@@ -374,10 +376,10 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
         e = F / mag
         foot = x - float(np.dot(x, e)) * e
         step(f"M_p({name}) = ±{name}·h_{name}",
-             f"Force {name} = {mag:.4g} N {how}; arm h_{name} = {h:.2f} mm, "
-             f"M_p = {moment:+.5g} N·mm.",
-             f"Сила {name} = {mag:.4g} Н {how_ru}; плечо h_{name} = {h:.2f} мм, "
-             f"M_p = {moment:+.5g} Н·мм.",
+             f"Force {name} = {plain(mag, 4)} N {how}; arm h_{name} = {h:.2f} mm, "
+             f"M_p = {plain(moment, 5, sign=True)} N·mm.",
+             f"Сила {name} = {plain(mag, 4)} Н {how_ru}; плечо h_{name} = {h:.2f} мм, "
+             f"M_p = {plain(moment, 5, sign=True)} Н·мм.",
              [Element("segment", name, as_xy(x), as_xy(x + F / kf.per_mm), "force"),
               Element("segment", f"h_{name}", (0.0, 0.0), as_xy(foot), "arm")], (rd.name,))
 
@@ -391,12 +393,15 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
     t_s = 0.0 if abs(total) <= 1e-12 * size else total
     f_s, m_s = abs(t_s) / pa.mm, cr.sense * mu * t_s
     step("Σ M_p = 0: F_ур·pa + Σ M_p(F_i) = 0",
-         f"Σ M_p(F_i) = {t_s:+.5g} N·mm; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
-         f"{f_s:.5g} N at {pin}' ⟂ p{pin}'; "
-         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} N·m (CCW positive).",
-         f"Σ M_p(F_i) = {t_s:+.5g} Н·мм; F_ур = |Σ M_p|/pa = {abs(t_s):.5g}/{pa.mm:.2f} = "
-         f"{f_s:.5g} Н в точке {pin}' ⟂ p{pin}'; "
-         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {m_s:+.5g} Н·м (против часовой — плюс).",
+         f"Σ M_p(F_i) = {plain(t_s, 5, sign=True)} N·mm; F_ур = |Σ M_p|/pa = "
+         f"{plain(abs(t_s), 5)}/{pa.mm:.2f} = "
+         f"{plain(f_s, 5)} N at {pin}' ⟂ p{pin}'; "
+         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {plain(m_s, 5, sign=True)} N·m (CCW positive).",
+         f"Σ M_p(F_i) = {plain(t_s, 5, sign=True)} Н·мм; F_ур = |Σ M_p|/pa = "
+         f"{plain(abs(t_s), 5)}/{pa.mm:.2f} = "
+         f"{plain(f_s, 5)} Н в точке {pin}' ⟂ p{pin}'; "
+         f"M_ур(Ж) = F_ур·l_{cr.pivot}{cr.pin} = {plain(m_s, 5, sign=True)} Н·м (против "
+         f"часовой — плюс).",
          [Element("segment", "F_ур", as_xy(a_t), as_xy(a_t + fvec / kf.per_mm), "force")])
     power = float(power_balance_moment(mech, kin, loads)[k])
     return Lever(plan.label, k, plan, turned, tuple(forces), tuple(steps), readings, total, mu,

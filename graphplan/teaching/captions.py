@@ -9,6 +9,7 @@ write in a calculation (``18260000 N·mm``, not ``1.826·10^7``).
 from __future__ import annotations
 
 import math
+import re
 
 from ..plans import ZERO_MM
 from ..units import UNITS_RU, plain, unit_text
@@ -55,7 +56,8 @@ KIND_TITLES = {
     "en": {
         "pole": "The pole", "lay": "Lay off a known vector", "intersect": "Draw the two lines "
         "of the equation", "read": "Measure the result", "similar": "Theorem of similarity",
-        "point": "A coincident point", "moment": "Equation of moments", "couple":
+        "point": "A coincident point", "moment": "Equation of moments",
+        "projection": "Projection on the slot", "couple":
         "Point of application", "turn": "Turn the velocity plan", "force": "Apply a force",
         "balance": "Balancing force", "couple_pair": "A couple as two forces",
         "diagram": "Diagram", "integrate": "Graphical integration", "tangent": "Tangent",
@@ -64,7 +66,8 @@ KIND_TITLES = {
     "ru": {
         "pole": "Полюс", "lay": "Откладываем известный вектор", "intersect": "Проводим две "
         "линии уравнения", "read": "Измеряем результат", "similar": "Теорема подобия",
-        "point": "Совпадающая точка", "moment": "Уравнение моментов", "couple":
+        "point": "Совпадающая точка", "moment": "Уравнение моментов",
+        "projection": "Уравнение проекций на направление кулисы", "couple":
         "Точка приложения", "turn": "Поворачиваем план скоростей", "force": "Прикладываем силу",
         "balance": "Уравновешивающая сила", "couple_pair": "Момент — пара сил",
         "diagram": "Диаграмма", "integrate": "Графическое интегрирование",
@@ -94,8 +97,15 @@ def localise(text: str, lang: str) -> str:
     return text
 
 
+_POWER = re.compile(r"([-−]?\d+(?:\.\d+)?)·10\^(-?\d+)")
+
+
 def scale_text(text: str, lang: str) -> str:
-    """A scale as written on a sheet of ``lang``: ``Kv = 0.01 (м/с)/мм``."""
+    """A scale as written on a sheet of ``lang``: ``Kv = 0.01 (м/с)/мм``; a value the
+    scale's basis writes with a power of ten is written out (``1.3483·10^5`` → ``134830``:
+    a lesson writes no exponent)."""
+    text = _POWER.sub(lambda m: plain(float(m[1].replace("−", "-")) * 10.0 ** int(m[2]),
+                                      max(1, len(m[1].replace(".", "").lstrip("-−0")))), text)
     if lang != "ru":
         return text
     for en, ru in _RU_UNITS:

@@ -251,8 +251,8 @@ def _plan_step(number, panel, fp: ForcePlan, s: Step, labelled: set[str]) -> Les
         rest = s.equation.split("=")[0]
         for t in (x.strip() for x in rest.split("+")):
             terms.append(Term(t, dirs[t], None) if t in dirs else Term(t, "✓", "✓"))
-    else:
-        kind = "moment"
+    else:  # a projection on a guide (·u), else an equation of moments
+        kind = "projection" if "·u" in s.equation else "moment"
     return LessonStep(number, panel, kind, s.equation, {"en": s.text, "ru": s.text_ru},
                       tuple(terms), tuple(results), tuple(marks))
 

@@ -185,8 +185,9 @@ def _laid_term(mech, plan: Plan, step: Step, r: Result) -> Term:
     elif q.startswith("aⁿ"):
         tip, base = _POINT.findall(q.split("_", 1)[1])[:2]
         direction = f"∥ {tip}{base}: {tip} → {base}"
-    elif q.startswith("aᵏ"):
-        direction = "v_r ↻ 90°, ω"
+    elif q.startswith("aᵏ"):  # aᵏ_X = 2·ω3·v_AA3: the relative velocity turned as ω3 turns
+        m = re.search(r"2·ω(\w+)·(v_\w+)", step.equation)
+        direction = f"{m[2]} ↻ 90° ω{m[1]}" if m else "v_r ↻ 90°, ω"
     else:
         direction = f"∥ {cr.pin}{cr.pivot}: {cr.pin} → {cr.pivot}"
     return Term(q, direction, f"{expr} = {num(shown(r))} {r.unit}")
