@@ -17,8 +17,6 @@
 import sys
 from pathlib import Path
 
-from graphplan.teaching.context import context
-
 from graphplan.dynamics import dynamic_model, flywheel, simulate
 from graphplan.files import bundled_example
 from graphplan.model import load
@@ -106,7 +104,7 @@ show(ap)
 
 # %%
 kw = a.kin.labels.index("(2)")
-forces = context(a).forces
+forces = a.forces  # the project solves every stage once (solve_project)
 print(f"Mур at (2), exact kinetostatics: {forces.M_bal[kw]:.1f} N·m")
 fl = lesson(a, "forces", "(2)")
 for r in fl.results:
