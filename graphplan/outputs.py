@@ -110,6 +110,9 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
     mech = load(variant)
     if page:  # the format decides the scales: the sheet, tables and JSON must agree
         drawing = {**mech.settings.get("drawing", {}), "format": page}
+        if page != mech.settings.get("drawing", {}).get("format", "A1"):
+            # scales the variant fixed were chosen for its own format, not this one
+            drawing = {k: v for k, v in drawing.items() if k not in ("Kl", "Kv", "Ka")}
         mech = replace(mech, settings={**mech.settings, "drawing": drawing})
     lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
     analysis = analyze(mech)

@@ -233,12 +233,24 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
         kl_m = kl.per_mm
     acc = acceleration_positions(mech, kin, cycle, forces)
     # an acceleration plan is built on its position's velocity plan: that one is drawn too
-    which = tuple(sorted(set(plan_positions(mech, kin)) | set(acc)))
-    shape, longest = _plan_shapes(mech, kin, kl, which, acc)
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
-    layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape, longest,
-                           len(mech.dyads))
+    # the velocity plans of every position; on a smaller format, as many as fit: every
+    # second position, then the acceleration plans' positions only (drawing.positions, when
+    # the variant gives it, is drawn as given)
+    given = positions_by_label(mech, kin, "drawing")
+    tries = [plan_positions(mech, kin)] if given is not None else [
+        tuple(range(kin.n)), tuple(range(0, kin.n, 2)), ()]
+    for n_try, chosen in enumerate(tries):
+        which = tuple(sorted(set(chosen) | set(acc)))
+        shape, longest = _plan_shapes(mech, kin, kl, which, acc)
+        try:
+            layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape,
+                                   longest, len(mech.dyads))
+            break
+        except LayoutError:
+            if n_try == len(tries) - 1:
+                raise
     va = abs(cr.omega) * cr.length
     aa = cr.omega**2 * cr.length
 
