@@ -189,7 +189,8 @@ def test_sheets_on_a2(capsys, tmp_path):
 def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
     code, out, err = run(capsys, "sheets", "--page", "A3", "-o", str(tmp_path))
     assert code == 2 and out == ""
-    assert "choose a smaller Kl (drawing.Kl) or a larger format" in err
+    # the press's own Kl is not forced on A3 (issue 18): it is sheet 2 that does not fit
+    assert "choose fewer positions (kinetostatics.positions) or a larger format" in err
     assert err.count("\n") == 1
     assert not (tmp_path / "sheet1.svg").exists()
 
