@@ -1036,3 +1036,35 @@ def test_guide_toward_a_point_at_its_own_through():
     assert_one_line(msg)
     assert msg.startswith(f"{SRC}: dyad RRP(2-3): "), msg
     assert "toward G is undefined" in msg and "None" not in msg, msg
+
+
+def test_a_group_attached_to_the_frame_only_is_refused():
+    """Found by the loader's fuzz test: an RPR whose outer joints are both frame points
+    crashed the kinematics with a bare ValueError (it cannot move: a truss, not a group)."""
+    import graphplan as g
+
+    doc = """
+[frame]
+link = "4"
+points = { O = [0.0, 0.0], C = [0.25, 0.0] }
+[crank]
+link = "1"
+joints = ["O", "A"]
+length = 0.1
+rpm = 30
+[[dyads]]
+kind = "RRR"
+links = ["2", "3"]
+joints = ["A", "B", "C"]
+lengths = [0.2, 0.15]
+[[dyads]]
+kind = "RPR"
+links = ["5", "6"]
+joints = ["C", "O"]
+offset = 0.01
+[output]
+link = "6"
+"""
+    with pytest.raises(g.InputError, match=r"x\.toml: dyads\[1\]\.joints: the group is "
+                                         r"attached to the frame only \(joints C, O"):
+        g.loads(doc, source="x.toml")

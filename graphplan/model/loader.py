@@ -469,6 +469,12 @@ def _build(data: dict, r: _Reader) -> Mechanism:
                 raise r.fail(f"{path}.slot_angle",
                              "the slot must not be parallel to the guide (got "
                              f"{dt.get('slot_angle', 90.0)!r}°)")
+        outer = [joints[m] for m in range(len(joints)) if m not in new_idx]
+        if (outer and all(known_points.get(p) == frame_link for p in outer)
+                and all(g.link == frame_link for g in guides)):
+            raise r.fail(f"{path}.joints", "the group is attached to the frame only (joints "
+                         f"{', '.join(outer)} are frame points): it cannot move — attach it "
+                         "to a moving link's point")
         dyad = Dyad(kind, (li, lj), joints, lengths, guides, offset, slot_angle, branch)
         dyads.append(dyad)
         for p in dyad.new_points:
