@@ -544,7 +544,8 @@ def test_the_json_does_not_depend_on_a_sheet_layout(capsys, tmp_path):
     c, out, err = run(capsys, "analyze", "--json", str(p))
     assert c == 0, err
     data = json.loads(out)
-    assert len(data["positions"]) == 50 and "scales_note" in data["mechanism"]
+    assert len(data["positions"]) == 50  # scales of sheet 1, or of a sample (scales_note)
+    assert {"Kl", "Kv", "Ka"} <= set(data["mechanism"]["scales"])
 
 
 # --- safe text -------------------------------------------------------------------------------
