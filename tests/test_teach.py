@@ -112,6 +112,40 @@ def test_kinematic_captions_quote_the_exact_velocities_and_accelerations(path, a
     assert checked["velocity"] >= 2 * kin.n and checked["acceleration"] >= kin.n, checked
 
 
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_every_turning_link_gets_its_omega_and_epsilon_derived(path, analysis_of):
+    """ω and ε of every link that turns at that instant (a slotted link too: ω3 = v_A3/l_O3A,
+    ε3 = aτ_AO3/l_AO3) are derived with numbers in the velocity and acceleration lessons
+    (their values are checked against the solver in the test above)."""
+    a = analysis_of(path)
+    kin = a.kin
+    for k in range(kin.n):
+        for plan, table in (("velocity", kin.vel.omega), ("acceleration", kin.acc.epsilon)):
+            les = lesson(a, plan, kin.labels[k])
+            derived = {re.match(r"[ωε](\w+) =", n["en"])[1] for s in les.steps for n in s.notes}
+            turning = {ln for ln, w in table.items() if ln != a.mech.crank.link
+                       and ln in a.mech.moving_links and abs(w[k]) > 1e-6}
+            assert turning <= derived, (plan, kin.labels[k], turning - derived)
+
+
+def test_similarity_and_normal_steps_write_their_numbers(press):
+    # press, position 2: as2 = ab·l_AS2/l_AB = 67.94·0.07/0.2 = 23.78 mm (ab of the plan,
+    # l_AS2 = 0.07 m, l_AB = 0.2 m), and aⁿ_BA = ω2²·l_BA = 1.698²·0.2 = 0.5769 m/s²
+    v = lesson(press, "velocity", "2")
+    sim = next(s for s in v.steps if s.equation.startswith("v_S2"))
+    m = re.search(r"as2 = ab·l_AS2/l_AB = ([\d.]+)·([\d.]+)/([\d.]+) = ([\d.]+) мм",
+                  sim.text["ru"])
+    assert m, sim.text["ru"]
+    ab, l_as2, l_ab, as2 = (float(x) for x in m.groups())
+    assert ab == pytest.approx(v.results[[r.segment for r in v.results].index("ab")].mm,
+                               abs=0.005)
+    assert as2 == pytest.approx(ab * l_as2 / l_ab, abs=0.01)
+    acc = lesson(press, "acceleration", "2")
+    nrm = next(s for s in acc.steps if s.equation.startswith("aⁿ_BA"))
+    m = re.search(r"= ([\d.]+)²·([\d.]+) = ([\d.]+) m/s²", nrm.text["en"])
+    assert m and float(m[3]) == pytest.approx(float(m[1]) ** 2 * float(m[2]), rel=2e-3)
+
+
 def test_press_velocity_steps_by_hand(press):
     # Position 2 of the press: ω1 = π·55/30 = 5.7596 rad/s, l_OA = 0.08 m, so
     # v_A = 0.46077 m/s and pa = v_A/Kv = 0.46077/0.005 = 92.15 mm (Kv of sheet 1).
@@ -227,7 +261,7 @@ def _quotes(text: str, value: float, rel: float) -> bool:
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_flywheel_lesson_is_sheet_3s_machine_unit(path):
+def test_flywheel_lesson_is_sheet_3s_machine_unit(path, analysis_of):
     """The flywheel lesson draws sheet 3's machine unit: every scale (Kφ, KM, H, KA, KT, KJ),
     kl, JI, Jм and the flywheel's size and mass are those of drawings/<example>/analysis.json
     (what sheet 3 and dynamics.ru.md write) and of the project's machine unit, and its

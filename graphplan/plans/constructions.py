@@ -290,6 +290,7 @@ class _Images:
         self.pos = pos_mm
         self.kl = scale_l
         self.known: dict[str, list[tuple[Vec2, str]]] = {mech.frame_link: []}
+        self.names: dict[tuple[str, str], str] = {}
         self.pole = pole
 
     def add(self, link: str, model_point: str | Vec2, plan_point: str) -> None:
@@ -297,6 +298,19 @@ class _Images:
         lst = self.known.setdefault(link, [])
         if all(np.hypot(*(xy - q)) > 1e-9 for q, _ in lst):
             lst.append((np.asarray(xy, float), plan_point))
+            if isinstance(model_point, str):
+                self.names[(link, plan_point)] = model_point
+
+    def basis(self, link: str) -> tuple[tuple[str, Vec2, str], tuple[str, Vec2, str]] | None:
+        """The two named points (model name, position mm, plan point) similarity uses."""
+        lst = self.known.get(link, [])
+        if len(lst) < 2:
+            return None
+        (G, g), (H, h) = lst[0], lst[1]
+        gn, hn = self.names.get((link, g)), self.names.get((link, h))
+        if gn is None or hn is None:
+            return None
+        return (gn, G, g), (hn, H, h)
 
     def place(self, b: _Builder, link: str, X: Vec2, rate_map) -> Vec2:
         """Plan point of the point X (position-plan mm) of ``link``."""
@@ -402,6 +416,7 @@ def _similar_points(mech, b: _Builder, img: _Images, link: str, P, rate_map, kin
         if pn in b.points or link == mech.frame_link:
             continue
         b.points[pn] = img.place(b, link, P[name], rate_map)
+        en, ru = _proportion(b, img, link, name, pn, P)  # of the images known before it
         img.add(link, name, pn)
         seg = pole + pn
         q = "v" if kind == "velocity" else "a"
@@ -409,10 +424,36 @@ def _similar_points(mech, b: _Builder, img: _Images, link: str, P, rate_map, kin
         b.add_step(
             f"{q}_{name}: similarity on link {link}",
             f"Point {pn} of link {link} by the theorem of similarity: the image of the link "
-            f"is similar to the link; {seg} = {b.readings[seg].mm:.2f} mm.",
-            f"Точка {pn} звена {link} по теореме подобия: изображение звена подобно звену; "
-            f"{seg} = {b.readings[seg].mm:.2f} мм.",
+            f"is similar to the link{en}; {seg} = {b.readings[seg].mm:.2f} mm.",
+            f"Точка {pn} звена {link} по теореме подобия: изображение звена подобно звену"
+            f"{ru}; {seg} = {b.readings[seg].mm:.2f} мм.",
             [b.segment(seg, pole, pn, "absolute")], (seg,))
+
+
+def _proportion(b: _Builder, img: _Images, link: str, name: str, pn: str, P
+                ) -> tuple[str, str]:
+    """The proportion of similarity written out, ``as2 = ab·l_AS2/l_AB = 46.08·0.1/0.2 =
+    23.04 mm``, with the angle to lay it at when X is off the line GH (en, ru)."""
+    basis = img.basis(link)
+    if basis is None:
+        return "", ""
+    (gn, G, g), (hn, H, h) = basis
+    X = np.asarray(P[name], float)
+    gh, gx = b.points[h] - b.points[g], b.points[pn] - b.points[g]
+    l_gh, l_gx = float(np.hypot(*(H - G))) * img.kl, float(np.hypot(*(X - G))) * img.kl
+    head = f"{g}{pn} = {g}{h}·l_{gn}{name}/l_{gn}{hn} = {float(np.hypot(*gh)):.2f}·" \
+           f"{plain(l_gx, 4)}/{plain(l_gh, 4)} = {float(np.hypot(*gx)):.2f}"
+    ang = math.degrees(math.atan2(cross(H - G, X - G), float(np.dot(H - G, X - G))))
+    en, ru = f": {head} mm", f": {head} мм"
+    if 0.05 < abs(ang) < 179.95:
+        turn = ("counter-clockwise", "против часовой стрелки") if ang > 0 else (
+            "clockwise", "по часовой стрелке")
+        en += f", at {abs(ang):.1f}° from {g}{h} {turn[0]} (∠({gn}{hn}, {gn}{name}) on the link)"
+        ru += f", под углом {abs(ang):.1f}° к {g}{h} {turn[1]} (∠({gn}{hn}, {gn}{name}) на звене)"
+    elif abs(ang) >= 179.95:
+        en += f", on the other side of {g}"
+        ru += f", по другую сторону от {g}"
+    return en, ru
 
 
 def _close_two_lines(b: _Builder, eq: str, new: str, p1: Vec2, d1: Vec2, n1: str,
@@ -645,9 +686,12 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         name = f"n_{tip}{base}"
         vec = unit_vector(P[base] - P[tip]) * (W[link] ** 2 * l_m / ka.per_mm)
         an = _written(W[link] ** 2 * l_m, vec)
+        w = abs(W[link]) if an else 0.0
+        said = (f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {plain(w, 4)}²·{plain(l_m, 4)} = "
+                f"{plain(an, 4)}")
         _lay(b, name, frm, vec, "normal", f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {plain(an, 4)} m/s², ∥ {tip}{base}",
-             f"aⁿ_{tip}{base} = ω{link}²·l_{tip}{base} = {plain(an, 4)} м/с², ∥ {tip}{base}")
+             f"{said} m/s², ∥ {tip}{base}, from {tip} toward {base}",
+             f"{said} м/с², ∥ {tip}{base}, от {tip} к {base}")
         return name
 
     def coriolis_from(frm: str, name: str, omega_k: float, v_r: float, u: Vec2, link: str,

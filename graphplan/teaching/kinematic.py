@@ -81,8 +81,13 @@ def _step(mech, kin, k: int, plan: Plan, step: Step) -> LessonStep:
         for e in step.elements:
             if e.role in ("relative", "tangential"):
                 note = _rate_note(mech, kin, k, plan, e.name)
-                if note:
-                    notes.append(note)
+            elif e.role == "absolute" and plan.kind == "velocity":
+                note = _pivot_note(mech, kin, k, plan, e.name)
+            else:
+                note = None
+            if note and note not in notes:
+                notes.append(note)
+        notes += _twin_notes(mech, plan, notes)
     return LessonStep(step.number, 0, kind, step.equation,
                       {"en": step.text, "ru": step.text_ru}, tuple(terms), tuple(results),
                       tuple(marks), tuple(notes))
@@ -224,6 +229,9 @@ def _rate_note(mech, kin, k: int, plan: Plan, seg: str) -> dict[str, str] | None
     links = [ln for ln in mech.moving_links
              if (hint is None or ln == hint) and p1 in mech.points_of(ln)
              and (p2 in mech.points_of(ln) or hint is not None)]
+    if not links:  # a slotted link's coincident point: τ_AO3 is of link 3, pivoted at O3
+        links = [ln for ln in mech.moving_links if ln != mech.crank.link and any(
+            q in mech.frame_points and q in mech.points_of(ln) for q in (p1, p2))]
     if len(links) != 1 or links[0] not in plan.rates:
         return None
     link = links[0]
@@ -239,6 +247,71 @@ def _rate_note(mech, kin, k: int, plan: Plan, seg: str) -> dict[str, str] | None
              "ru": "против часовой стрелки" if rate > 0 else "по часовой стрелке"}
     return {lang: f"{sym}{link} = {rd.quantity}/l_{p1}{p2} = {num(rd.value)}/{num(length)} = "
                   f"{num(abs(rate))} {unit(u, lang)}, {sense[lang]}" for lang in ("ru", "en")}
+
+
+def _twin_notes(mech, plan: Plan, notes: list[dict[str, str]]) -> list[dict[str, str]]:
+    """``ε2 = ε3 = 7.512 rad/s²`` for a link that slides along a derived one without turning
+    relative to it (a block in a slot, a slider on a rocking guide): same ω, same ε."""
+    out = []
+    sym = "ω" if plan.kind == "velocity" else "ε"
+    u = "rad/s" if plan.kind == "velocity" else "rad/s²"
+    done = {re.match(r"[ωε](\w+) =", n["en"])[1] for n in notes}
+    for n in list(notes):
+        link = re.match(r"[ωε](\w+) =", n["en"])[1]
+        rate = plan.rates.get(link)
+        for pair in plan.sliding:
+            a_, _, b_ = pair.partition("/")
+            other = b_ if a_ == link else a_ if b_ == link else None
+            if (other is None or other in done or other == mech.frame_link
+                    or other not in plan.rates or rate is None
+                    or abs(plan.rates[other] - rate) > 1e-9 * max(1.0, abs(rate))):
+                continue
+            done.add(other)
+            if abs(rate) < 1e-12:
+                out.append({lang: f"{sym}{other} = {sym}{link} = 0" for lang in ("ru", "en")})
+                continue
+            sense = {"en": "counter-clockwise" if rate > 0 else "clockwise",
+                     "ru": "против часовой стрелки" if rate > 0 else "по часовой стрелке"}
+            out.append({lang: f"{sym}{other} = {sym}{link} = {num(abs(rate))} "
+                               f"{unit(u, lang)}, {sense[lang]}" for lang in ("ru", "en")})
+    return out
+
+
+def _pivot_note(mech, kin, k: int, plan: Plan, seg: str) -> dict[str, str] | None:
+    """``ω3 = v_A3/l_O3A = 0.3317/0.4258 = 0.779 rad/s`` for the absolute velocity of a point
+    of a link turning about a frame point (a rocker, a slotted link: its point A3 coincides
+    with the block's A), where no relative segment of the step gives that ω."""
+    rd = plan.readings.get(seg)
+    if rd is None or not seg.startswith("p"):
+        return None
+    point, hint = _model_point(kin, seg[1:])
+    if point is None:
+        return None
+    if hint is None:  # a joint: the one link through it that turns about a frame point
+        links = [ln for ln in mech.moving_links if ln != mech.crank.link
+                 and point in mech.points_of(ln) and point not in mech.frame_points
+                 and any(q in mech.frame_points for q in mech.points_of(ln))]
+        if len(links) != 1:
+            return None
+        hint = links[0]
+    if hint not in plan.rates or hint == mech.crank.link:
+        return None
+    pivots = [q for q in mech.points_of(hint) if q in mech.frame_points and q != point]
+    if len(pivots) != 1:
+        return None
+    pivot = pivots[0]
+    length = float(np.hypot(*(kin.pos.points[point][k] - kin.pos.points[pivot][k])))
+    if length <= 0:
+        return None
+    rate = plan.rates[hint]
+    q = rd.quantity
+    if rd.mm < ZERO_MM:
+        return {lang: f"ω{hint} = {q}/l_{pivot}{point} = 0" for lang in ("ru", "en")}
+    sense = {"en": "counter-clockwise" if rate > 0 else "clockwise",
+             "ru": "против часовой стрелки" if rate > 0 else "по часовой стрелке"}
+    return {lang: f"ω{hint} = {q}/l_{pivot}{point} = {num(rd.value)}/{num(length)} = "
+                  f"{num(abs(rate))} {unit('rad/s', lang)}, {sense[lang]}"
+            for lang in ("ru", "en")}
 
 
 def _split_plan_segment(plan: Plan, seg: str) -> list[str] | None:
