@@ -113,6 +113,22 @@ def scale_text(text: str, lang: str) -> str:
     return text
 
 
+_GROUP = re.compile(r"([RP]{3})\((\d+)-(\d+)\)")
+
+
+def group_name(group: str, lang: str) -> str:
+    """An Assur group as the textbook of ``lang`` names it: ``RRP(2-3)`` →
+    «группа Ассура II класса 2-го порядка ВВП (звенья 2–3)» (В — вращательная пара,
+    П — поступательная), "Assur group of class II, order 2, RRP (links 2–3)"."""
+    m = _GROUP.fullmatch(group)
+    if m is None:
+        return group
+    if lang == "ru":
+        kind = m[1].replace("R", "В").replace("P", "П")
+        return f"группа Ассура II класса 2-го порядка {kind} (звенья {m[2]}–{m[3]})"
+    return f"Assur group of class II, order 2, {m[1]} (links {m[2]}–{m[3]})"
+
+
 def unit(u: str, lang: str) -> str:
     """A unit as lettered in ``lang``."""
     return unit_text(u, lang)
@@ -156,5 +172,5 @@ def result_text(r: Result, lang: str) -> str:
             f"{mm(r.mm)}·{k} = {num(r.value)} {u}")
 
 
-__all__ = ["KIND_TITLES", "UNITS_RU", "WORDS", "ZERO_MM", "localise", "mm", "num", "plain",
-           "result_text", "scale_text", "shown", "unit"]
+__all__ = ["KIND_TITLES", "UNITS_RU", "WORDS", "ZERO_MM", "group_name", "localise", "mm",
+           "num", "plain", "result_text", "scale_text", "shown", "unit"]

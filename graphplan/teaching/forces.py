@@ -24,7 +24,7 @@ import numpy as np
 
 from ..forces import reaction_name
 from ..plans import ForcePlan, Step, force_plans, position_mm, unit_vector
-from .captions import WORDS, num, shown
+from .captions import WORDS, group_name, num, shown
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
 ARROW_MM = 15.0  #: shortest arrow of a force on a scheme (direction only), mm
@@ -46,8 +46,9 @@ def forces_lesson(analysis, k: int) -> Lesson:
     known: dict = {}
     for fp in plans:
         links = _plan_links(mech, fp)
-        name = {"ru": f"группа {fp.group}" if not fp.group.startswith("crank") else
-                f"кривошип {mech.crank.link}", "en": fp.group}
+        crank = fp.group.startswith("crank")
+        name = {"ru": f"кривошип {mech.crank.link}" if crank else group_name(fp.group, "ru"),
+                "en": f"crank {mech.crank.link}" if crank else group_name(fp.group, "en")}
         scheme = len(panels)
         panels.append(Panel(f"scheme-{fp.group}", {
             "ru": f"Схема: {name['ru']}, {WORDS['ru']['position']} {label}",
