@@ -599,3 +599,57 @@ def test_embedded_fonts_keep_their_own_date():
     with TTFont(str(fonts.find_font_file(family)), lazy=True) as src:
         original = src["head"].modified
     assert TTFont(_io.BytesIO(woff))["head"].modified == original
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_try_it_asks_directions_and_senses(path, analysis_of):
+    """«Проверь себя» asks which way each derived ω and ε turns (the right option is the
+    exact solver's sense), where each normal acceleration points (from the point toward
+    the centre) and where each Coriolis acceleration points (the relative velocity turned
+    by 90° in the sense of ω); the page carries each question with its right option."""
+    from graphplan.teaching.questions import SENSES, questions
+
+    a = analysis_of(path)
+    kin = a.kin
+    asked = {"sense": 0, "normal": 0, "coriolis": 0}
+    senses = 0
+    for k in range(kin.n):
+        for plan, table in (("velocity", kin.vel.omega), ("acceleration", kin.acc.epsilon)):
+            les = lesson(a, plan, kin.labels[k])
+            page = teaching_page(les, "ru")
+            quizzes = re.findall(r'<div class="quiz try-only" data-correct="(\d)"', page)
+            n_questions = 0
+            for s in les.steps:
+                senses += sum(n["en"].endswith("clockwise") for n in s.notes)
+                for lang in ("ru", "en"):
+                    qs = questions(s, lang)
+                    for q in qs:
+                        right = q.options[q.correct]
+                        assert len(set(q.options)) == len(q.options) >= 2
+                        m = re.search(r"(ω|ε)(\d+) ", q.prompt)
+                        if right in SENSES[lang]:
+                            exact = table[m[2]][k]
+                            assert right == SENSES[lang][bool(exact > 0)], (q, exact)
+                            asked["sense"] += lang == "ru"
+                        elif "aⁿ_" in q.prompt:
+                            tip, base = re.search(r"aⁿ_([A-Z][a-z]*\d*)([A-Z]\w*)", q.prompt
+                                                  ).groups()
+                            assert right.endswith((f"от {tip} к {base}",
+                                                   f"from {tip} toward {base}")), q
+                            asked["normal"] += lang == "ru"
+                        else:
+                            assert right.endswith(("в сторону вращения ω" + s.equation.split(
+                                "·ω")[1].split("·")[0], "in the sense of ω" + s.equation.split(
+                                "·ω")[1].split("·")[0])), q
+                            asked["coriolis"] += lang == "ru"
+                    if lang == "ru":
+                        n_questions += len(qs)
+                        for q in qs:
+                            assert html.escape(q.prompt, quote=False).replace(
+                                "_", "") in page.replace("<sub>", "").replace("</sub>", "")
+            assert len(quizzes) == n_questions
+    assert asked["sense"] == senses  # every derived ω and ε with a sense is asked
+    if any(s.kind == "lay" and "aᵏ" in s.equation for k in range(kin.n)
+           for s in lesson(a, "acceleration", kin.labels[k]).steps if "ω" in s.text["en"]
+           and " = 0, no Coriolis" not in s.text["en"]):
+        assert asked["coriolis"] >= 1

@@ -32,6 +32,7 @@ from .captions import (
 )
 from .drawing import frame_svg, frame_texts
 from .model import Lesson, LessonStep
+from .questions import questions
 from .webfonts import font_face_css
 
 CSP = ("default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; "
@@ -107,6 +108,12 @@ body.try li.done .answer { display: block; }
 body.try section.done .answer { display: revert; }
 body.try li.done .ask button { display: none; }
 .hint { color: var(--muted); font-size: .85rem; }
+.quiz { margin: .5rem 0; } .quiz .prompt { margin: .2rem 0; }
+.quiz button.opt { font: inherit; margin: .15rem .3rem .15rem 0; padding: .2rem .6rem;
+  border: 1px solid #999; border-radius: 4px; background: #fff; cursor: pointer; }
+.quiz button.good { border-color: var(--good); color: var(--good); }
+.quiz button.off { border-color: var(--off); color: var(--off); }
+.verdict.good { color: var(--good); } .verdict.off { color: var(--off); }
 .nw { white-space: nowrap; }
 body:not(.try) .try-only { display: none; }
 footer { padding: 0 1rem 1rem; color: var(--muted); font-size: .85rem; }
@@ -172,6 +179,19 @@ JS = r"""
   next.addEventListener('click', function () { show(cur + 1); });
   tryBtn.addEventListener('click', function () { setTry(!body.classList.contains('try')); });
   allBtn.addEventListener('click', function () { setAll(!body.classList.contains('all')); });
+  document.querySelectorAll('.quiz').forEach(function (qz) {
+    var right = parseInt(qz.getAttribute('data-correct'), 10);
+    var verdict = qz.querySelector('.verdict');
+    qz.querySelectorAll('button.opt').forEach(function (btn) {
+      btn.addEventListener('click', function () {
+        var ok = parseInt(btn.getAttribute('data-i'), 10) === right;
+        btn.classList.add(ok ? 'good' : 'off');
+        verdict.textContent = ok ? W.right : W.wrong;
+        verdict.className = 'verdict ' + (ok ? 'good' : 'off');
+        qz.setAttribute('data-answered', ok ? 'right' : 'wrong');
+      });
+    });
+  });
   document.querySelectorAll('li.result').forEach(function (li) {
     li.querySelector('button.check').addEventListener('click', function () { check(li); });
   });
@@ -238,6 +258,18 @@ def _results_html(step: LessonStep, lang: str) -> str:
     return f'<ul class="results">{"".join(items)}</ul>'
 
 
+def _questions_html(step: LessonStep, lang: str) -> str:
+    """The step's direction and sense questions (try-it mode only)."""
+    items = []
+    for n, q in enumerate(questions(step, lang), start=1):
+        opts = "".join(f'<button type="button" class="opt" data-i="{i}">{math_html(o)}</button>'
+                       for i, o in enumerate(q.options))
+        items.append(f'<div class="quiz try-only" data-correct="{q.correct}" data-q="{n}">'
+                     f'<p class="prompt">{math_html(q.prompt)}</p>{opts}'
+                     f'<span class="verdict" aria-live="polite"></span></div>')
+    return "".join(items)
+
+
 def _step_html(lesson: Lesson, step: LessonStep, lang: str, svg: str) -> str:
     w = WORDS[lang]
     n = len(lesson.steps)
@@ -255,6 +287,7 @@ def _step_html(lesson: Lesson, step: LessonStep, lang: str, svg: str) -> str:
     if step.results:
         parts.append(f'<p class="scale">{math_html(scale_text(panel.scale, lang))}</p>')
     parts.append(_results_html(step, lang))
+    parts.append(_questions_html(step, lang))
     if step.notes:
         notes = "".join(f"<li>{nowrap_values(math_html(nt[lang]))}</li>"
                         for nt in step.notes)
@@ -282,7 +315,9 @@ def teaching_page(lesson: Lesson, lang: str = "ru") -> str:
     title = lesson.title[lang]
     scales = "".join(f"<li>{math_html(scale_text(s, lang))}</li>" for s in lesson.scales)
     words = {"yours": w["yours"], "correct": w["correct"], "deviation": w["deviation"],
-             "mm": "мм" if lang == "ru" else "mm", "enter": w["enter"]}
+             "mm": "мм" if lang == "ru" else "mm", "enter": w["enter"],
+             "right": "верно" if lang == "ru" else "right",
+             "wrong": "неверно, подумайте ещё" if lang == "ru" else "wrong, think again"}
     body = f"""<header><h1>{html.escape(title)}</h1>
 <div class="controls" role="toolbar">
 <button type="button" id="prev" accesskey="b">← {w['prev']}</button>
