@@ -364,6 +364,32 @@ def test_try_it_yourself(browser, pages):
     assert all(r["shown"] for r in browser.js(STATE)["results"])
 
 
+def test_try_it_asks_where_the_coriolis_acceleration_points(browser, pages):
+    """In the try-it mode the shaper's Coriolis step asks where aᵏ points: hidden outside
+    the mode, a wrong option is marked wrong, the right one (v_AA3 turned by 90° in the
+    sense of ω3) right."""
+    from graphplan.teaching.questions import questions
+
+    les, path, lang = pages["shaper"]
+    k = next(i for i, s in enumerate(les.steps) if s.equation.startswith("aᵏ"))
+    q = next(q for q in questions(les.steps[k], lang) if "Coriolis" in q.prompt)
+    browser.open(path)
+    for _ in range(k):
+        browser.key("ArrowRight", "ArrowRight", 39)
+    quiz = "document.querySelector('section.step.current .quiz')"
+    assert browser.js(f"getComputedStyle({quiz}).display") == "none"  # not outside the mode
+    browser.key("t", "KeyT", 84, "t")
+    assert browser.js(f"getComputedStyle({quiz}).display") != "none"
+    assert "Coriolis" in browser.js(f"{quiz}.querySelector('.prompt').innerText")
+    wrong = (q.correct + 1) % len(q.options)
+    browser.js(f"{quiz}.querySelectorAll('button.opt')[{wrong}].click()")
+    assert browser.js(f"{quiz}.getAttribute('data-answered')") == "wrong"
+    browser.js(f"{quiz}.querySelectorAll('button.opt')[{q.correct}].click()")
+    assert browser.js(f"{quiz}.getAttribute('data-answered')") == "right"
+    right = browser.js(f"{quiz}.querySelectorAll('button.opt')[{q.correct}].innerText")
+    assert "in the sense of ω3" in right and "v" in right
+
+
 def test_print_view_shows_every_step(browser, pages):
     les, path, _ = pages["forces"]
     browser.open(path)
