@@ -9,6 +9,7 @@ import re
 import zipfile
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 docx = pytest.importorskip("docx", reason="the note extra (python-docx) is not installed")
@@ -16,7 +17,7 @@ docx = pytest.importorskip("docx", reason="the note extra (python-docx) is not i
 from graphplan.checking.generate import generate  # noqa: E402
 from graphplan.cli import main  # noqa: E402
 from graphplan.note import build_note, find_office, note_docx  # noqa: E402
-from graphplan.note.blocks import Formula  # noqa: E402
+from graphplan.note.blocks import Formula, Heading  # noqa: E402
 from graphplan.note.docx_writer import FORMULA_STYLE  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -218,3 +219,44 @@ def test_the_note_renders_in_libreoffice(press):
     assert round(float(box.height) * 25.4 / 72) == 297
     text = pdf.pages[1].extract_text()
     assert "Содержание" in text
+
+
+def _number(text: str) -> float:
+    return float(text.replace(" ", "").replace(",", "."))
+
+
+def test_every_figure_of_the_json_report_stands_in_the_note_with_its_value(press):
+    """Per position: the speeds and accelerations of the points, the reactions and Mур of
+    analysis.json are the results the note writes (to the note's written digits: 5
+    significant figures; readings at 0,01 mm where a figure is read off a plan)."""
+    from graphplan.model import load
+    from graphplan.project import analyze
+
+    note, _ = press
+    report = analyze(load(ROOT / "examples" / "press.toml")).to_json()
+    results: dict[tuple[str, str], float] = {}
+    label = None
+    for b in note.blocks:
+        if isinstance(b, Heading) and b.position is not None:
+            label = b.position
+        if isinstance(b, Formula) and b.checkable and label is not None:
+            name = b.text.split("=", 1)[0].strip()
+            m = re.search(r"=\s*(-?[\d ]+(?:,\d+)?)\s*\S*$", b.text)
+            if m:
+                results[(label, name)] = _number(m.group(1))
+    compared = 0
+    for pos in report["positions"]:
+        lab = pos["label"]
+        pairs = [(f"v{p}", float(np.hypot(*v))) for p, v in pos["velocities"].items()]
+        pairs += [(f"a{p}", float(np.hypot(*a))) for p, a in pos["accelerations"].items()]
+        pairs += [(n, r["magnitude"]) for n, r in pos["forces"]["reactions"].items()]
+        pairs.append(("Мур", pos["forces"]["M_bal"]))
+        for name, exact in pairs:
+            if (lab, name) not in results:
+                continue
+            written = results[(lab, name)]
+            big = max(abs(exact), 1.0 if name[0] in "va" else 50.0)
+            # read off a plan at 0,01 mm on a 50–120 mm vector: within 0,05 % of the largest
+            assert abs(written - exact) <= 5e-4 * big + 5e-4 * abs(exact), (lab, name)
+            compared += 1
+    assert compared >= 60  # v and a of every point, R12, R23, R43 and Мур of every position
