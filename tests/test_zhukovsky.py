@@ -14,6 +14,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import math
 import sys
@@ -157,6 +158,8 @@ def test_press_working_position_2_by_hand(example):
     M_ур = F_ур·l_OA = 198.12·0.08 = 15.850 kN·m, the seed's 15.85 kN·m (R21·h21 of the
     force plan: 424·37.39·0.001)."""
     m, cycle, kin, kl, kv = example("press")
+    # the seed's scale, not the sheet's (sheet 1 now draws the press's plans at 0.005)
+    kv = dataclasses.replace(kv, per_mm=0.01, drawn_mm=kv.value / 0.01)
     loads = compute_loads(m, kin, cycle)
     k = kin.labels.index("(2)")
     forces = solve_forces(m, kin, loads)
