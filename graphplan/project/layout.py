@@ -77,6 +77,7 @@ class Sheet1Layout:
 CELL_MARGIN = 5.0  #: room kept on each side of a plan in its cell for its letters, mm
 OVERSHOOT = 6.0  #: construction lines run this far past their intersection, mm
 VECTOR_MAX = 100.0  #: the method's longest main vector of a plan, mm
+MIN_PLAN = 4.0  #: the shortest defining vector (pa) a plan is drawn with, mm
 VECTOR_HARD = 125.0  #: the longest vector a plan may have: the method wants 50-100 mm, but one Kv
 #: for every position cannot keep a shaper's pa (at the dead centres the longest vector) at 50 mm
 #: and its idle stroke (2.3·pa) under 100 mm: the median plan is then read at 50 mm
@@ -167,7 +168,10 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
             if best is None or min(sv, sa) > best[0] + 2.0:
                 best = (min(sv, sa), vc, ac)
                 diagrams = Rect(x0, f.y1 - 4.0 - dmin_h, x0 + left_w, f.y1 - 4.0)
-    if best is None or best[0] < 15.0:
+    # a plan whose defining vector is under MIN_PLAN mm cannot be drawn; a small one (a
+    # mechanism near its toggle, whose other positions' vectors are many times pa) is
+    # drawn small rather than refused: the variant is accepted, its sheets must be drawn
+    if best is None or best[0] < MIN_PLAN:
         raise LayoutError(
             f"{n_v + n_a} plans leave too little room on {page.format}: choose the "
             "positions to draw (drawing.positions) or a larger format"
