@@ -110,7 +110,7 @@ def scale_text(text: str, lang: str) -> str:
         return text
     for en, ru in _RU_UNITS:
         text = text.replace(en, ru)
-    return text
+    return re.sub(r"(\d) mm\b", r"\1 мм", text)  # a length on the drawing: H = 20.00 мм
 
 
 _GROUP = re.compile(r"([RP]{3})\((\d+)-(\d+)\)")
