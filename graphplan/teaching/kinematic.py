@@ -249,15 +249,23 @@ def _rate_note(mech, kin, k: int, plan: Plan, seg: str) -> dict[str, str] | None
                   f"{num(abs(rate))} {unit(u, lang)}, {sense[lang]}" for lang in ("ru", "en")}
 
 
+def _rate_link(note_en: str) -> str:
+    """The link of a rate note ``ω3 = …`` / ``ε3 = …`` (the notes are written so)."""
+    m = re.match(r"[ωε](\w+) =", note_en)
+    if m is None:
+        raise ValueError(f"not a rate note: {note_en!r}")
+    return m[1]
+
+
 def _twin_notes(mech, plan: Plan, notes: list[dict[str, str]]) -> list[dict[str, str]]:
     """``ε2 = ε3 = 7.512 rad/s²`` for a link that slides along a derived one without turning
     relative to it (a block in a slot, a slider on a rocking guide): same ω, same ε."""
     out = []
     sym = "ω" if plan.kind == "velocity" else "ε"
     u = "rad/s" if plan.kind == "velocity" else "rad/s²"
-    done = {re.match(r"[ωε](\w+) =", n["en"])[1] for n in notes}
+    done = {_rate_link(n["en"]) for n in notes}
     for n in list(notes):
-        link = re.match(r"[ωε](\w+) =", n["en"])[1]
+        link = _rate_link(n["en"])
         rate = plan.rates.get(link)
         for pair in plan.sliding:
             a_, _, b_ = pair.partition("/")

@@ -47,7 +47,7 @@ def questions(step: LessonStep, lang: str) -> tuple[Question, ...]:
             continue
         sym, link = m[1], m[2]
         ccw = note_en.endswith("counter-clockwise")
-        right, wrong = SENSES[lang][ccw], SENSES[lang][not ccw]
+        right, opposite = SENSES[lang][ccw], SENSES[lang][not ccw]
         if lang == "ru":
             what = ("направлена угловая скорость" if sym == "ω"
                     else "направлено угловое ускорение")
@@ -55,7 +55,7 @@ def questions(step: LessonStep, lang: str) -> tuple[Question, ...]:
         else:
             what = "angular velocity" if sym == "ω" else "angular acceleration"
             prompt = f"Which way is the {what} {sym}{link} of link {link}?"
-        opts, k = _ordered(step, right, [wrong])
+        opts, k = _ordered(step, right, [opposite])
         out.append(Question(prompt, opts, k))
     m = re.fullmatch(r"aⁿ_([A-Z][a-z]*\d*)([A-Z][a-z]*\d*) = ω\w+²·l_\w+", step.equation)
     if m:
