@@ -26,6 +26,7 @@ from pathlib import Path
 from . import __version__
 from .checking import command as check_command
 from .errors import GraphplanError
+from .i18n import tr
 from .teaching import command as teach_command
 
 
@@ -37,13 +38,19 @@ def _parser() -> argparse.ArgumentParser:
         "plans, Zhukovsky's lever, flywheel and motor, drawn on ESKD sheets; students' "
         "calculations checked; step-by-step teaching pages.",
     )
-    p.add_argument("--version", action="version", version=f"graphplan {__version__}")
+    p.add_argument("--version", action="version", version=f"graphplan {__version__}",
+                   help="show graphplan's version and exit")
     p.add_argument("--debug", action="store_true", help="show tracebacks of errors")
+    p.add_argument("--lang", choices=("en", "ru"), default=None, dest="ui_lang",
+                   help="language of the messages, the help and the reports (default: the "
+                   "GRAPHPLAN_LANG environment variable, else the system's language); "
+                   "also given after a command")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     a = sub.add_parser("analyze", help="structure and exact kinematics of every position")
     a.add_argument("variant", nargs="?", help="variant file (default: the bundled press example)")
     a.add_argument("--json", action="store_true", help="print one JSON object for scripts")
-    a.add_argument("--lang", choices=("en", "ru"), default="en", help="language of the tables")
+    a.add_argument("--lang", choices=("en", "ru"), default=None,
+                   help="language of the tables (default: the language of the messages)")
     a.add_argument("-o", "--output", help="write the report to this file (atomically)")
     s = sub.add_parser("sheets", help="draw the sheets and write the tables and the JSON report")
     s.add_argument("variants", nargs="*", metavar="VARIANT",
@@ -84,7 +91,24 @@ def _parser() -> argparse.ArgumentParser:
                    help="language of the explanations (default: ru)")
     for name, command in (("check", check_command), ("teach", teach_command)):
         command.add_arguments(sub.add_parser(name, help=command.HELP))
+    _translate_help(p)
     return p
+
+
+def _translate_help(parser: argparse.ArgumentParser) -> None:
+    """Every help text and description of ``parser`` and its commands in the messages'
+    language (:func:`graphplan.i18n.tr`; argparse's own words through its gettext)."""
+    if parser.description:
+        parser.description = tr(parser.description)
+    for action in parser._actions:
+        if action.help and action.help != argparse.SUPPRESS:
+            action.help = tr(action.help)
+        if isinstance(action, argparse._SubParsersAction):
+            for choice in action._choices_actions:
+                if choice.help:
+                    choice.help = tr(choice.help)
+            for sub in dict.fromkeys(action.choices.values()):
+                _translate_help(sub)
 
 
 def _variant_path(arg: str | None) -> Path:
@@ -101,14 +125,16 @@ def _analyze(args) -> int:
     path = _variant_path(args.variant)
     result = analyze(load(path))
     for w in result.warnings:
-        print(f"graphplan: warning: {w}", file=sys.stderr)
+        print(tr(f"graphplan: warning: {w}"), file=sys.stderr)
     if args.json:  # escaped (\u03c9) only on a console that cannot encode the text
         from .console import json_ascii
 
         text = json.dumps(result.to_json(), ensure_ascii=json_ascii() and not args.output,
                           indent=1, allow_nan=False) + "\n"
     else:
-        text = analysis_text(result, args.lang)
+        from .i18n import language
+
+        text = analysis_text(result, args.lang or language())
     if args.output:
         from .files import write_atomic
 
@@ -133,7 +159,7 @@ def _sheets(args) -> int:
         done = write_project(v, target, lang=args.lang, precision=args.precision,
                              page=args.page, formats=args.format, dpi=args.dpi)
         for w in done.warnings:
-            print(f"graphplan: warning: {w}", file=sys.stderr)
+            print(tr(f"graphplan: warning: {w}"), file=sys.stderr)
         files = [str(f) for f in done.files]
         if args.note:
             files += [str(f) for f in _write_note(v, target, args.lang or "ru", pdf=False)]
@@ -178,9 +204,8 @@ def _new(args) -> int:
                          "(choose another name)")
     text = variant_template(args.family, lang=args.lang, name=out.name)
     write_atomic(out, text)
-    print(terminal_text(f"{out}: " + ("заготовка варианта; проверьте её: graphplan analyze "
-                                      if args.lang == "ru" else "a new variant; check it: "
-                                      "graphplan analyze ") + str(out)))
+    print(terminal_text(tr(f"{out}: a new variant; check it: graphplan analyze {out}",
+                           args.lang)))
     return 0
 
 
@@ -207,12 +232,19 @@ def main(argv: list[str] | None = None) -> int:
     """
     import signal
 
-    from . import console
+    from . import console, i18n
     from .files import os_error_text
     from .safe_text import terminal_text
 
     console.prepare_streams()  # never a UnicodeEncodeError on a cp1251/cp866/ASCII console
-    args = _parser().parse_args(argv)
+    i18n.set_language(i18n.language_from_argv(sys.argv[1:] if argv is None else argv))
+    saved = argparse._, argparse.ngettext  # type: ignore[attr-defined]
+    argparse._ = i18n.argparse_gettext  # type: ignore[attr-defined]
+    argparse.ngettext = i18n.argparse_ngettext  # type: ignore[attr-defined]
+    try:
+        args = _parser().parse_args(argv)
+    finally:
+        argparse._, argparse.ngettext = saved  # type: ignore[attr-defined]
     previous = None
     with contextlib.suppress(ValueError, AttributeError):  # not the main thread / Windows
         previous = signal.signal(signal.SIGTERM, _on_sigterm)
@@ -224,33 +256,34 @@ def main(argv: list[str] | None = None) -> int:
         if args.debug:
             raise
         msg = str(exc) if isinstance(exc, GraphplanError) else os_error_text(exc)
-        print(f"graphplan: error: {terminal_text(msg)}", file=sys.stderr)
+        print(tr(f"graphplan: error: {terminal_text(msg)}"), file=sys.stderr)
         return console.EXIT_FILE_ERROR
     except GraphplanError as exc:
         if args.debug:
             raise
-        print(f"graphplan: error: {terminal_text(str(exc))}", file=sys.stderr)
+        print(tr(f"graphplan: error: {terminal_text(str(exc))}"), file=sys.stderr)
         return console.EXIT_BAD_INPUT
     except Terminated:
-        print("graphplan: terminated", file=sys.stderr)
+        print(tr("graphplan: terminated"), file=sys.stderr)
         return console.EXIT_TERMINATED
     except KeyboardInterrupt:
-        print("graphplan: interrupted", file=sys.stderr)
+        print(tr("graphplan: interrupted"), file=sys.stderr)
         return console.EXIT_INTERRUPTED
     except (RecursionError, MemoryError) as exc:
         if args.debug:
             raise
-        print(f"graphplan: error: the input is too large or too deeply nested "
-              f"({type(exc).__name__})", file=sys.stderr)
+        print(tr(f"graphplan: error: the input is too large or too deeply nested "
+                 f"({type(exc).__name__})"), file=sys.stderr)
         return console.EXIT_BAD_INPUT
     except Exception as exc:
         if args.debug:
             raise
         reason = terminal_text(" ".join(f"{type(exc).__name__}: {exc}".split()))[:300]
-        print(f"graphplan: internal error (a bug, please report it; --debug shows where): "
-              f"{reason}", file=sys.stderr)
+        print(tr(f"graphplan: internal error (a bug, please report it; --debug shows "
+                 f"where): {reason}"), file=sys.stderr)
         return console.EXIT_INTERNAL
     finally:
+        i18n.set_language(None)
         if previous is not None:
             with contextlib.suppress(ValueError):
                 signal.signal(signal.SIGTERM, previous)
