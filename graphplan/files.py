@@ -374,6 +374,7 @@ def write_set(out_dir: str | Path, files: dict[str, str | bytes],
                 keep.append(entry)
         out.parent.mkdir(parents=True, exist_ok=True)
         stage = Path(tempfile.mkdtemp(prefix=f"{_STAGE}{out.name}.", dir=out.parent))
+        moved = False  # the stage became the output (or was cleared)
         try:
             os.chmod(stage, 0o777 & ~_umask())
             for entry in keep:
@@ -396,9 +397,9 @@ def write_set(out_dir: str | Path, files: dict[str, str | bytes],
                 shutil.rmtree(old, ignore_errors=True)
             else:
                 shutil.rmtree(stage, ignore_errors=True)  # now holds the old set
-            stage = None
+            moved = True
         finally:
-            if stage is not None:
+            if not moved:
                 shutil.rmtree(stage, ignore_errors=True)
     except OSError as exc:
         if isinstance(exc, GraphplanError):

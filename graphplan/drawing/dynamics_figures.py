@@ -356,8 +356,7 @@ def omega_items(u, box: Rect, lang: str) -> list:
     s = u.simulation
     deg = np.degrees(s.tau)
     width_mm, height_mm = box.width, box.height
-    rc = {"axes.unicode_minus": False, "lines.solid_capstyle": "round"}
-    with matplotlib.rc_context(rc):
+    with matplotlib.rc_context({"axes.unicode_minus": False, "lines.solid_capstyle": "round"}):
         fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4))
         ax = fig.add_axes((24 / width_mm, 12 / height_mm, 1 - 30 / width_mm,
                            1 - 22 / height_mm))

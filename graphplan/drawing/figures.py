@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 
@@ -146,7 +147,7 @@ def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: floa
         return d if w_need <= width_mm and h_need <= height_mm else None
 
     fixed = TOP + BOTTOM + 2 * GAP + 3 * (PAD_TOP + BELOW_AXIS)  # the most the pads take
-    h = min(max_height_mm, math.floor((height_mm - fixed) / 3))
+    h = min(math.floor(max_height_mm), math.floor((height_mm - fixed) / 3))
     ok = isinstance(n, int) and n >= 4  # else kinematic_diagrams says what is wrong
     if h >= 10:
         for k in range(int(min(max_length_mm, width_mm) // n) if ok else 1, 0, -1):
@@ -230,9 +231,8 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    rc = {"axes.unicode_minus": False, "lines.solid_capstyle": "round",
-          "lines.solid_joinstyle": "round"}
-    with matplotlib.rc_context(rc):
+    with matplotlib.rc_context({"axes.unicode_minus": False, "lines.solid_capstyle": "round",
+                                "lines.solid_joinstyle": "round"}):
         fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4))
         x0 = (width_mm - f.box_w) / 2
         y = height_mm - TOP - (height_mm - f.height) / 2  # top of the next panel, mm from below
@@ -265,7 +265,8 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
             ax.tick_params(axis="x", which="both", direction="inout", width=THIN * MM,
                            length=1.5 * MM, pad=0.6 * MM)
             ax.tick_params(axis="x", which="major", length=2.5 * MM)
-            arrow = {"clip_on": False, "color": "black", "markersize": 2.2 * MM, "lw": 0}
+            arrow: dict[str, Any] = {"clip_on": False, "color": "black",
+                                     "markersize": 2.2 * MM, "lw": 0}
             ax.plot([360.0 + 6 * x_per_mm], [0.0], ">", **arrow)
             ax.plot([0.0], [tip], "^", **arrow)
             ax.text(360.0 + 7 * x_per_mm, 1.0 * K, "φ", ha="left", va="bottom",

@@ -120,6 +120,7 @@ def _sheet3_scales(m, intervals: int, size: dict) -> tuple[dict, float, float]:
         drawn = SPANS_HEIGHT - room + extent / KT
         if best is None or (extent / KT >= 200.0 and drawn > best[0] + 1.0):
             best = (drawn, trial, KT, KJ)
+    assert best is not None  # seven heights tried
     return best[1], best[2], best[3]
 
 

@@ -54,6 +54,7 @@ and its extremes are those of ΔT, whatever k.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -142,7 +143,7 @@ class ReducedMoment:
     sense: float
     breaks: tuple[float, ...] = ()
     A: Array | None = None
-    at: object = None
+    at: Callable[[Array], Array] | None = None
     period: float = 2 * math.pi
 
 
@@ -464,7 +465,7 @@ def work_diagrams(obj: Solved | DynamicModel, intervals: int = 24, *,
     A_d = M_d * tau
     n = intervals
     h = P / n
-    nodes = np.arange(n + 1) * h
+    nodes = np.arange(n + 1, dtype=np.float64) * h
     extra = [b for b in m.moment.breaks if np.min(np.abs(nodes - b)) > 1e-3 * h]
     nodes = np.sort(np.concatenate((nodes, extra)))
     widths = np.diff(nodes)

@@ -62,6 +62,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from itertools import combinations
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -251,6 +252,12 @@ class _Pair:
     point: str
     guide: str | None = None
 
+    @property
+    def slide_guide(self) -> str:
+        """The guide of a sliding pair (every "P" pair has one)."""
+        assert self.guide is not None, self
+        return self.guide
+
 
 def dyad_pairs(mech: Mechanism, d: Dyad) -> tuple[_Pair, _Pair, _Pair]:
     """The three pairs of a dyad, each as the force of ``by`` on the dyad's link ``on``."""
@@ -339,13 +346,13 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
         T = np.zeros((6, 6, n))
         R = np.zeros((6, n))
         # per pair, the entries of its columns (the same for both links, but the sign)
-        cols = []
-        for pr, x in zip(pairs, Xc, strict=True):
-            r = x - c
+        cols: list[tuple[Any, Any, Any]] = []  # e2 is None for a turning pair
+        for pr, xj in zip(pairs, Xc, strict=True):
+            r = xj - c
             if pr.kind == "R":
                 cols.append((r.imag / L, r.real / L, None))
             else:
-                nv = 1j * as_complex(kin.pos.guides[pr.guide][1])
+                nv = 1j * as_complex(kin.pos.guides[pr.slide_guide][1])
                 cols.append((nv.real, nv.imag, (np.conj(r) * nv).imag / L))
         for li, link in enumerate(d.links):
             row = 3 * li
@@ -378,7 +385,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
         _check_singular(A, lambda k, kappa, name=d.name: fail(
             k, f"the force analysis is singular (condition number {kappa:.3g}; "
             "the closing lines of its force plan are parallel)", name))
-        x = np.linalg.solve(A, rhs[..., None])[..., 0]
+        x = np.linalg.solve(A, rhs[..., None])[..., 0].astype(float, copy=False)
         systems[d.name] = A
         solutions.append(x)
         big = np.max(np.abs(x), axis=1)
@@ -390,7 +397,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
                 normal, couple = np.hypot(a, b), zeros
                 offset, defined, at = zeros, trues, xp
             else:
-                u = as_complex(kin.pos.guides[pr.guide][1])
+                u = as_complex(kin.pos.guides[pr.slide_guide][1])
                 vc = (1j * u) * a
                 vec, normal, couple = as_xy(vc, n), a, b * L
                 defined = np.abs(a) > 1e-12 * big

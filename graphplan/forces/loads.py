@@ -148,7 +148,10 @@ class Loads:
         forces = {k: list(v) for k, v in self.forces.items()}
         moments = {k: list(v) for k, v in self.moments.items()}
         for ld in extra:
-            (forces if isinstance(ld, ForceLoad) else moments).setdefault(ld.link, []).append(ld)
+            if isinstance(ld, ForceLoad):
+                forces.setdefault(ld.link, []).append(ld)
+            else:
+                moments.setdefault(ld.link, []).append(ld)
         return replace(self, forces={k: tuple(v) for k, v in forces.items()},
                        moments={k: tuple(v) for k, v in moments.items()})
 
@@ -303,12 +306,14 @@ def resistance_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = Non
         w = float(res.working or mech.output.working)
         own = res.over == "stroke" and tl == res.link
         if res.kind == "force":
+            assert res.point is not None  # a force has its point (the loader requires it)
             at = kin.pos.points[res.point]
             u = _frame_guide(mech, kin, res.link)
             if res.sense == "diagram":
                 if res.angle is not None:
                     e = np.broadcast_to([math.cos(res.angle), math.sin(res.angle)], at.shape)
-                else:
+                else:  # the loader asks for an angle off a frame guide
+                    assert u is not None
                     e = scale(u, w if own else 1.0)
                 vec = scale(e, size)
             elif u is not None:  # along the guide, with or against the motion
@@ -504,7 +509,10 @@ def compute_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = None, 
                 moments[ln].append(MomentLoad(f"Mи{ln}", ln, "inertia", -props.inertia * eps))
     if "resistance" in kinds:
         for ld in resistance_loads(mech, kin, cycle):
-            (forces if isinstance(ld, ForceLoad) else moments)[ld.link].append(ld)
+            if isinstance(ld, ForceLoad):
+                forces[ld.link].append(ld)
+            else:
+                moments[ld.link].append(ld)
 
     neglected = _neglect(mech, kin, forces, moments, frac)
     shifts: dict[str, Array] = {}

@@ -213,7 +213,11 @@ def solve_complex(mech: Mechanism, phi: Array, labels=None):
 
 def _cguide(g: Guide, pts, theta, n: int, where_: str, phi, labels, frame: str):
     """Point and unit direction of a guide, as complex numbers (see :func:`guide_line`)."""
-    base = pts[g.through] if g.through is not None else complex(float(g.xy[0]), float(g.xy[1]))
+    if g.through is not None:
+        base = pts[g.through]
+    else:
+        assert g.xy is not None  # a guide runs through a point or a fixed xy (the loader)
+        base = complex(float(g.xy[0]), float(g.xy[1]))
     if g.toward is not None:
         d = pts[g.toward] - base
         dist = np.abs(d)

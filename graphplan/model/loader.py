@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import re
 import tomllib
+from collections.abc import Set as AbstractSet
 from pathlib import Path
 from typing import Any
 
@@ -49,6 +50,7 @@ LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense"
 STROKE_SETS = ("working", "idle", "both")
 NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_']*")  # used with fullmatch: no trailing newline
 LINK_RE = re.compile(r"[0-9]{1,3}")
+Diagram = tuple[tuple[float, float], ...]  #: a load diagram's (abscissa, value) pairs
 
 # Sections and keys each section accepts. Later stages (drawing, kinetostatics,
 # dynamics, title block) keep their settings here so that a typo is caught at load.
@@ -108,9 +110,11 @@ class _Reader:
             raise self.fail(path, f"expected a table (got {_typename(value)})")
         return value
 
-    def keys(self, table: dict, path: str, allowed: set[str], required: set[str] = frozenset()):
+    def keys(self, table: dict, path: str, allowed: AbstractSet[str] | None,
+             required: AbstractSet[str] = frozenset()):
+        """Refuse a key not in ``allowed`` (None: any key) and a missing ``required`` one."""
         for k in table:
-            if k not in allowed:
+            if allowed is not None and k not in allowed:
                 hint = ", ".join(sorted(allowed))
                 raise self.fail(_join(path, k), f"unknown key (expected one of: {hint})")
         for k in sorted(required):
@@ -500,7 +504,8 @@ def _build(data: dict, r: _Reader) -> Mechanism:
     g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
     g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
     gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
-    gravity = tuple(0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
+    gx, gy = (0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
+    gravity = (gx, gy)
 
     # -- link properties
     links: dict[str, LinkProps] = {}
@@ -883,7 +888,7 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
         if "value" in lt:  # constant: the whole cycle, or the strokes named
             if "stroke" in lt:
                 which = r.string(lt["stroke"], f"{path}.stroke", STROKE_SETS)
-                d = ((0.0, const), (1.0, const))
+                d: Diagram = ((0.0, const), (1.0, const))
                 strokes = _stroke_set(which, d, n_strokes)
             else:
                 over = "crank"
@@ -934,7 +939,7 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
                             if len(ss) == 4 and cycle == 360 else "")
                     raise r.fail(f"{path}.strokes", f"expected {n_strokes} diagrams, one per "
                                  f"stroke of the {cycle}° cycle (got {len(ss)}){hint}")
-                items = []
+                items: list[Diagram | None] = []
                 for m, sd in enumerate(ss):
                     sp = f"{path}.strokes[{m}]"
                     sd = r.array(sd, sp)
@@ -974,7 +979,7 @@ def _stroke_set(which: str, d, n_strokes: int) -> tuple:
                  for k in range(n_strokes))
 
 
-def _pairs(r: _Reader, value: Any, path: str, signed: bool, hi_x: float):
+def _pairs(r: _Reader, value: Any, path: str, signed: bool, hi_x: float) -> Diagram:
     """Pairs ``[x, value]`` with x not decreasing in [0, hi_x]; values ≥ 0 unless signed."""
     diag = r.array(value, path, minlen=2)
     pairs: list[tuple[float, float]] = []

@@ -38,6 +38,7 @@ from __future__ import annotations
 import inspect
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -110,7 +111,7 @@ class Intersection:
 
 def intersections(plan) -> tuple[Intersection, ...]:
     """The intersection steps of a plan (velocity, acceleration, force plan, lever)."""
-    name = getattr(plan, "group", None) or getattr(plan, "kind", "lever")
+    name = str(getattr(plan, "group", None) or getattr(plan, "kind", "lever"))
     return tuple(Intersection(name, s.number, s.equation, float(s.angle_deg),
                               float(s.error_mm if s.error_mm is not None else math.inf))
                  for s in plan.steps if s.angle_deg is not None)
@@ -294,6 +295,8 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
     if not precision > 0:
         raise ValueError(f"a reading precision > 0 mm is needed (got {precision!r})")
 
+    last: list = []  # the plans of the last run
+
     def run(reader):
         if isinstance(reader, _Probe):
             rv, ra = reader, _Probe(precision)
@@ -307,7 +310,7 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
         else:
             vp = velocity_plan(mech, kin, k, kl, kv, reader)
             ap = acceleration_plan(mech, kin, k, kl, ka, vp, reader)
-        run.plans = (vp, ap)
+        last[:] = (vp, ap)
         out = {}
         for plan in (vp, ap):
             for key, v in _plan_figures(plan, "").items():
@@ -315,7 +318,7 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
         return out
 
     f0, drawn, bounds, same = _bounds(run, precision, kind=lambda key: (key[0], key[1][0]))
-    vp, ap = run.plans  # the drawn plans (the last run)
+    vp, ap = last  # the drawn plans (the last run)
     marks = intersections(vp) + intersections(ap)
     flagged = any(x.ill for x in marks) or not same
     figures = {}
@@ -324,7 +327,7 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
         if (plan, (kind, name)) not in drawn:
             if kind == "point":  # e.g. the end of a Coriolis component that reads 0 mm
                 continue
-            value = 0.0  # a component that reads 0 mm is not laid off: it is zero
+            value: Any = 0.0  # a component that reads 0 mm is not laid off: it is zero
         else:
             value = drawn[(plan, (kind, name))]
         if kind == "point":
@@ -383,9 +386,11 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
     fp_call, takes_room = _force_plans_call()
     extra = {"room_mm": room_mm} if (takes_room and room_mm is not None) else {}
 
+    last_plans: list = []  # the force plans of the last run
+
     def run_plans(reader):
         plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra)
-        run_plans.plans = plans
+        last_plans[:] = plans
         out = {}
         for p in plans:
             for q, r in p.readings.items():
@@ -398,12 +403,11 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
 
     def run_lever(reader):
         lv = zhukovsky_lever(mech, kin, loads, k, kl, kv, reader)
-        run_lever.lever = lv
         return {"Mур": lv.M_bal}
 
     f0, drawn, bounds, same = _bounds(run_plans, precision, kind=lambda q: q == "Mур")
     l0, ldrawn, lbounds, lsame = _bounds(run_lever, precision)
-    plans = run_plans.plans
+    plans = tuple(last_plans)
     marks = tuple(x for p in plans for x in intersections(p))
     flagged = any(x.ill for x in marks) or not (same and lsame)
     figures = {}

@@ -301,6 +301,11 @@ class _Images:
             if isinstance(model_point, str):
                 self.names[(link, plan_point)] = model_point
 
+    def add_all(self, *entries: tuple[str, str | Vec2, str]) -> None:
+        """:meth:`add` each (link, model point, plan point)."""
+        for link, model_point, plan_point in entries:
+            self.add(link, model_point, plan_point)
+
     def basis(self, link: str) -> tuple[tuple[str, Vec2, str], tuple[str, Vec2, str]] | None:
         """The two named points (model name, position mm, plan point) similarity uses."""
         lst = self.known.get(link, [])
@@ -519,7 +524,7 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
                         (c + bb, c, bb, "relative", f"v_{B}{C}")])
         rates[i] = _turn(b, a + bb, (P[B] - P[A]) * kl, dy.lengths[0])
         rates[j] = _turn(b, c + bb, (P[B] - P[C]) * kl, dy.lengths[1])
-        img.add(i, A, a), img.add(i, B, bb), img.add(j, C, c), img.add(j, B, bb)
+        img.add_all((i, A, a), (i, B, bb), (j, C, c), (j, B, bb))
     elif dy.kind == "RRP":
         A, B = dy.joints
         a, bb = lower(A), lower(B)
@@ -539,7 +544,7 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         rates[i] = _turn(b, a + bb, (P[B] - P[A]) * kl, dy.lengths[0])
         rates[j] = rates[g.link]
         sliding[key] = _slide(b, segs[-1][0] if bk != "p" else "p" + bb, u)
-        img.add(i, A, a), img.add(i, B, bb), img.add(j, B, bb)
+        img.add_all((i, A, a), (i, B, bb), (j, B, bb))
     elif dy.kind == "RPR":
         A, C = dy.joints
         a, c = lower(A), lower(C)
@@ -556,7 +561,7 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         rates[j] = _turn(b, c + a3, (P[A] - P[C]) * kl, length_m(C, A))
         rates[i] = rates[j]
         sliding[key] = _slide(b, a3 + a, u)
-        img.add(j, C, c), img.add(j, A, a3), img.add(i, A, a)
+        img.add_all((j, C, c), (j, A, a3), (i, A, a))
     elif dy.kind == "PRP":
         (B,) = dy.joints
         bb = lower(B)
@@ -579,7 +584,7 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         _result(b, eq, segs)
         rates[i], rates[j] = rates[g1.link], rates[g2.link]
         sliding[k1], sliding[k2] = _slide(b, n1, u1), _slide(b, n2, u2)
-        img.add(i, B, bb), img.add(j, B, bb)
+        img.add_all((i, B, bb), (j, B, bb))
     elif dy.kind == "RPP":
         A = dy.joints[0]  # the yoke's point D follows by similarity, with the links' points
         a = lower(A)
@@ -600,7 +605,7 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         rates[i] = rates[j]
         sliding[kj] = _slide(b, ns, u)
         sliding[ki] = _slide(b, aj + a, w)
-        img.add(j, A, aj), img.add(i, A, a)
+        img.add_all((j, A, aj), (i, A, a))
 
 
 def _coincident(b: _Builder, img: _Images, link: str, X: str, P, rate_map) -> str:
@@ -739,7 +744,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
                             (f"τ_{B}{C}", n2, pb, "tangential", f"aτ_{B}{C}")])
             eps[i] = _turn(b, f"τ_{B}{A}", (P[B] - P[A]) * kl.per_mm, dy.lengths[0])
             eps[j] = _turn(b, f"τ_{B}{C}", (P[B] - P[C]) * kl.per_mm, dy.lengths[1])
-            img.add(i, A, pa), img.add(i, B, pb), img.add(j, C, pc), img.add(j, B, pb)
+            img.add_all((i, A, pa), (i, B, pb), (j, C, pc), (j, B, pb))
         elif dy.kind == "RRP":
             A, B = dy.joints
             pa, pb = key(A), key(B)
@@ -761,7 +766,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             eps[i] = _turn(b, f"τ_{B}{A}", (P[B] - P[A]) * kl.per_mm, dy.lengths[0])
             eps[j] = eps[g.link]
             rel[sk] = _slide(b, segs[-1][0] if kk != "π" else "π" + pb, u)
-            img.add(i, A, pa), img.add(i, B, pb), img.add(j, B, pb)
+            img.add_all((i, A, pa), (i, B, pb), (j, B, pb))
         elif dy.kind == "RPR":
             A, C = dy.joints
             pa, pc = key(A), key(C)
@@ -779,7 +784,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             eps[j] = _turn(b, f"τ_{A}{C}", (P[A] - P[C]) * kl.per_mm, length_m(C, A))
             eps[i] = eps[j]
             rel[sk] = _slide(b, f"r_{A}{j}", u)
-            img.add(j, C, pc), img.add(j, A, a3), img.add(i, A, pa)
+            img.add_all((j, C, pc), (j, A, a3), (i, A, pa))
         elif dy.kind == "PRP":
             (B,) = dy.joints
             pb = key(B)
@@ -804,7 +809,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             _result(b, eq, segs)
             eps[i], eps[j] = eps[g1.link], eps[g2.link]
             rel[k1], rel[k2] = _slide(b, r1, u1), _slide(b, r2, u2)
-            img.add(i, B, pb), img.add(j, B, pb)
+            img.add_all((i, B, pb), (j, B, pb))
         elif dy.kind == "RPP":
             A, _ = dy.joints
             pa = key(A)
@@ -828,7 +833,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             eps[i] = eps[j]
             rel[kj] = _slide(b, rs, u)
             rel[ki] = _slide(b, f"r_{A}{i}{j}", w)
-            img.add(j, A, aj), img.add(i, A, pa)
+            img.add_all((j, A, aj), (i, A, pa))
         for ln in dy.links:
             _similar_points(mech, b, img, ln, P, rate_map, "acceleration")
     return b.build(kin.labels[k], eps, rel)

@@ -383,8 +383,8 @@ class _Draw:
 def _known(mech, kin, loads: Loads, k: int, links, reactions, origin: Vec2, kl: float):
     """Known forces and couples on each of ``links``: the loads and the reactions of the
     groups solved before (reversed: the force on the link that exerts them there)."""
-    F = {ln: [] for ln in links}
-    M = {ln: [] for ln in links}
+    F: dict[str, list[_F]] = {ln: [] for ln in links}
+    M: dict[str, list[tuple[str, float]]] = {ln: [] for ln in links}
     for ln in links:
         for f in loads.forces.get(ln, ()):
             if np.any(f.vector[k]):
@@ -513,7 +513,7 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
             res = b.result(eq, [(f"Rn{n0[1:]}", X, "a"), (n0, X, v1), (f"Rn{n2[1:]}", e, X),
                                 (n2, e0, X), (n1, X, J)])
         else:
-            u = guide[pairs[2].guide]
+            u = guide[pairs[2].slide_guide]
             eq = f"Rτ{n0[1:]} + ΣF{i} + ΣF{j} + {n2} + Rn{n0[1:]} = 0"
             X = b.close(eq, e0, perp(u), f"{n2} ⟂ guide", "a", P[B] - P[A],
                         f"Rn{n0[1:]} ∥ {A}{B}")
@@ -523,7 +523,7 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
         sub = [(n0, X, v1), *b.laid(Fi), (f"R{j}{i}", J, X)]
     elif kind == "RPR":
         A, C = d.joints
-        u = guide[pairs[1].guide]
+        u = guide[pairs[1].slide_guide]
         nrm = perp(u)
         e1 = nrm * (1.0 if float(np.dot(P[A] - P[C], u)) >= 0 else -1.0)
         along = -sum((float(np.dot(f.vec, u)) for f in Fi), 0.0) + 0.0
@@ -552,7 +552,7 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
         sub = [(n0, "a", v2), *b.laid(Fi), (f"R{j}{i}", J, "a")]
     elif kind == "PRP":
         (B,) = d.joints
-        u1, u2 = guide[pairs[0].guide], guide[pairs[2].guide]
+        u1, u2 = guide[pairs[0].slide_guide], guide[pairs[2].slide_guide]
         J = b.chain("a", Fi)
         e = b.chain(J, Fj)
         eq = f"{n0} + ΣF{i} + ΣF{j} + {n2} = 0"
@@ -565,7 +565,7 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
         sub = [(n0, X, "a"), *b.laid(Fi), (f"R{j}{i}", J, X)]
     else:  # RPP
         A, D = d.joints
-        us, ug = guide[pairs[1].guide], guide[pairs[2].guide]
+        us, ug = guide[pairs[1].slide_guide], guide[pairs[2].slide_guide]
         e = b.chain("a", Fj)
         eq = f"{n1} + ΣF{j} + {n2} = 0"
         X = b.close(eq, e, perp(ug), f"{n2} ⟂ guide", "a", perp(us), f"{n1} ⟂ slot")
@@ -586,7 +586,7 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
     for idx, (pr, nm) in enumerate(zip(pairs, names, strict=True)):
         ref = np.asarray(kin.pos.points[pr.point][k], float)
         couple, x = offsets.get(idx, (0.0, None))
-        at = ref if x is None else ref + x * kl.per_mm * guide[pr.guide]
+        at = ref if x is None else ref + x * kl.per_mm * guide[pr.slide_guide]
         reactions[nm] = PlanReaction(nm, pr.by, pr.on, pr.kind, res[nm], ref, at, couple, x)
     return ForcePlan("force", kin.labels[k], d.name, kp, dict(b.points), tuple(b.steps),
                      dict(b.readings), tuple(b.equations),

@@ -264,6 +264,6 @@ def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *
                     break
             if height < 5.0:
                 break
-    items = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
+    items: list[object] = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
     items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5, id=ident)
     return items

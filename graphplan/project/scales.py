@@ -100,7 +100,8 @@ def trajectories(mech: Mechanism, kin, fine=None) -> dict[str, np.ndarray]:
     return {name: p for name, p in fine.pos.points.items()}
 
 
-def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]) -> tuple[float, ...]:
+def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]
+                    ) -> tuple[float, float, float, float]:
     """Bounding box (m) of everything the plan of positions draws, about the crank pivot."""
     o = kin.pos.points[mech.crank.pivot][0]
     pts = [p for p in paths.values()] + [p for p in kin.pos.points.values()]

@@ -113,11 +113,12 @@ def svg_size_mm(svg_path: str | Path) -> tuple[float, float]:
         _, root = next(ET.iterparse(svg_path, events=("start",)))
     except (OSError, ET.ParseError, StopIteration) as exc:
         raise GraphplanError(f"{svg_path}: cannot read the SVG ({exc})") from None
-    size = []
+    size: list[float] = []
     for name in ("width", "height"):
         m = _LENGTH.fullmatch(root.get(name) or "")
-        size.append(float(m[1]) * _MM_PER_UNIT[m[2]] if m else None)
-    if None in size:
+        if m:
+            size.append(float(m[1]) * _MM_PER_UNIT[m[2]])
+    if len(size) < 2:
         box = (root.get("viewBox") or "").replace(",", " ").split()
         try:
             size = [float(box[2]), float(box[3])]

@@ -341,7 +341,7 @@ class _Writer:
             t = replace(t, text=fonts.drawable_minus(t.text))  # as the SVG letters it
         family = fonts.choose_family(t.text)
         style = TEXT_STYLES.get(family, (DEFAULT_TEXT_STYLE, ""))[0]
-        attribs = {"layer": t.layer, "style": style}
+        attribs: dict[str, object] = {"layer": t.layer, "style": style}
         if t.italic:
             attribs["oblique"] = SLANT_DEG  # GOST 2.304 type B: 15° from the vertical
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
 
@@ -73,10 +74,10 @@ def _stroke(style: Style, *, filled: bool = False) -> dict[str, str]:
     return attrs
 
 
-def _with_id(attrs: dict[str, str], ident: str | None) -> dict[str, str]:
+def _with_id(attrs: Mapping[str, object], ident: str | None) -> dict[str, object]:
     if ident is not None:
         return {"id": ident, **attrs}
-    return attrs
+    return dict(attrs)
 
 
 def _arc_path(arc: Arc) -> str:
@@ -94,7 +95,7 @@ def _arc_path(arc: Arc) -> str:
     return f"M{num(a[0])},{num(a[1])} A{r},{r} 0 {large} 0 {num(b[0])},{num(b[1])}"
 
 
-def _text_attrs(t: Text) -> dict[str, str]:
+def _text_attrs(t: Text) -> dict[str, object]:
     """Attributes of a text: capital height exact, slant by a shear, turn by a rotation.
 
     GOST 2.304 type B leans at 75° (15° from the vertical). osifont has no italic face
@@ -105,7 +106,7 @@ def _text_attrs(t: Text) -> dict[str, str]:
     family = fonts.choose_family(t.text)
     size = t.height / fonts.cap_ratio(family)
     x, y = t.pos
-    attrs = {
+    attrs: dict[str, object] = {
         "insert": (num(x), num(y)),
         "font-family": fonts.font_family(t.text),
         "font-size": f"{round(size, 3):.3f}".rstrip("0").rstrip("."),
@@ -142,7 +143,7 @@ def _text(dwg: svgwrite.Drawing, t: Text, lang: str | None):
     if len(runs) == 1 and not runs[0][1]:
         return dwg.text(text, **attrs)
     el = dwg.text("", **attrs)
-    size = float(attrs["font-size"]) * SUB_SIZE
+    size = float(str(attrs["font-size"])) * SUB_SIZE
     drop, down = SUB_DROP * t.height, False
     for chars, sub in runs:
         if sub:

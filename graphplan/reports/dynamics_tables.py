@@ -131,7 +131,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
           f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)",
           "", f"## {t['motor']}", ""]
-    if mo is None:  # driven by its loads (an engine): the constant moment is Mс
+    if mc is None or mo is None:  # driven by its loads (an engine): the constant moment is Mс
         engine = ("нагрузки совершают положительную работу за цикл (двигатель): постоянный "
                   "момент — момент сопротивления потребителя Mс" if ru else
                   "the loads do positive work over the cycle (an engine): the constant moment "

@@ -296,6 +296,12 @@ def _finite(x: float) -> float:
     return x
 
 
+def _m_bal(crank_plan) -> float:
+    """Mур read off the crank's force plan (the last plan of a position; only it has one)."""
+    assert crank_plan.M_bal is not None, crank_plan.group
+    return float(crank_plan.M_bal)
+
+
 def _f(x: float, d: int = 2) -> str:
     """Fixed decimals, no ``-0.00``."""
     s = f"{_finite(x):.{d}f}"
@@ -449,9 +455,9 @@ def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
     rows = []
     big = max((_reaction_value(pf.exact, n) for n in _reactions(pf)), default=0.0)
     for n in _reactions(pf):
-        e, r = _reaction_value(pf.exact, n), _reaction_value(pf.drafted, n)
-        rows.append([n, _f(e), _f(e / 1000, 3), _f(r), _f(r / 1000, 3),
-                     _pm(pf.bound("force", f"vector {n}")), _pct(_rel(r, e, big))])
+        e, rv = _reaction_value(pf.exact, n), _reaction_value(pf.drafted, n)
+        rows.append([n, _f(e), _f(e / 1000, 3), _f(rv), _f(rv / 1000, 3),
+                     _pm(pf.bound("force", f"vector {n}")), _pct(_rel(rv, e, big))])
     head = [w["quantity"], f"{w['exact']}, {w['N']}", f"{w['exact']}, {w['kN']}",
             f"{w['drafted']}, {w['N']}", f"{w['drafted']}, {w['kN']}", f"{w['bound']}, {w['N']}",
             w["error"]]
@@ -463,7 +469,7 @@ def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
         rows.append([w["h21"].format(n=he[0][1:]), _f(he[1]), _f(hdv, d) if hd else "—",
                      _pm(pf.precision / 2) if hd else "—",
                      _pct(_rel(hdv, he[1], 1.0)) if hd else "—"])
-    me, md = float(pf.exact[-1].M_bal), float(pf.drafted[-1].M_bal)
+    me, md = _m_bal(pf.exact[-1]), _m_bal(pf.drafted[-1])
     mbig = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
     rows.append([w["mbal_plans"], _f(me), _f(md), _pm(pf.bound("force", "Mур")),
                  _pct(_rel(md, me, mbig))])
@@ -581,10 +587,10 @@ def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:
                                  _r(None if err is None else err * 100),
                                  _r(pf.precision / 2 * kl) if mode == "drafted" else "", mark])
             crank = pf.plans(mode)[-1]
-            me = float(pf.exact[-1].M_bal)
+            me = _m_bal(pf.exact[-1])
             big = max(abs(me), abs(pf.lever_exact.M_bal), pf.M_scale)
             lev, lex = pf.lever(mode), pf.lever_exact
-            for q, v, e, src in (("Mур", float(crank.M_bal), me, "force"),
+            for q, v, e, src in (("Mур", _m_bal(crank), me, "force"),
                                  ("Mур(Ж)", lev.M_bal, lex.M_bal, "lever")):
                 err = _rel(v, e, big)
                 wr.writerow([*where, crank.group, "moment", q, "", "", "", "", _r(v), "N·m",
@@ -595,10 +601,10 @@ def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:
             wr.writerow([*where, "lever", "discrepancy", "Δ", "", "", "", "",
                          _r(lev.discrepancy_pct or 0.0), "%", _r(lex.discrepancy_pct or 0.0),
                          "", "", mark])
-            for r in pf.loads:
-                if r.neglected:
-                    wr.writerow([*where, f"link {r.link}", "neglected", r.name, "", "", "", "",
-                                 _r(r.value), r.unit, _r(r.value), "", "", mark])
+            for ld in pf.loads:
+                if ld.neglected:
+                    wr.writerow([*where, f"link {ld.link}", "neglected", ld.name, "", "", "", "",
+                                 _r(ld.value), ld.unit, _r(ld.value), "", "", mark])
     return buf.getvalue()
 
 
@@ -680,7 +686,7 @@ def _graphplan_value(pf: PositionForces, mode: str, quantity: str) -> float | No
     if quantity == "Kp":
         return plans[0].scale.per_mm
     if quantity == "Mур":
-        return float(plans[-1].M_bal)
+        return _m_bal(plans[-1])
     if quantity == "h21":
         arm = _crank_arm(plans[-1])
         return None if arm is None else arm[1]
@@ -761,7 +767,7 @@ def seed_comparison_markdown(analysis: Analysis, precision: float | None = None)
                           _seed_cell(dr),
                           "—" if ex is None or q == "Kp" else _f((ex - seed) / abs(seed) * 100),
                           "—" if dr is None or q == "Kp" else _f((dr - seed) / abs(seed) * 100)])
-            if q == "Mур":
+            if q == "Mур" and ex is not None and dr is not None:
                 summary.append([lab, _f(seed), _f(ex), _f(dr),
                                 _f(pf.lever_exact.M_bal), _f(pf.lever_drafted.M_bal),
                                 _f((ex - seed) / abs(seed) * 100),

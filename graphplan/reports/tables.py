@@ -7,6 +7,7 @@ then the cycle, then the kinematics of each position. Russian or English.
 from __future__ import annotations
 
 import math
+from typing import SupportsFloat
 
 from ..geometry import norm
 from ..project import Analysis
@@ -71,7 +72,7 @@ def format_table(header: list[str], rows: list[list[str]]) -> str:
     return "\n".join([line, rule, *body])
 
 
-def _num(x: float, digits: int = 4) -> str:
+def _num(x: SupportsFloat, digits: int = 4) -> str:
     x = float(x)
     if abs(x) < 10 ** (-digits - 2):
         x = 0.0

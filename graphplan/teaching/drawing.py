@@ -28,8 +28,8 @@ from ..drawing import (
     TEXT_HEIGHTS,
     Arrow,
     Circle,
-    Item,
     LabelRequest,
+    Leaf,
     Line,
     Polyline,
     Style,
@@ -77,7 +77,7 @@ _LAYER = "construction"  # items are written one by one; the layer only has to b
 class _Drawn:
     step: int
     role: str
-    item: Item
+    item: Leaf
 
 
 def _paper(p) -> tuple[float, float]:
@@ -113,7 +113,7 @@ def _letter(zoom: float) -> float:
     return min(TEXT_HEIGHTS[1:6], key=lambda h: abs(h - LETTER * zoom))
 
 
-def _items(mark: Mark, zoom: float = 1.0) -> list[Item]:
+def _items(mark: Mark, zoom: float = 1.0) -> list[Leaf]:
     st = _style(mark, zoom)
     pts = [_paper(p) for p in mark.points]
     if mark.kind == "vector":
@@ -176,12 +176,12 @@ def _panel_items(lesson: Lesson, panel: int) -> tuple[tuple[_Drawn, ...], tuple[
         x0 = y0 = 0.0
         x1 = y1 = 20.0
     # room for the scale bar under the drawing
-    m = MARGIN * zoom
-    bounds = (x0 - m, y0 - m, max(x1 - x0, 30.0) + 2 * m, (y1 - y0) + 2 * m + 8.0 * zoom)
+    pad = MARGIN * zoom
+    bounds = (x0 - pad, y0 - pad, max(x1 - x0, 30.0) + 2 * pad, (y1 - y0) + 2 * pad + 8.0 * zoom)
     return tuple(drawn), bounds
 
 
-def _coloured(item: Item, colour: str) -> Item:
+def _coloured(item: Leaf, colour: str) -> Leaf:
     if isinstance(item, Text):
         return item
     st = item.style
@@ -189,7 +189,7 @@ def _coloured(item: Item, colour: str) -> Item:
     return replace(item, style=replace(st, colour=colour, fill=fill))
 
 
-def _add(dwg, group, item: Item, colour: str, text_colour: str) -> None:
+def _add(dwg, group, item: Leaf, colour: str, text_colour: str) -> None:
     el = svg_render._element(dwg, _coloured(item, colour))
     if isinstance(item, Text):
         el["fill"] = text_colour
@@ -257,8 +257,8 @@ def frame_svg(lesson: Lesson, number: int, *, lang: str = "ru", standalone: bool
     dwg.add(bar)
     if heading:
         hg = dwg.g(**{"class": "heading"})
-        for t in heading:
-            _add(dwg, hg, t, "#000000", "black")
+        for ht in heading:
+            _add(dwg, hg, ht, "#000000", "black")
         dwg.add(hg)
     text = dwg.tostring()
     return ('<?xml version="1.0" encoding="utf-8"?>\n' + text + "\n") if standalone else text
