@@ -38,7 +38,8 @@ LANGS = ("en", "ru")
 ENV_VAR = "GRAPHPLAN_LANG"
 #: Locales whose users read Russian best (a language code's first part).
 RUSSIAN_LOCALES = frozenset({"ru", "be", "kk", "ky", "tg"})
-_WINDOWS_RUSSIAN = {0x19, 0x23, 0x3F, 0x40, 0x28}  # LANG_RUSSIAN, _BELARUSIAN, _KAZAK, _KYRGYZ, _TAJIK
+#: Windows primary language ids: Russian, Belarusian, Kazakh, Kyrgyz, Tajik.
+_WINDOWS_RUSSIAN = {0x19, 0x23, 0x3F, 0x40, 0x28}
 
 _current: str | None = None
 
@@ -142,13 +143,19 @@ def _literals(template: str) -> list[str]:
     return parts
 
 
+#: A field whose brackets balance (two levels deep): a field of "(got {})" ends at its own
+#: bracket, not at the first ")" of a nested "(at line 1, column 7)".
+_BALANCED = r"((?:[^()]|\((?:[^()]|\([^()]*\))*\))*?)"
+
+
 class _Entry:
-    __slots__ = ("en", "ru", "pattern", "anchor", "weight")
+    __slots__ = ("anchor", "balanced", "en", "pattern", "ru", "weight")
 
     def __init__(self, en: str, ru: str):
         self.en, self.ru = en, ru
         lits = _literals(en)
         self.pattern = re.compile("(.*?)".join(re.escape(s) for s in lits), re.DOTALL)
+        self.balanced = re.compile(_BALANCED.join(re.escape(s) for s in lits), re.DOTALL)
         self.anchor = max(lits, key=len)
         self.weight = sum(len(s) for s in lits)
 
@@ -216,26 +223,60 @@ def tr(text: str, lang: str | None = None) -> str:
 _MAX_DEPTH = 4
 
 
-def _translate(text: str, depth: int) -> str:
-    if depth > _MAX_DEPTH or not re.search(r"[A-Za-z]", text):
-        return text
+def _matches(text: str) -> list[tuple[int, object]]:
+    """The templates matching ``text`` whole, as (balanced, hit): ``balanced`` is 1 when
+    the fields' brackets balance; ``hit`` is the entry, or the Russian text of an exact
+    one. Fields are translated by the caller."""
     exact = _exact().get(text)
     if exact is not None:
-        return exact
+        return [(1, exact)]
+    out: list[tuple[int, object]] = []
     for e in catalogue():
         if e.anchor not in text or not template_fields(e.en):
             continue
-        m = e.pattern.fullmatch(text)
-        if m:
-            return e.ru.format(*(_translate(g, depth + 1) for g in m.groups()))
-    head, found, tail = text.partition(": ")  # a file name, a key path: the tail is the message
-    if found and tail:
-        new_tail = _translate(tail, depth + 1)
-        if new_tail != tail:
-            return _exact().get(head, head) + found + new_tail
+        if e.balanced.fullmatch(text):
+            out.append((1, e))
+        elif e.pattern.fullmatch(text):
+            out.append((0, e))
+    return out
+
+
+_LATIN = re.compile(r"[a-z]{2,}")
+
+
+def _translate(text: str, depth: int) -> str:
+    """The Russian of ``text``: of the templates matching the whole text or a tail of it
+    after a ``": "`` (the head — a file name, a key path, another message — translated in
+    turn), the reading that leaves the fewest English letters; else its parts around
+    ``"; "`` or ``" — "``; else ``text``."""
+    if depth > _MAX_DEPTH or not re.search(r"[A-Za-z]", text):
+        return text
+    best: tuple[tuple[int, int, int, int], str] | None = None
+    pos = 0
+    while True:
+        for balanced, hit in _matches(text[pos:]):
+            if isinstance(hit, _Entry):
+                tail = text[pos:]
+                m = (hit.balanced.fullmatch(tail) if balanced else None) or \
+                    hit.pattern.fullmatch(tail)
+                assert m is not None
+                body = hit.ru.format(*(_translate(g, depth + 1) for g in m.groups()))
+            else:
+                body = str(hit)
+            new = body if pos == 0 else _translate(text[:pos - 2], depth + 1) + ": " + body
+            score = (sum(len(w) for w in _LATIN.findall(new)), -balanced, pos,
+                     -getattr(hit, "weight", len(text)))
+            if best is None or score < best[0]:
+                best = (score, new)
+        nxt = text.find(": ", pos)
+        if nxt < 0:
+            break
+        pos = nxt + 2
+    if best is not None:
+        return best[1]
     for sep in ("; ", " — "):  # a message and its hint, each of its own template
-        head, found, tail = text.partition(sep)
-        if found and tail:
+        head, found_sep, tail = text.partition(sep)
+        if found_sep and tail:
             new = _translate(head, depth + 1) + sep + _translate(tail, depth + 1)
             if new != text:
                 return new

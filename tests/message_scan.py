@@ -13,11 +13,14 @@ given to
   builds one (``fail``, ``_fail``, ``raise_bad``) — every string argument;
 * ``print`` — its first argument;
 * an option's ``help=`` or a parser's ``description=``, and a module's ``HELP = …``;
+* a value given to a name that holds a message or a part of one (``hint``, ``what``,
+  ``msg``, ``message``, ``reason``, ``extra``);
 * a ``yield``, a ``return`` or an ``.append`` inside a function whose name says it makes
-  warnings or hints (``*warning*``, ``*hint*``).
+  warnings or hints (``*warning*``, ``*hint*``), or names a position (``where``);
+* a ``lambda`` that makes one of these on demand.
 
 Its template is the English text with each replacement field written ``{}``; a template
-needs a Russian twin when its literal text has an English word and a space (a key path
+needs a Russian twin when its literal text has a lowercase English word and a space (a key path
 such as ``loads[{}].working`` does not).
 """
 
@@ -34,8 +37,10 @@ BUILDERS = {"fail", "_fail", "raise_bad", "failed"}
 #: Python's own exceptions: raised for a bug of graphplan, printed as an internal error.
 BUILTIN = {"ValueError", "TypeError", "AttributeError", "RuntimeError", "AssertionError",
            "KeyError", "IndexError", "NotImplementedError", "LookupError"}
-MAKERS = re.compile(r"warning|hint", re.I)
-WORD = re.compile(r"[A-Za-z]{2,}")
+#: Names a message or a part of one is kept in before it is raised or printed.
+PARTS = {"HELP", "hint", "what", "msg", "message", "reason", "extra"}
+MAKERS = re.compile(r"warning|hint|^where$", re.I)
+WORD = re.compile(r"[a-z]{2,}")
 
 
 def _esc(s: str) -> str:
@@ -59,6 +64,8 @@ def templates(node: ast.AST) -> list[str]:
         if not left and not right:
             return []
         return [a + b for a in (left or ["{}"]) for b in (right or ["{}"])]
+    if isinstance(node, ast.Lambda):  # a message made on demand: _fail(bad, lambda k: f"…")
+        return templates(node.body)
     if isinstance(node, ast.IfExp):
         return templates(node.body) + templates(node.orelse)
     if isinstance(node, ast.Call) and node.args and _name(node.func) in (
@@ -86,6 +93,9 @@ def _message_nodes(tree: ast.AST) -> Iterator[ast.AST]:
                              if isinstance(f, ast.FunctionDef | ast.AsyncFunctionDef)
                              and MAKERS.search(f.name)]
     for node in ast.walk(tree):
+        if (isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call) and node.exc.args
+                and _name(node.exc.func) not in BUILTIN):
+            yield node.exc.args[0]  # raise error(f"…"): an exception class given as a value
         if isinstance(node, ast.Call):
             name = _name(node.func)
             if (name.endswith("Error") and name not in BUILTIN) or name in BUILDERS:
@@ -96,7 +106,7 @@ def _message_nodes(tree: ast.AST) -> Iterator[ast.AST]:
                 if kw.arg in ("help", "description"):
                     yield kw.value
         elif isinstance(node, ast.Assign) and any(
-                isinstance(t, ast.Name) and t.id == "HELP" for t in node.targets):
+                isinstance(t, ast.Name) and t.id in PARTS for t in node.targets):
             yield node.value
     for f in makers:
         for node in ast.walk(f):

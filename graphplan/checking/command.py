@@ -18,6 +18,8 @@ import os
 import sys
 from pathlib import Path
 
+from ..i18n import tr
+
 HELP = "check a student's calculation (a student file, or a folder of them) against graphplan"
 
 
@@ -151,9 +153,9 @@ def _file(path: Path, args, tol: dict, multiple: bool, name: str = "") -> int:
 
     work = load_student(path)
     if work.tolerances:
-        print(terminal_text(f"graphplan: note: {path}: the file's own [tolerances] are "
-                            "ignored (tolerances are the teacher's: --segment-tolerance, "
-                            "--class …)"), file=sys.stderr)
+        print(terminal_text(tr(f"graphplan: note: {path}: the file's own [tolerances] are "
+                               "ignored (tolerances are the teacher's: --segment-tolerance, "
+                               "--class …)")), file=sys.stderr)
         work = dataclasses.replace(work, tolerances={})
     if args.teacher_variant is not None:
         work = dataclasses.replace(work, variant=args.teacher_variant)
@@ -229,18 +231,18 @@ def _folder(folder: Path, args, tol: dict) -> int:
 
     batch = check_folder(folder, args.output, jobs=args.jobs, tolerances=tol, lang=args.lang,
                          variant=args.teacher_variant, limits=limits, resume=args.resume,
-                         progress=lambda r: print(line(r), flush=True))
+                         progress=lambda r: print(tr(line(r)), flush=True))
     for name in batch.skipped:
-        print(f"{terminal_text(Path(name).name)}: not a student file (no [work] table), "
-              "skipped", file=sys.stderr)
+        print(tr(f"{terminal_text(Path(name).name)}: not a student file (no [work] table), "
+                 "skipped"), file=sys.stderr)
     n_err = sum(r.status == "error" for r in batch.rows)
     n_ok = sum(r.status == "ok" for r in batch.rows)
-    print(f"{len(batch.rows)} files: {n_ok} without faults, {len(batch.rows) - n_ok - n_err} "
-          f"with faults, {n_err} not checked"
-          + (f"; class variant {terminal_text(batch.class_variant)}" if batch.class_variant
-             else "")
-          + (f"; summary in {terminal_text(str(Path(args.output) / 'summary.html'))}"
-             if args.output else ""))
+    print(tr(f"{len(batch.rows)} files: {n_ok} without faults, "
+             f"{len(batch.rows) - n_ok - n_err} with faults, {n_err} not checked"
+             + (f"; class variant {terminal_text(batch.class_variant)}"
+                if batch.class_variant else "")
+             + (f"; summary in {terminal_text(str(Path(args.output) / 'summary.html'))}"
+                if args.output else "")))
     return 0 if batch.ok else 1
 
 

@@ -17,6 +17,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from ..i18n import tr
+
 HELP = "write step-by-step teaching pages (HTML, no network) of the plans of a variant"
 
 
@@ -67,7 +69,7 @@ def run(args: argparse.Namespace) -> int:
             files = write_lesson(les, args.output, lang=lang, frames=args.frames,
                                  protect=(path,))
             extra = f" (+ {len(files) - 1} frames)" if len(files) > 1 else ""
-            print(f"{path}: {files[0]} — {len(les.steps)} steps{extra}")
+            print(tr(f"{path}: {files[0]} — {len(les.steps)} steps{extra}"))
     from ..files import write_atomic
     from .index import INDEX_NAME, index_page
 
@@ -76,5 +78,5 @@ def run(args: argparse.Namespace) -> int:
                          index_page(args.output, variant=str(title),
                                     labels=tuple(analysis.kin.labels), lang=lang),
                          protect=(path,))
-    print(f"{path}: {index} — the index of the lessons")
+    print(tr(f"{path}: {index} — the index of the lessons"))
     return 0

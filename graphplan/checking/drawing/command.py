@@ -17,6 +17,7 @@ import json
 import sys
 from pathlib import Path
 
+from ...i18n import tr
 from .read import FORMATS
 
 
@@ -102,7 +103,7 @@ def _many(files: list[Path], variant: Path, args, tol: dict, lang: str) -> int:
             dc = check_drawing(f, variant, tol, lang)
         except (GraphplanError, ValueError) as exc:
             msg = " ".join(str(exc).split())
-            print(f"{f.name.ljust(width)}  error   {msg}")
+            print(tr(f"{f.name.ljust(width)}  error   {msg}"))
             rows.append((f.name, "error", "", "", "", msg))
             status = 1
             continue
@@ -110,8 +111,8 @@ def _many(files: list[Path], variant: Path, args, tol: dict, lang: str) -> int:
         c = rep.counts()
         st = "ok" if rep.ok else "faults"
         kinds = ", ".join(sorted({x.kind for x in rep.wrong if x.primary}))
-        print(f"{f.name.ljust(width)}  {st:<6}  {len(rep.figures)} figures, {c['wrong']} "
-              f"wrong, {c['primary']} faults{': ' + kinds if kinds else ''}")
+        print(tr(f"{f.name.ljust(width)}  {st:<6}  {len(rep.figures)} figures, {c['wrong']} "
+                 f"wrong, {c['primary']} faults{': ' + kinds if kinds else ''}"))
         rows.append((f.name, st, len(rep.figures), c["wrong"], c["primary"], kinds))
         status = max(status, 0 if rep.ok else 1)
         if args.output:
@@ -132,8 +133,8 @@ def _many(files: list[Path], variant: Path, args, tol: dict, lang: str) -> int:
         write_atomic(Path(args.output) / "summary.csv", buf.getvalue(), protect=(variant,))
     n_ok = sum(r[1] == "ok" for r in rows)
     n_err = sum(r[1] == "error" for r in rows)
-    print(f"{len(rows)} drawings: {n_ok} without faults, {len(rows) - n_ok - n_err} with "
-          f"faults, {n_err} not checked")
+    print(tr(f"{len(rows)} drawings: {n_ok} without faults, {len(rows) - n_ok - n_err} "
+             f"with faults, {n_err} not checked"))
     return status
 
 
