@@ -248,6 +248,8 @@ def main(argv: list[str] | None = None) -> int:
     previous = None
     with contextlib.suppress(ValueError, AttributeError):  # not the main thread / Windows
         previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    if args.ui_lang and getattr(args, "lang", "") is None:
+        args.lang = args.ui_lang  # `graphplan --lang ru check …`: the reports too
     try:
         return COMMANDS[args.command](args)
     except BrokenPipeError:  # pragma: no cover - `graphplan analyze | head`
