@@ -164,11 +164,12 @@ class Scale:
 
     @property
     def basis(self) -> str:
-        """How the scale is written on a sheet: ``Kl = lOA/OA = 0.08/80 = 0.001 m/mm``."""
+        """How the scale is written on a sheet: ``Kl = lOA/OA = 0.08/80 = 0.001 m/mm``, its
+        numbers as a draftsman writes them, never with a power of ten (:func:`plain`)."""
         if self.quantity and self.drawn_mm:
-            return (f"{self.symbol} = {self.quantity}/{self.segment} = {fmt(self.value, 5)}/"
-                    f"{fmt(self.drawn_mm, 5)} = {fmt(self.per_mm)} {self.unit}")
-        return f"{self.symbol} = {fmt(self.per_mm)} {self.unit}"
+            return (f"{self.symbol} = {self.quantity}/{self.segment} = {plain(self.value, 5)}/"
+                    f"{plain(self.drawn_mm, 5)} = {plain(self.per_mm)} {self.unit}")
+        return f"{self.symbol} = {plain(self.per_mm)} {self.unit}"
 
 
 def fit_scale(symbol: str, unit: str, largest: float, room_mm: float, *, quantity: str = "",

@@ -26,7 +26,7 @@ from ..errors import LayoutError
 from ..kinematics import Cycle
 from ..model import Mechanism
 from ..plans import MIN_NODES, KinematicDiagrams, kinematic_diagrams
-from ..units import fmt
+from ..units import plain
 from . import fonts
 
 MM = 72 / 25.4  #: points per millimetre
@@ -274,8 +274,8 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
             label = f"{names[k]}, {units[k]}"
             ax.text(2.5 * x_per_mm, tip, label, ha="left", va="center", **_font(label, TEXT_H))
             unit = f"({units[k]})" if "/" in units[k] else units[k]
-            scale = f"K{names[k]} = {fmt(K, 4)} {unit}/{t['mm']}" + (
-                f",  H{k} = {fmt(pole)} {t['mm']}" if k else "")
+            scale = f"K{names[k]} = {plain(K, 4)} {unit}/{t['mm']}" + (
+                f",  H{k} = {plain(pole)} {t['mm']}" if k else "")
             ax.text((4.5 + fonts.text_width(label, TEXT_H)) * x_per_mm, tip, scale,
                     ha="left", va="center", **_font(scale, SMALL_H))
             chords = (d.s_nodes, d.v_chords, d.a_chords)[k]
@@ -298,7 +298,7 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
                 ax.plot(d.node_deg, chords, "-k", lw=MAIN * MM)
             ax.plot((d.mid_deg, d.node_deg)[k - 1], chords, "o", color="black",
                     markersize=1.0 * MM, lw=0)
-        kphi = f"Kφ = {fmt(d.Kphi, 4)} {t['rad']}/{t['mm']}"
+        kphi = f"Kφ = {plain(d.Kphi, 4)} {t['rad']}/{t['mm']}"
         fig.text((x0 + 2) / width_mm, 1 - 1.5 / height_mm, kphi, ha="left", va="top",
                  **_font(kphi, SMALL_H))
         handles = [Line2D([], [], color="black", lw=THIN * MM),

@@ -5,7 +5,10 @@ room, and writes coincident points together (``p, b``). :func:`place_labels` doe
 the same: labels whose anchors lie within ``merge_mm`` of each other (and share a
 ``group``) become one text; each text then takes the first free spot of a ring of
 candidates around its anchor, nearest first, that overlaps no placed text and
-crosses as few lines as possible.
+crosses as few lines as possible. Where every spot near the point is crossed by a line
+(the centre of a plan of positions, where a dozen cranks meet), a placer asked for
+``leaders`` looks farther out for a clear spot and joins the letter to its point with a
+thin leader line (выноска, GOST 2.316), as a draftsman does.
 
 Paper coordinates, mm, y down (see :mod:`graphplan.drawing.sheet`).
 """
@@ -20,7 +23,7 @@ import numpy as np
 import shapely
 from shapely.geometry.base import BaseGeometry
 
-from .sheet import Pt, Text, text_at_centre, text_box
+from .sheet import THIN, Line, Pt, Text, text_at_centre, text_box
 
 #: Directions tried around an anchor (degrees, counter-clockwise as seen), best first.
 _DIRECTIONS = (45, 135, -45, -135, 0, 180, 90, -90, 22.5, 157.5, -22.5, -157.5,
@@ -62,7 +65,8 @@ def merge_coincident(requests: Sequence[LabelRequest], merge_mm: float) -> list[
 
 def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeometry], *,
                  layer: str, id_prefix: str, merge_mm: float = 1.0, gap: float = 0.8,
-                 max_radius: float = 14.0, keep_out: Sequence[BaseGeometry] = ()) -> list[Text]:
+                 max_radius: float = 14.0, keep_out: Sequence[BaseGeometry] = (),
+                 leaders: float = 0.0) -> list[Text | Line]:
     """Texts for ``requests``, clear of each other and, where possible, of the lines.
 
     Parameters
@@ -81,16 +85,20 @@ def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeome
         Farthest ring tried before the least bad spot is taken.
     keep_out : sequence of shapely geometries
         Areas a text must not enter at all (other figures, the title block).
+    leaders : float
+        When no spot within ``max_radius`` is clear of the lines, look up to this far
+        (mm) for a clear one and draw a thin leader from the point to the text (0: never;
+        the least bad spot near the point is taken).
 
     Returns
     -------
-    list of Text
+    list of Text (and of Line: the leaders, ids ``{id_prefix}-{i}-leader``)
     """
     reqs = merge_coincident(requests, merge_mm)
     obst_tree = shapely.STRtree(list(obstacles)) if obstacles else None
     keep_tree = shapely.STRtree(list(keep_out)) if keep_out else None
     placed: list[BaseGeometry] = []
-    texts: list[Text] = []
+    texts: list[Text | Line] = []
     for n, r in enumerate(reqs):
         probe = text_at_centre((0.0, 0.0), r.text, r.height, layer=layer)
         b0 = text_box(probe)
@@ -126,6 +134,15 @@ def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeome
             if best is not None and best[0] < 10.0:
                 break
             ring += 1.5
+        if leaders > 0 and (best is None or best[0] >= 10.0):
+            far = _leader_spot(r, dirs, half, max_radius, leaders, placed, obst_tree,
+                               keep_tree, layer, f"{id_prefix}-{n + 1}")
+            if far is not None:
+                t, box, line = far
+                placed += [box, line.buffer(0.3)]
+                texts += [t, Line(line.coords[0], line.coords[-1], THIN, layer=layer,
+                                  id=f"{id_prefix}-{n + 1}-leader")]
+                continue
         if best is None:  # everything near is taken: go outwards until free
             ring = max_radius
             while best is None:
@@ -140,3 +157,37 @@ def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeome
         placed.append(best[2])
         texts.append(best[1])
     return texts
+
+
+def _leader_spot(r: LabelRequest, dirs, half, start: float, stop: float, placed, obst_tree,
+                 keep_tree, layer: str, ident: str):
+    """A spot between ``start`` and ``stop`` mm from the anchor whose text and leader cross
+    no line, no placed text and no kept-out area: ``(text, box, leader)`` or None."""
+    from shapely.geometry import LineString, Point
+
+    ring = start
+    while ring <= stop + 1e-9:
+        for d in [*dirs, *(x + 11.25 for x in _DIRECTIONS)]:
+            u = np.array([math.cos(math.radians(d)), -math.sin(math.radians(d))])
+            reach = min(half[0] / abs(u[0]) if abs(u[0]) > 1e-9 else math.inf,
+                        half[1] / abs(u[1]) if abs(u[1]) > 1e-9 else math.inf)
+            c = np.asarray(r.anchor) + u * (reach + ring)
+            t = text_at_centre((float(c[0]), float(c[1])), r.text, r.height, layer=layer,
+                               id=ident)
+            box = text_box(t).buffer(0.3)
+            if any(box.intersects(p) for p in placed):
+                continue
+            if keep_tree is not None and len(keep_tree.query(box, predicate="intersects")):
+                continue
+            if obst_tree is not None and len(obst_tree.query(box, predicate="intersects")):
+                continue
+            # the leader: from just off the point to just off the text's box
+            a = np.asarray(r.anchor) + u * 2.0
+            edge = box.buffer(0.4).exterior
+            b = edge.interpolate(edge.project(Point(*r.anchor)))
+            line = LineString([tuple(a), (b.x, b.y)])
+            if line.length < 1.0 or any(line.intersects(p) for p in placed):
+                continue
+            return t, box, line
+        ring += 2.0
+    return None

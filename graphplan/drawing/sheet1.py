@@ -223,14 +223,35 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     cap_h = next((h for h in (5.0, 3.5, 2.5)
                   if text_width(Text((0, 0), cap_text, h, layer="text")) <= col.x1 - box.x0),
                  2.5)
-    caption = Text((box.x0, box.y0 + 2.0), cap_text, cap_h, layer="text", id="pp-caption")
     page = sc.layout.page
-    margin = page.trim.polygon().difference(page.frame.polygon().buffer(-1.0))
+    caption = _clear_caption(box, cap_text, cap_h, obstacles, [page.graph26_rect.polygon()],
+                             (col.x0, col.x1))
+    margin = page.trim.polygon().buffer(500.0).difference(page.frame.polygon().buffer(-1.0))
     keep = [text_box(caption).buffer(1.0), page.graph26_rect.polygon(), margin]
     items += place_labels(labels, obstacles, layer=L, id_prefix="pp-label", merge_mm=1.2,
-                          keep_out=keep)
+                          keep_out=keep, leaders=60.0)
     items.append(caption)
     return items
+
+
+def _clear_caption(box: Rect, text: str, h: float, obstacles, avoid,
+                   span: tuple[float, float]) -> Text:
+    """The caption of the plan of positions at the top left of its box, or, where a line
+    of the plan runs there (a guide reaching up), the first place along the box's top
+    (a little above it too, clear of ``avoid``: graph 26) and bottom that no line crosses."""
+    from shapely import STRtree
+
+    tree = STRtree(list(obstacles) + list(avoid))
+    w = text_width(Text((0, 0), text, h, layer="text"))
+    lo, hi = min(box.x0, span[0]), max(box.x1, span[1])  # the column the box is in
+    xs = [box.x0] + ([lo + i * (hi - lo - w) / 8 for i in range(9)] if hi - lo > w else [])
+    spots = [(x, y) for y in (box.y0 + 2.0, box.y0 - 1.0, box.y0 - 3.0, box.y1 - 1.0)
+             for x in xs]
+    for x, y in spots:
+        t = Text((x, y), text, h, layer="text", id="pp-caption")
+        if not len(tree.query(text_box(t).buffer(0.5), predicate="intersects")):
+            return t
+    return Text(spots[0], text, h, layer="text", id="pp-caption")
 
 
 def _dedupe(reqs: list[LabelRequest]) -> list[LabelRequest]:
