@@ -235,6 +235,35 @@ def write_atomic(path: str | Path, data: str | bytes, protect: tuple[Path, ...] 
     return path
 
 
+CACHE_ENV = "GRAPHPLAN_CACHE_DIR"
+"""Environment variable: the folder of graphplan's cache (empty: no cache at all)."""
+
+
+def user_cache_dir() -> Path | None:
+    """The folder where graphplan keeps what it can compute again (font metrics), or None.
+
+    ``$GRAPHPLAN_CACHE_DIR`` when set (set empty, no cache is used); else the platform's
+    per-user cache folder: ``%LOCALAPPDATA%\\graphplan\\Cache`` on Windows,
+    ``~/Library/Caches/graphplan`` on macOS, ``$XDG_CACHE_HOME/graphplan`` (default
+    ``~/.cache/graphplan``) elsewhere. The folder may not exist yet nor be writable: a
+    cache is only ever an optimisation, and its users fall back on computing.
+    """
+    spec = os.environ.get(CACHE_ENV)
+    if spec is not None:
+        return Path(spec) if spec else None
+    try:
+        if sys.platform == "win32":
+            base = os.environ.get("LOCALAPPDATA")
+            return Path(base) / "graphplan" / "Cache" if base else None
+        home = Path.home()
+    except (OSError, RuntimeError):  # no home folder (a service account)
+        return None
+    if sys.platform == "darwin":
+        return home / "Library" / "Caches" / "graphplan"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg and os.path.isabs(xdg) else home / ".cache") / "graphplan"
+
+
 #: Notepad's byte order marks: UTF-8 ("UTF-8 with BOM") and UTF-16 ("Unicode").
 _BOMS = ((b"\xef\xbb\xbf", "utf-8"), (b"\xff\xfe", "utf-16-le"), (b"\xfe\xff", "utf-16-be"))
 
@@ -408,5 +437,6 @@ def write_set(out_dir: str | Path, files: dict[str, str | bytes],
     return tuple(Path(out_dir) / name for name in files)
 
 
-__all__ = ["MAX_INPUT_BYTES", "OutputError", "bundled_example", "decode_text", "examples_dir",
-           "os_error_text", "read_input", "recover_set", "write_atomic", "write_set"]
+__all__ = ["CACHE_ENV", "MAX_INPUT_BYTES", "OutputError", "bundled_example", "decode_text",
+           "examples_dir", "os_error_text", "read_input", "recover_set", "user_cache_dir",
+           "write_atomic", "write_set"]

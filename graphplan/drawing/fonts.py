@@ -259,10 +259,120 @@ def glyph_is_blank(glyph_set, glyph_name: str, char: str) -> bool:
 
 @cache
 def load_font(family: str) -> FontInfo | None:
-    """Read the metrics and the real glyph coverage of ``family``; None if not installed."""
+    """Read the metrics and the real glyph coverage of ``family``; None if not installed.
+
+    Reading a font and drawing its glyphs to find the blank ones takes a tenth of a
+    second or more per file, so the result is kept in the user's cache folder
+    (:func:`graphplan.files.user_cache_dir`), keyed by the SHA-256 of the file's bytes
+    and of the rules that judge a glyph (:func:`_metrics_key`): another file, or a file
+    changed in place, or a new rule, is read again, never given another's metrics. A
+    cache entry that cannot be read or does not check out is ignored; a cache folder
+    that cannot be written is left alone (the metrics are then computed every run).
+    """
     path = find_font_file(family)
     if path is None:
         return None
+    try:
+        raw = path.read_bytes()
+    except OSError:
+        return None
+    key = _metrics_key(raw)
+    cached = _read_cached_metrics(key)
+    if cached is not None:
+        upem, cap, advances, covered, blank = cached
+    else:
+        measured = _measure_font(path)
+        if measured is None:
+            return None
+        upem, cap, advances, covered, blank = measured
+        _write_cached_metrics(key, measured)
+    return FontInfo(
+        family=family, path=path, units_per_em=upem, cap_height=cap,
+        advances=MappingProxyType(advances), covered=frozenset(covered), blank=frozenset(blank),
+    )
+
+
+_METRICS_FORMAT = 1
+"""Version of the cached metrics' layout (and of :func:`glyph_is_blank`'s rule): bumped
+when either changes, so an old entry is never read as a new one."""
+
+
+def _metrics_key(raw: bytes) -> str:
+    """SHA-256 of a font file's bytes and of what the measurement depends on."""
+    import hashlib
+
+    h = hashlib.sha256()
+    h.update(f"graphplan font metrics {_METRICS_FORMAT}\n".encode())
+    h.update(",".join(map(str, sorted(_CHECKED))).encode())
+    h.update(("|" + "".join(sorted(_SIMPLE_LETTERS)) + f"|{FALLBACK_CAP_RATIO!r}|").encode())
+    h.update(raw)
+    return h.hexdigest()
+
+
+def _metrics_path(key: str) -> Path | None:
+    from ..files import user_cache_dir
+
+    folder = user_cache_dir()
+    return None if folder is None else folder / "font-metrics" / f"{key}.json"
+
+
+_Metrics = tuple[int, float, dict[int, int], set[int], set[int]]
+
+
+def _read_cached_metrics(key: str) -> _Metrics | None:
+    """The metrics stored under ``key``, or None (absent, unreadable, or not as written)."""
+    import json
+
+    path = _metrics_path(key)
+    if path is None:
+        return None
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        if data.get("format") != _METRICS_FORMAT or data.get("key") != key:
+            return None
+        upem, cap = data["units_per_em"], data["cap_height"]
+        adv, covered, blank = data["advances"], data["covered"], data["blank"]
+        ok = (type(upem) is int and upem > 0 and type(cap) is float and cap > 0
+              and isinstance(adv, list) and isinstance(covered, list)
+              and isinstance(blank, list)
+              and all(isinstance(a, list) and len(a) == 2 and type(a[0]) is int
+                      and type(a[1]) is int for a in adv)
+              and all(type(c) is int for c in covered) and all(type(c) is int for c in blank))
+        if not ok:
+            return None
+        advances = {cp: w for cp, w in adv}
+        cov, bl = set(covered), set(blank)
+        if len(advances) != len(adv) or cov & bl or (cov | bl) != advances.keys():
+            return None
+        return upem, cap, advances, cov, bl
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
+
+
+def _write_cached_metrics(key: str, metrics: _Metrics) -> None:
+    """Store the metrics under ``key`` (atomically); silently nothing if it cannot."""
+    import json
+
+    from ..errors import GraphplanError
+    from ..files import write_atomic
+
+    path = _metrics_path(key)
+    if path is None:
+        return
+    upem, cap, advances, covered, blank = metrics
+    text = json.dumps({"format": _METRICS_FORMAT, "key": key, "units_per_em": upem,
+                       "cap_height": float(cap),
+                       "advances": sorted([cp, w] for cp, w in advances.items()),
+                       "covered": sorted(covered), "blank": sorted(blank)},
+                      separators=(",", ":"))
+    try:
+        write_atomic(path, text)
+    except (OSError, GraphplanError):  # a read-only home, a full disk: compute next time
+        pass
+
+
+def _measure_font(path: Path) -> _Metrics | None:
+    """Units per em, cap height, advances, covered and blank code points of a font file."""
     try:
         from fontTools.pens.boundsPen import BoundsPen
         from fontTools.ttLib import TTFont
@@ -298,10 +408,9 @@ def load_font(family: str) -> FontInfo | None:
     finally:
         if "font" in locals():
             font.close()  # a lazy TTFont keeps its file open until closed
-    return FontInfo(
-        family=family, path=path, units_per_em=upem, cap_height=cap,
-        advances=MappingProxyType(advances), covered=frozenset(covered), blank=frozenset(blank),
-    )
+    if upem <= 0:
+        return None
+    return upem, float(cap), advances, covered, blank
 
 
 def _coverage(family: str) -> frozenset[int]:
