@@ -43,6 +43,7 @@ fontTools (a declared dependency) is imported only when a font file is read.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import unicodedata
 from collections.abc import Mapping
@@ -365,10 +366,9 @@ def _write_cached_metrics(key: str, metrics: _Metrics) -> None:
                        "advances": sorted([cp, w] for cp, w in advances.items()),
                        "covered": sorted(covered), "blank": sorted(blank)},
                       separators=(",", ":"))
-    try:
+    # a read-only home, a full disk: the metrics are computed again next time
+    with contextlib.suppress(OSError, GraphplanError):
         write_atomic(path, text)
-    except (OSError, GraphplanError):  # a read-only home, a full disk: compute next time
-        pass
 
 
 def _measure_font(path: Path) -> _Metrics | None:

@@ -22,8 +22,10 @@ group on an earlier link becoming a known load of that link's group.
   (the mean of the group's pair points; 1 equation), with every reaction entering with
   + on the link it acts on and − on the link that exerts it (the inner pair).
 
-The 6×6 system is solved for all positions at once with :func:`numpy.linalg.solve`
-(batched). It is made dimensionless before solving: the moment equations are divided
+The 6×6 system is solved for all positions at once in closed form (:func:`_solve_dyad`:
+the inner pair eliminated by the normals of the pairs' columns, leaving the 2×2 of the
+force plan's two closing lines, by Cramer's rule; its determinant is det A, so the
+singularity check needs no second factorisation). It is made dimensionless before solving: the moment equations are divided
 by the group's size L and the unknown couples are ``M_P/L``, so that every unknown is a
 force and the condition number ``κ`` (2-norm, reported per dyad in
 :attr:`Forces.conditioning`) grows like 1/sin of the angle between the two closing
@@ -60,9 +62,9 @@ check of the tests, Zhukovsky's lever) ``M_ур·ω1 + Σ F·v + Σ M·ω = 0``.
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from itertools import combinations
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -149,7 +151,8 @@ class Forces:
     crank : str
         The crank's link (the frame's reaction on it, at its pivot, is the last reaction).
     systems : dict[str, ndarray (N, 6, 6)]
-        Per dyad, the matrix of its dimensionless equilibrium equations.
+        Per dyad, the matrix of its dimensionless equilibrium equations (built on first
+        access: the solve does without it).
     loads : Loads
         The loads the analysis was made with.
 
@@ -164,7 +167,7 @@ class Forces:
     reactions: dict[str, Reaction]
     M_bal: Array
     crank: str
-    systems: dict[str, Array]
+    systems: Mapping[str, Array]
     loads: Loads
     _kappa: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
 
@@ -325,7 +328,7 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
     for m in loads.all_moments():
         ext_m.get(m.link, []).append(m.moment)
     reactions: dict[str, Reaction] = {}
-    systems: dict[str, Array] = {}
+    systems = _Systems()
     solutions: list[Array] = []
 
     def fail(k: int, what: str, dyad: str) -> SingularPoseError:
@@ -341,52 +344,41 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
         L = np.full(n, mech.crank.length)
         for a, b in combinations(Xc, 2):
             L = np.maximum(L, np.abs(a - b))
-        # filled entry by entry along the positions (contiguous rows), then viewed as
-        # N matrices: LAPACK copies each into its own buffer anyway
-        T = np.zeros((6, 6, n))
-        R = np.zeros((6, n))
-        # per pair, the entries of its columns (the same for both links, but the sign)
-        cols: list[tuple[Any, Any, Any]] = []  # e2 is None for a turning pair
-        for pr, xj in zip(pairs, Xc, strict=True):
-            r = xj - c
+        cols = []
+        for pr, x in zip(pairs, Xc, strict=True):
+            r = x - c
             if pr.kind == "R":
-                cols.append((r.imag / L, r.real / L, None))
+                cols.append(("R", r, None))
             else:
-                nv = 1j * as_complex(kin.pos.guides[pr.slide_guide][1])
-                cols.append((nv.real, nv.imag, (np.conj(r) * nv).imag / L))
-        for li, link in enumerate(d.links):
-            row = 3 * li
+                cols.append(("P", r, 1j * as_complex(kin.pos.guides[pr.slide_guide][1])))
+        rhs_f, rhs_m = [], []
+        for link in d.links:
             F = sum((v for v, _ in ext_f[link]), 0j)
             M = sum(((np.conj(at - c) * v).imag for v, at in ext_f[link]), zeros)
             M = M + sum(ext_m[link], zeros)
-            R[row] = -np.real(F)
-            R[row + 1] = -np.imag(F)
-            R[row + 2] = -M / L
-            for p, (pr, (e0, e1, e2)) in enumerate(zip(pairs, cols, strict=True)):
-                s = 1.0 if pr.on == link else -1.0 if pr.by == link else 0.0
-                if not s:
-                    continue
-                col = 2 * p
-                if pr.kind == "R":
-                    T[row, col] = s
-                    T[row + 1, col + 1] = s
-                    T[row + 2, col] = -e0 if s > 0 else e0
-                    T[row + 2, col + 1] = e1 if s > 0 else -e1
-                else:
-                    T[row, col] = e0 if s > 0 else -e0
-                    T[row + 1, col] = e1 if s > 0 else -e1
-                    T[row + 2, col] = e2 if s > 0 else -e2
-                    T[row + 2, col + 1] = s
-        A = T.transpose(2, 0, 1)
-        rhs = R.T
-        if not np.isfinite(rhs).all():
-            raise fail(int(np.argmin(np.isfinite(rhs).all(axis=1))), "the loads are not finite",
-                       d.name)
-        _check_singular(A, lambda k, kappa, name=d.name: fail(
-            k, f"the force analysis is singular (condition number {kappa:.3g}; "
-            "the closing lines of its force plan are parallel)", name))
-        x = np.linalg.solve(A, rhs[..., None])[..., 0].astype(float, copy=False)
-        systems[d.name] = A
+            rhs_f.append(-F)
+            rhs_m.append(-M / L)
+        if not all(np.isfinite(z).all() for z in (*rhs_f, *rhs_m)):
+            rhs = np.stack([np.broadcast_to(z, (n,)) for f, m in zip(rhs_f, rhs_m, strict=True)
+                            for z in (np.real(f), np.imag(f), m)], axis=1)
+            raise fail(int(np.argmin(np.isfinite(rhs).all(axis=1))),
+                       "the loads are not finite", d.name)
+
+        def singular(k, kappa, name=d.name):
+            return fail(k, f"the force analysis is singular (condition number {kappa:.3g}; "
+                        "the closing lines of its force plan are parallel)", name)
+
+        build = _MatrixOf(pairs, d.links, cols, L, n)
+        if _standard_dyad(pairs, d.links):
+            x, det, fro2 = _solve_dyad(cols, L, rhs_f, rhs_m, n)
+            _check_singular(build, singular, det, fro2)
+        else:  # a dyad of another pattern of pairs: the general 6×6 solve
+            rhs = np.stack([np.broadcast_to(z, (n,)) for f, m in zip(rhs_f, rhs_m, strict=True)
+                            for z in (np.real(f), np.imag(f), m)], axis=1)
+            A = build()
+            _check_singular(build, singular, np.linalg.det(A), np.einsum("nij,nij->n", A, A))
+            x = np.linalg.solve(A, rhs[..., None])[..., 0]
+        systems.add(d.name, build)
         solutions.append(x)
         big = np.max(np.abs(x), axis=1)
         for p, (pr, xp, xc) in enumerate(zip(pairs, X, Xc, strict=True)):
@@ -432,25 +424,168 @@ def solve_forces(mech: Mechanism, kin: Kinematics, loads: Loads) -> Forces:
     return Forces(kin.phi, kin.labels, reactions, M_bal, cr.link, systems, loads)
 
 
-def _check_singular(A: Array, fail) -> None:
+def _check_singular(build, fail, det: Array, fro2: Array) -> None:
     """Raise ``fail(k, κ)`` at the first position whose system has ``κ > COND_LIMIT``.
 
     The condition number is bounded without a singular value decomposition:
     ``|det A| = σ1···σ6 ≤ σ1⁵·σ6`` and ``σ1 ≤ ‖A‖_F`` give ``κ = σ1/σ6 ≤ ‖A‖_F⁶/|det A|``,
     so only where that bound passes the limit is κ computed (and the pose refused if
-    it really does).
+    it really does). ``det`` and ``fro2 = ‖A‖_F²`` come from the solve itself
+    (:func:`_solve_dyad`); ``build(idx)`` gives the matrices of the positions ``idx``.
     """
-    fro6 = np.einsum("nij,nij->n", A, A) ** 3
-    suspect = ~(np.abs(np.linalg.det(A)) * COND_LIMIT > fro6)
+    suspect = ~(np.abs(det) * COND_LIMIT > fro2 ** 3)
     if not suspect.any():
         return
     idx = np.flatnonzero(suspect)
     with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = np.linalg.cond(A[idx])
+        kappa = np.linalg.cond(build(idx))
     bad = ~(kappa <= COND_LIMIT)
     if bad.any():
         j = int(np.argmax(bad))
         raise fail(int(idx[j]), float(kappa[j]))
+
+
+def _standard_dyad(pairs, links) -> bool:
+    """The pairs of a dyad (i, j) in the pattern :func:`_solve_dyad` solves: the first
+    acts on i only, the second is i's on j, the third acts on j only."""
+    i, j = links
+    p0, p1, p2 = pairs
+    return (p0.on == i and p0.by not in links and p1.by == i and p1.on == j
+            and p2.on == j and p2.by not in links)
+
+
+def _cross(col_a, col_b):
+    """The 3-vector ``a × b`` of two columns ``(force, moment)`` of the system, as
+    ``(force, moment)``: ``(i·(m_a·f_b − m_b·f_a), f_a × f_b)``."""
+    (fa, ma), (fb, mb) = col_a, col_b
+    return 1j * (ma * fb - mb * fa), (np.conj(fa) * fb).imag
+
+
+def _dot(u, col):
+    """The scalar product of two 3-vectors ``(force, moment)``."""
+    (uf, um), (f, m) = u, col
+    return (np.conj(uf) * f).real + um * m
+
+
+def _columns(col, L):
+    """A pair's two columns ``(force, moment)`` on the link it acts on (dimensionless):
+    a revolute pair's R_x, R_y at r (from the moment centre c; moments over L); a
+    prismatic pair's N along the normal n and its couple M/L."""
+    kind, r, nv = col
+    if kind == "R":
+        return (1.0, -(r.imag / L)), (1j, r.real / L)
+    return (nv, (np.conj(r) * nv).imag / L), (0.0, 1.0)
+
+
+def _solve_dyad(cols, L, rhs_f, rhs_m, n: int):
+    """A dyad's six equilibrium equations solved in closed form, all positions at once.
+
+    With the unknowns of the pairs x0 (on link i), x1 (of i on j) and x2 (on j), each
+    pair's two columns ``(a, b)`` (3-vectors: force, moment/L), the system is::
+
+        A0·x0 − B1·x1 = r_i          (link i: ΣF = 0, ΣM = 0)
+                B1·x1 + C2·x2 = r_j  (link j)
+
+    ``v = a0 × b0`` is normal to A0's columns and ``w = a1 × b1`` to B1's, so the sum
+    of the two links' equations dotted with v, and link j's dotted with w, leave x2
+    alone — the 2×2 of the two closing lines of the force plan::
+
+        [v·C2] x2 = v·(r_i + r_j),    [w·C2] x2 = w·r_j,
+
+    solved by Cramer's rule; then x0 and x1 from ``A0·x0 = r_i + r_j − C2·x2`` and
+    ``B1·x1 = r_j − C2·x2`` (a revolute pair's force is the force part itself; a
+    prismatic pair's N is its projection on n, its couple what remains of the moment).
+    The same elimination applied to det A gives ``det A = det D`` (the Gram determinants
+    of A0 and B1 are |v|² and |w|², and they cancel), so the singularity check of
+    :func:`_check_singular` costs nothing more; ``‖A‖_F²`` is the sum of the columns'
+    squares (B1's twice). Returns ``(x (N, 6), det A, ‖A‖_F²)``.
+    """
+    c0, c1, c2 = (_columns(c, L) for c in cols)
+    v, w = _cross(*c0), _cross(*c1)
+    a2, b2 = c2
+    d11, d12, d21, d22 = _dot(v, a2), _dot(v, b2), _dot(w, a2), _dot(w, b2)
+    sf, sm = rhs_f[0] + rhs_f[1], rhs_m[0] + rhs_m[1]
+    g1, g2 = _dot(v, (sf, sm)), _dot(w, (rhs_f[1], rhs_m[1]))
+    det = d11 * d22 - d12 * d21
+    if np.ndim(det) == 0:
+        det = np.full(n, det)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / det
+        x2a, x2b = (g1 * d22 - d12 * g2) * inv, (d11 * g2 - d21 * g1) * inv
+    tf = a2[0] * x2a + b2[0] * x2b  # C2·x2
+    tm = a2[1] * x2a + b2[1] * x2b
+    x = np.empty((n, 6))
+    for p, (col, cc, yf, ym) in enumerate(((cols[0], c0, sf - tf, sm - tm),
+                                           (cols[1], c1, rhs_f[1] - tf, rhs_m[1] - tm))):
+        if col[0] == "R":
+            x[:, 2 * p:2 * p + 2] = as_xy(yf, n)
+        else:
+            (nv, ma), _ = cc
+            nn = (np.conj(nv) * yf).real
+            x[:, 2 * p] = nn
+            x[:, 2 * p + 1] = ym - nn * ma
+    x[:, 4], x[:, 5] = x2a, x2b
+    fro2 = 0.0
+    for k, (col, ((_, ma), (_, mb))) in enumerate(zip(cols, (c0, c1, c2), strict=True)):
+        sq = 2.0 + ma * ma + (mb * mb if col[0] == "R" else 0.0)
+        fro2 = fro2 + (2.0 * sq if k == 1 else sq)
+    return x, det, fro2
+
+
+class _MatrixOf:
+    """The (dimensionless) 6×6 matrices of one dyad, built when asked for: the solve
+    (:func:`_solve_dyad`) does without them; the condition numbers need them."""
+
+    __slots__ = ("L", "cols", "links", "n", "pairs")
+
+    def __init__(self, pairs, links, cols, L, n):
+        self.pairs, self.links, self.cols, self.L, self.n = pairs, links, cols, L, n
+
+    def __call__(self, idx=None) -> Array:
+        """The matrices of the positions ``idx`` (all by default), (len, 6, 6)."""
+        L = self.L
+        T = np.zeros((6, 6, self.n))
+        for li, link in enumerate(self.links):
+            row = 3 * li
+            for p, (pr, (kind, r, nv)) in enumerate(zip(self.pairs, self.cols, strict=True)):
+                s = 1.0 if pr.on == link else -1.0 if pr.by == link else 0.0
+                if not s:
+                    continue
+                col = 2 * p
+                if kind == "R":
+                    T[row, col] = s
+                    T[row + 1, col + 1] = s
+                    T[row + 2, col] = -s * (r.imag / L)
+                    T[row + 2, col + 1] = s * (r.real / L)
+                else:
+                    T[row, col] = s * nv.real
+                    T[row + 1, col] = s * nv.imag
+                    T[row + 2, col] = s * ((np.conj(r) * nv).imag / L)
+                    T[row + 2, col + 1] = s
+        A = T.transpose(2, 0, 1)
+        return A if idx is None else A[idx]
+
+
+class _Systems(Mapping[str, Array]):
+    """Per dyad, its matrices ``(N, 6, 6)``, each built on first access."""
+
+    def __init__(self) -> None:
+        self._builders: dict[str, _MatrixOf] = {}
+        self._built: dict[str, Array] = {}
+
+    def add(self, name: str, build: _MatrixOf) -> None:
+        self._builders[name] = build
+
+    def __getitem__(self, name: str) -> Array:
+        if name not in self._built:
+            self._built[name] = self._builders[name]()
+        return self._built[name]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._builders)
+
+    def __len__(self) -> int:
+        return len(self._builders)
 
 
 __all__ = ["COND_LIMIT", "Forces", "Reaction", "solve_forces"]

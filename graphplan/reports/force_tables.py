@@ -402,7 +402,7 @@ def _position_markdown(pf: PositionForces, lang: str) -> list[str]:
     if pf.neglected:
         out.append(w["rule"].format(pct=pct, names=", ".join(pf.neglected)))
         dm = pf.M_bal - pf.M_full
-        p = _rel(pf.M_bal, pf.M_full, abs(pf.M_full))
+        p = _rel(pf.M_bal, pf.M_full, pf.M_scale)  # of a round-off Mур (a dead centre): "—"
         out.append(w["rule_change"].format(full=_f(pf.M_full), d=("+" if dm >= 0 else "")
                                            + _f(dm), p="—" if p is None else
                                            ("+" if p >= 0 else "") + _f(p * 100)))
