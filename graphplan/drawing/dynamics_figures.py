@@ -56,9 +56,11 @@ MIN_READ = 40.0  #: narrowest JII(φ) that can be read; narrower ones are magnif
 WORDS = {
     "ru": {"J": "Дж", "Nm": "Н·м", "mm": "мм", "rad": "рад", "kgm2": "кг·м²", "s": "с",
            "omega": "Проверка: ω(φ) с маховиком", "target": "цель",
+           "omega_none": "Проверка: ω(φ) без маховика",
            "mag": "увеличено", "em": "Диаграмма энергомасс ΔT(JII)"},
     "en": {"J": "J", "Nm": "N·m", "mm": "mm", "rad": "rad", "kgm2": "kg·m²", "s": "s",
            "omega": "Check: ω(φ) with the flywheel", "target": "target",
+           "omega_none": "Check: ω(φ) without a flywheel",
            "mag": "magnified", "em": "Energy–mass diagram ΔT(JII)"},
 }
 
@@ -377,7 +379,8 @@ def omega_items(u, box: Rect, lang: str) -> list:
         for sp in ax.spines.values():
             sp.set_linewidth(0.25 * MM)
         ax.set_ylabel(f"ω, {w['rad']}/{w['s']}", **_font("ω, рад/с", TEXT_H))
-        title = (f"{w['omega']}: δ = {s.delta_actual:.4f} "
+        title = (f"{w['omega' if u.flywheel.needed else 'omega_none']}: "
+                 f"δ = {s.delta_actual:.4f} "
                  f"({w['target']} {s.delta_target:g})")
         fig.text(0.5, 1 - 1.5 / height_mm, title, ha="center", va="top", **_font(title, TEXT_H))
         group = figure_items(fig, (box.x0, box.y0), id="s3-omega", lang=lang)

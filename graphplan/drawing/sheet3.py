@@ -51,10 +51,11 @@ from .sheet1 import title_block
 WORDS = {
     "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",
            "disc": "диск", "results": "Результаты", "table": "Значения в положениях",
-           "mass": "масса", "speed": "окружная скорость", "section": "А–А"},
+           "mass": "масса", "speed": "окружная скорость", "section": "А–А",
+           "no_flywheel": "Маховик не нужен"},
     "en": {"sheet": "Dynamics", "flywheel": "Flywheel", "rim": "rim", "disc": "disc",
            "results": "Results", "table": "Values at the positions", "mass": "mass",
-           "speed": "rim speed", "section": "A–A"},
+           "speed": "rim speed", "section": "A–A", "no_flywheel": "No flywheel is needed"},
 }
 RESULT_H = 3.5  #: lettering of the results, mm
 LINE = 6.0  #: line pitch of the results, mm
@@ -92,13 +93,25 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
         f"ΔTmax − ΔTmin = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
         f"JI = kl·KT/(ω1²·δ) = {fw.segment_mm:.1f}·{fmt(fw.KT, 4)}/({fmt(fw.omega, 4)}²·"
         f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
-        f"Jм = JI − Jкр − Jрот·u² = {fmt(fw.I_m, 5)} {kg_m2} "
-        f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
-        f"{fw.difference_pct:+.2f} %)",
-        f"δ {'при моделировании' if ru else 'simulated'} = {u.simulation.delta_actual:.4f} "
-        f"({u.delta_error_pct:+.2f} %)",
+        *_flywheel_lines(u, "JI − Jкр − Jрот·u²", lang),
     ]
     return [decimal_comma(s) for s in lines] if ru else lines
+
+
+def _flywheel_lines(u: MachineUnit, what: str, lang: str) -> list[str]:
+    """The last results: Jм (or that none is needed) and δ of the simulation."""
+    fw, ru = u.flywheel, lang == "ru"
+    kg_m2 = "кг·м²" if ru else "kg·m²"
+    sim = ("при моделировании" if ru else "simulated")
+    if not fw.needed:  # the crank and the rotor already hold ω within δ
+        return [f"Jм = {what} = {fmt(fw.I_m_signed, 5)} {kg_m2} ≤ 0: "
+                + ("маховик не нужен" if ru else "no flywheel is needed"),
+                f"δ {sim} {'без маховика' if ru else 'without one'} = "
+                f"{u.simulation.delta_actual:.4f} ≤ δ = {fw.delta:g}"]
+    return [f"Jм = {what} = {fmt(fw.I_m, 5)} {kg_m2} "
+            f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
+            f"{fw.difference_pct:+.2f} %)",
+            f"δ {sim} = {u.simulation.delta_actual:.4f} ({u.delta_error_pct:+.2f} %)"]
 
 
 def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
@@ -115,11 +128,7 @@ def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
         f"ΔTmax − ΔTmin = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
         f"JI = kl·KT/(ω1²·δ) = {fw.segment_mm:.1f}·{fmt(fw.KT, 4)}/({fmt(fw.omega, 4)}²·"
         f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
-        f"Jм = JI − Jкр = {fmt(fw.I_m, 5)} {kg_m2} "
-        f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
-        f"{fw.difference_pct:+.2f} %)",
-        f"δ {'при моделировании' if ru else 'simulated'} = {u.simulation.delta_actual:.4f} "
-        f"({u.delta_error_pct:+.2f} %)",
+        *_flywheel_lines(u, "JI − Jкр", lang),
     ]
 
 
@@ -182,17 +191,45 @@ def _flywheel_scale(u: MachineUnit, width: float, height: float) -> float:
 
 def flywheel_height(u: MachineUnit, width: float, height: float) -> float:
     """Height the flywheel block takes at the scale it gets in a box of that size, mm."""
+    if not u.flywheel_needed:
+        return CAPTION + 3.0 + len(_no_flywheel_lines(u, "ru")) * LINE
     s = u.mounted
     D_out = s.D + (s.h if s.shape == "rim" else 0.0)
     return FW_ABOVE + D_out * 1000.0 / _flywheel_scale(u, width, height) + FW_BELOW
 
 
+def _no_flywheel_lines(u: MachineUnit, lang: str) -> list[str]:
+    """Why a machine needs no flywheel: JI against what the crank and the rotor have,
+    and δ of the run without one."""
+    fw, ru = u.flywheel, lang == "ru"
+    kg_m2 = "кг·м²" if ru else "kg·m²"
+    have = f"Jкр + Jрот·u² = {fmt(fw.I_const, 5)} + {fmt(fw.I_rotor, 4)}" if fw.I_rotor > 0 \
+        else f"Jкр = {fmt(fw.I_const, 5)}"
+    total = f" = {fmt(fw.I_const + fw.I_rotor, 5)}" if fw.I_rotor > 0 else ""
+    lines = [f"JI = {fmt(fw.J_I, 5)} {kg_m2} ≤ {have}{total} {kg_m2}:",
+             ("кривошип с ротором двигателя уже держат ω в пределах δ;" if fw.I_rotor > 0
+              else "кривошип уже держит ω в пределах δ;") if ru else
+             ("the crank and the motor's rotor already hold ω within δ;" if fw.I_rotor > 0
+              else "the crank already holds ω within δ;"),
+             f"{'δ без маховика' if ru else 'δ without a flywheel'} = "
+             f"{u.simulation.delta_actual:.4f} ≤ {fw.delta:g} "
+             f"({'моделирование' if ru else 'simulation'}); Jм = 0."]
+    return [decimal_comma(x) for x in lines] if ru else lines
+
+
 def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     """The flywheel: front view and section А–А at a GOST scale; ⌀ outer, ⌀ inner (rim)
     and the width b in whole mm with extension lines from the outline; the axis of
-    rotation and the centre lines dash-dot."""
+    rotation and the centre lines dash-dot. A machine that needs none gets the reason in
+    its place."""
     w = WORDS[lang]
     ru = lang == "ru"
+    if not u.flywheel_needed:
+        return [Text((box.x0, box.y0 + 5.0), w["no_flywheel"], 5.0, layer="text",
+                     id="s3-fw-title")] + [
+            Text((box.x0, box.y0 + CAPTION + 5.0 + i * LINE), line, RESULT_H, layer="text",
+                 id=f"s3-fw-none-{i}")
+            for i, line in enumerate(_no_flywheel_lines(u, lang))]
     s = u.mounted
     shaft = TABLE_WORDS[lang]["shaft_" + u.shaft]
     title = (f"{w['flywheel']} ({w[s.shape]}, {shaft}), {w['mass']} "

@@ -184,6 +184,13 @@ class MachineUnit:
     efficiency: float = 1.0
 
     @property
+    def flywheel_needed(self) -> bool:
+        """False when the crank (``dynamics.crank_inertia``) and the rotor ``Jрот·u²``
+        already hold ω within δ: Jм = 0, ``mounted`` is a flywheel of size 0 and the
+        simulation runs without one (its δ at or under the target)."""
+        return self.flywheel.needed
+
+    @property
     def delta_error_pct(self) -> float:
         """(δ simulated − δ target)/δ target·100."""
         return (self.simulation.delta_actual / self.flywheel.delta - 1.0) * 100.0
@@ -211,6 +218,7 @@ class MachineUnit:
             "delta_target": fw.delta,
             "delta_simulated": self.simulation.delta_actual,
             "delta_simulated_motor": float(self.simulation.cycle_delta[-1]),
+            "flywheel_needed": fw.needed,
             "I_flywheel": fw.I_m,
             "I_flywheel_approx": fw.I_m_approx,
             "I_flywheel_graphical": fw.I_m_graph,
@@ -230,7 +238,8 @@ class MachineUnit:
                          "flat": fw.tangents_flat},
             "motor": motor,
             "gear_ratio": None if mc is None else mc.u,
-            "flywheel": {"shaft": self.shaft, "shape": self.mounted.shape,
+            "flywheel": None if not fw.needed else {  # documented: null when not needed
+                         "shaft": self.shaft, "shape": self.mounted.shape,
                          "inertia": self.mounted.inertia, "D": self.mounted.D,
                          "b": self.mounted.b, "h": self.mounted.h,
                          "mass": self.mounted.mass, "rim_speed": self.mounted.speed,

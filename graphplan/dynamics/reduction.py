@@ -627,6 +627,18 @@ class Flywheel:
     I_rotor: float = 0.0
 
     @property
+    def needed(self) -> bool:
+        """Whether the machine needs a flywheel: ``J_I > I_const + I_rotor``. When the crank
+        and the rotor already have the inertia JI, ``I_m`` is 0 and ω stays within δ
+        without one (:attr:`I_m_signed` ≤ 0 says by how much)."""
+        return self.I_m > 0.0
+
+    @property
+    def I_m_signed(self) -> float:
+        """``J_I − I_const − I_rotor`` before it is clipped at 0, kg·m² (≤ 0: no flywheel)."""
+        return self.J_I - self.I_const - self.I_rotor
+
+    @property
     def tangents_flat(self) -> bool:
         """ψ below 20°: the tangents are nearly parallel and meet far away; the flywheel is
         read from their intercepts k, l on the ΔT axis (method D.3)."""

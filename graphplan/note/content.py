@@ -59,6 +59,9 @@ WORDS = {
         ],
         "concl_dyn": "Рассчитан маховик: момент инерции Jм = {jm} кг·м², {shape} массой "
                      "{mass} кг; выбран двигатель: {motor}.",
+        "concl_no_fw": "Маховик не нужен: у кривошипа уже есть {have} кг·м², не меньше "
+                       "требуемого JI = {ji} кг·м²; при моделировании без маховика "
+                       "δ = {dsim} ≤ {delta}; выбран двигатель: {motor}.",
         "refs": [
             "Артоболевский И. И. Теория механизмов и машин. — М.: Наука, 1988. — 640 с.",
             "Попов С. А., Тимофеев Г. А. Курсовое проектирование по теории механизмов и "
@@ -103,6 +106,9 @@ WORDS = {
         ],
         "concl_dyn": "The flywheel: moment of inertia Jм = {jm} kg·m², a {shape} of {mass} kg; "
                      "the motor chosen: {motor}.",
+        "concl_no_fw": "No flywheel is needed: the crank already has {have} kg·m², not less "
+                       "than the JI = {ji} kg·m² required; simulated "
+                       "without one, δ = {dsim} ≤ {delta}; the motor chosen: {motor}.",
         "refs": [
             "Artobolevsky I. I. Theory of Mechanisms and Machines. Moscow: Nauka, 1988.",
             "Popov S. A., Timofeev G. A. Course design in the theory of mechanisms and "
@@ -281,8 +287,9 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
         blocks += markdown_blocks(dynamics_markdown(unit, lang), lang)
         if figures:
             sheet3 = dynamics_sheet(analysis, lang=lang, unit=unit)
-            for word, prefix in (("fig_work", "s3-work"), ("fig_em", "s3-em"),
-                                 ("fig_fw", "s3-fw")):
+            figs = (("fig_work", "s3-work"), ("fig_em", "s3-em"))
+            for word, prefix in figs + ((("fig_fw", "s3-fw"),) if unit.flywheel_needed
+                                        else ()):
                 fig = _figure(sheet3, w[word], prefix)
                 if fig:
                     blocks.append(fig)
@@ -341,7 +348,15 @@ def _conclusions(analysis, key, unit, lang: str) -> list[str]:
         motor = (f"{mo.type}, {_g(mo.power_kw, 4, lang)} {'кВт' if lang == 'ru' else 'kW'}, "
                  f"{_g(mo.rated_rpm, 5, lang)} {'об/мин' if lang == 'ru' else 'rpm'}"
                  if mo is not None else "—")
-        out.append(w["concl_dyn"].format(jm=_g(unit.flywheel.I_m, 5, lang),
-                                         shape=m.shape, mass=_g(m.mass, 4, lang),
-                                         motor=motor))
+        fw = unit.flywheel
+        if fw.needed:
+            out.append(w["concl_dyn"].format(jm=_g(fw.I_m, 5, lang), shape=m.shape,
+                                             mass=_g(m.mass, 4, lang), motor=motor))
+        else:
+            out.append(w["concl_no_fw"].format(
+                have=(f"Jкр + Jрот·u² = {_g(fw.I_const + fw.I_rotor, 5, lang)}"
+                      if fw.I_rotor > 0 else f"Jкр = {_g(fw.I_const, 5, lang)}"),
+                ji=_g(fw.J_I, 5, lang),
+                dsim=_g(unit.simulation.delta_actual, 3, lang), delta=_g(fw.delta, 3, lang),
+                motor=motor))
     return out

@@ -24,6 +24,10 @@ T = {
            "pos": "Значения в положениях", "int": "Графическое интегрирование Mс (метод хорд)",
            "fly": "Маховик по диаграмме энергомасс (Виттенбауэр)", "motor": "Двигатель",
            "rim": "Размеры маховика", "check": "Проверка моделированием",
+           "no_fw": "маховик не нужен",
+           "no_fw_why": "маховик не нужен: JI = {ji} кг·м² не больше, чем уже есть у "
+                        "кривошипа с ротором двигателя, Jкр + Jрот·u² = {have} кг·м²; Jм = 0",
+           "no_fw_sim": "без маховика",
            "cols": ("Пол.", "φ, °", "Mс, Н·м", "Jпр, кг·м²", "Aс, Дж", "Aд, Дж", "ΔT, Дж"),
            "icols": ("Интервал", "φ от, °", "φ до, °", "Mс ср, Н·м", "yM, мм", "yA в конце, мм"),
            "none": "нет в каталоге", "shaft_crank": "на валу кривошипа",
@@ -34,6 +38,11 @@ T = {
            "pos": "Values at the positions", "int": "Graphical integration of Mс (chords)",
            "fly": "Flywheel by the energy–mass diagram (Wittenbauer)", "motor": "Motor",
            "rim": "Flywheel dimensions", "check": "Check by simulation",
+           "no_fw": "no flywheel is needed",
+           "no_fw_why": "no flywheel is needed: JI = {ji} kg·m² is not more than the crank "
+                        "and the motor's rotor already have, Jкр + Jрот·u² = {have} kg·m²; "
+                        "Jм = 0",
+           "no_fw_sim": "without a flywheel",
            "cols": ("Pos.", "φ, °", "Mс, N·m", "Jпр, kg·m²", "Aс, J", "Aд, J", "ΔT, J"),
            "icols": ("Interval", "φ from, °", "φ to, °", "mean Mс, N·m", "yM, mm",
                      "yA at the end, mm"),
@@ -125,11 +134,15 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"- JI = kl·KT/(ω²·δ) = {fw.segment_mm:.2f}·{fmt(fw.KT, 5)}/({fmt(w, 5)}²·"
           f"{fw.delta:g}) = {fmt(fw.J_I, 6)} кг·м²",
           f"- Jм = JI − Jкр − Jрот·u² = {fmt(fw.J_I, 6)} − {fmt(fw.I_const, 4)} − "
-          f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m, 6)} кг·м²",
-          f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} кг·м² "
-          f"({fw.difference_pct:+.3f} %); "
-          f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
-          f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)",
+          f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m_signed if not fw.needed else fw.I_m, 6)} "
+          "кг·м²" + ("" if fw.needed else f" ≤ 0: {t['no_fw']}"),
+          (f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} кг·м² "
+           f"({fw.difference_pct:+.3f} %); "
+           f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
+           f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)") if fw.needed else
+          (f"- {'Мерцалов' if ru else 'Merkalov'}: Jм = {fmt(fw.I_m_approx, 6)} кг·м²; "
+           f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: Jм = "
+           f"{fmt(fw.I_m_graph, 6)} кг·м²"),
           "", f"## {t['motor']}", ""]
     if mc is None or mo is None:  # driven by its loads (an engine): the constant moment is Mс
         engine = ("нагрузки совершают положительную работу за цикл (двигатель): постоянный "
@@ -150,15 +163,20 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
                  if mo.inertia_kg_m2 is not None else "")]
     L += ["", f"## {t['rim']}", ""]
     m = u.mounted
-    L += [f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} кг·м², "
-          f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
-          f"{fmt(m.b * 1000, 4)} {mm}, h = {fmt(m.h * 1000, 4)} {mm}, m = {fmt(m.mass, 4)} "
-          f"{'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
-          + ("" if m.speed_ok else " (> 40 м/с!)"),
-          "", f"## {t['check']}", "",
+    if fw.needed:
+        L.append(f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} кг·м², "
+                 f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
+                 f"{fmt(m.b * 1000, 4)} {mm}, h = {fmt(m.h * 1000, 4)} {mm}, m = "
+                 f"{fmt(m.mass, 4)} {'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
+                 + ("" if m.speed_ok else " (> 40 м/с!)"))
+    else:  # the crank (and the rotor) already have JI
+        why = t["no_fw_why"].format(ji=fmt(fw.J_I, 6), have=fmt(fw.I_const + fw.I_rotor, 6))
+        L.append(f"- {why}")
+    L += ["", f"## {t['check']}", "",
           f"- ω(φ) = √(2(T0 + ΔT)/(Jпр + Jрот·u² + Jм)): ωmax = {fmt(s.omega_max, 5)}, "
           f"ωmin = {fmt(s.omega_min, 5)}, δ = (ωmax − ωmin)/ωср = {s.delta_actual:.5f} "
-          f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})",
+          + (f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})"
+             if fw.needed else f"≤ δ = {fw.delta:g} ({t['no_fw_sim']})"),
           (f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
            f"(s = {mo.slip:.3f}): δ = {float(s.cycle_delta[-1]):.5f}" if mo is not None else
            f"- RK4: δ = {float(s.cycle_delta[-1]):.5f}"), ""]

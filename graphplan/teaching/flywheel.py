@@ -215,12 +215,15 @@ def flywheel_lesson(analysis) -> Lesson:
     rotor = fw.I_rotor
     minus = f" − {num(rotor, 6)}" if rotor > 0 else ""
     what = ("JI − Jкр − Jрот·u²" if rotor > 0 else "JI − Jкр")
-    notes = [_two(f"Jм = {what} = {num(fw.J_I, 6)} − {num(fw.I_const, 6)}{minus} = "
-                  f"{num(fw.I_m, 6)} kg·m²; by Merkalov {num(fw.I_m_approx, 6)} kg·m² "
-                  f"({fw.difference_pct:+.2f} %)",
-                  f"Jм = {what} = {num(fw.J_I, 6)} − {num(fw.I_const, 6)}{minus} = "
-                  f"{num(fw.I_m, 6)} кг·м²; по Мерцалову {num(fw.I_m_approx, 6)} кг·м² "
-                  f"({fw.difference_pct:+.2f} %)")]
+    jm = f"Jм = {what} = {num(fw.J_I, 6)} − {num(fw.I_const, 6)}{minus} = "
+    if fw.needed:
+        notes = [_two(f"{jm}{num(fw.I_m, 6)} kg·m²; by Merkalov {num(fw.I_m_approx, 6)} "
+                      f"kg·m² ({fw.difference_pct:+.2f} %)",
+                      f"{jm}{num(fw.I_m, 6)} кг·м²; по Мерцалову {num(fw.I_m_approx, 6)} "
+                      f"кг·м² ({fw.difference_pct:+.2f} %)")]
+    else:  # the crank (and the rotor) already have JI: Jм = 0
+        notes = [_two(f"{jm}{num(fw.I_m_signed, 6)} kg·m² ≤ 0: no flywheel is needed, Jм = 0",
+                      f"{jm}{num(fw.I_m_signed, 6)} кг·м² ≤ 0: маховик не нужен, Jм = 0")]
     motor = unit_.motor
     rotor_en = rotor_ru = ""
     j_rot = None if motor is None else motor.motor.inertia_kg_m2
@@ -243,28 +246,38 @@ def flywheel_lesson(analysis) -> Lesson:
                 factor)], marks, notes)
 
     sz = unit_.mounted  # sheet 3's flywheel, on the shaft it is mounted on
-    ok = {"en": "within" if sz.speed_ok else "above", "ru": "не больше" if sz.speed_ok
-          else "больше"}
-    shape = {"en": "rim" if sz.shape == "rim" else "disc",
-             "ru": "обод" if sz.shape == "rim" else "диск"}
-    on_motor = unit_.shaft == "motor"
-    shaft = {"en": "motor" if on_motor else "crank", "ru": "двигателя" if on_motor
-             else "кривошипа"}
-    reduce_en = reduce_ru = ""
-    if on_motor:
-        reduce_en = (f" it needs only I = Jм/u² = {num(fw.I_m, 6)}/{plain(sz.ratio, 4)}² = "
-                     f"{num(sz.inertia, 5)} kg·m²;")
-        reduce_ru = (f" ему нужно лишь I = Jм/u² = {num(fw.I_m, 6)}/{plain(sz.ratio, 4)}² = "
-                     f"{num(sz.inertia, 5)} кг·м²;")
-    add(1, "size", "I = m·D²/4" if sz.shape == "rim" else "I = m·D²/8",
-        _two(f"A steel {shape['en']} on the {shaft['en']} shaft (u = {plain(sz.ratio, 4)}):"
-             f"{reduce_en} D = {num(sz.D)} m, b = {num(sz.b)} m, h = {num(sz.h)} m, mass "
-             f"m = {num(sz.mass)} kg; rim speed v = ω·D/2 = {num(sz.speed)} m/s, "
-             f"{ok['en']} the 40 m/s limit.",
-             f"Стальной {shape['ru']} на валу {shaft['ru']} (u = {plain(sz.ratio, 4)}):"
-             f"{reduce_ru} D = {num(sz.D)} м, b = {num(sz.b)} м, h = {num(sz.h)} м, масса "
-             f"m = {num(sz.mass)} кг; окружная скорость v = ω·D/2 = {num(sz.speed)} м/с, "
-             f"{ok['ru']} предела 40 м/с."))
+    if not fw.needed:
+        d_sim = unit_.simulation.delta_actual
+        add(1, "size", "JI ≤ Jкр + Jрот·u²",
+            _two(f"No flywheel is needed: the crank already has {num(fw.I_const + rotor, 6)} "
+                 f"kg·m², not less than JI = {num(fw.J_I, 6)} kg·m². Simulated without a "
+                 f"flywheel, ω varies by δ = {d_sim:.4f} ≤ {plain(delta)}.",
+                 f"Маховик не нужен: у кривошипа уже есть {num(fw.I_const + rotor, 6)} кг·м², "
+                 f"не меньше JI = {num(fw.J_I, 6)} кг·м². При моделировании без маховика "
+                 f"неравномерность δ = {d_sim:.4f} ≤ {plain(delta)}."))
+    else:
+        ok = {"en": "within" if sz.speed_ok else "above", "ru": "не больше" if sz.speed_ok
+              else "больше"}
+        shape = {"en": "rim" if sz.shape == "rim" else "disc",
+                 "ru": "обод" if sz.shape == "rim" else "диск"}
+        on_motor = unit_.shaft == "motor"
+        shaft = {"en": "motor" if on_motor else "crank", "ru": "двигателя" if on_motor
+                 else "кривошипа"}
+        reduce_en = reduce_ru = ""
+        if on_motor:
+            reduce_en = (f" it needs only I = Jм/u² = {num(fw.I_m, 6)}/{plain(sz.ratio, 4)}² = "
+                         f"{num(sz.inertia, 5)} kg·m²;")
+            reduce_ru = (f" ему нужно лишь I = Jм/u² = {num(fw.I_m, 6)}/{plain(sz.ratio, 4)}² = "
+                         f"{num(sz.inertia, 5)} кг·м²;")
+        add(1, "size", "I = m·D²/4" if sz.shape == "rim" else "I = m·D²/8",
+            _two(f"A steel {shape['en']} on the {shaft['en']} shaft (u = {plain(sz.ratio, 4)}):"
+                 f"{reduce_en} D = {num(sz.D)} m, b = {num(sz.b)} m, h = {num(sz.h)} m, mass "
+                 f"m = {num(sz.mass)} kg; rim speed v = ω·D/2 = {num(sz.speed)} m/s, "
+                 f"{ok['en']} the 40 m/s limit.",
+                 f"Стальной {shape['ru']} на валу {shaft['ru']} (u = {plain(sz.ratio, 4)}):"
+                 f"{reduce_ru} D = {num(sz.D)} м, b = {num(sz.b)} м, h = {num(sz.h)} м, масса "
+                 f"m = {num(sz.mass)} кг; окружная скорость v = ω·D/2 = {num(sz.speed)} м/с, "
+                 f"{ok['ru']} предела 40 м/с."))
 
     panels = (Panel("work", _two("Work diagrams: Mс(φ), Aс, Aд, ΔT", "Диаграммы работ: Mс(φ), "
                                  "Aс, Aд, ΔT"),
