@@ -461,13 +461,24 @@ def _proportion(b: _Builder, img: _Images, link: str, name: str, pn: str, P
     return en, ru
 
 
+_LINE_RU = ((" through ", " через "), ("∥ guide of ", "∥ направляющей звена "),
+            ("∥ guide", "∥ направляющей"), ("∥ slot", "∥ оси кулисы"))
+
+
+def _line_ru(name: str) -> str:
+    """A construction line's name in Russian: ``∥ guide through p`` → ``∥ направляющей через p``."""
+    for en, ru in _LINE_RU:
+        name = name.replace(en, ru)
+    return name
+
+
 def _close_two_lines(b: _Builder, eq: str, new: str, p1: Vec2, d1: Vec2, n1: str,
                      p2: Vec2, d2: Vec2, n2: str) -> None:
     """Draw the two lines of a vector equation and take their intersection as ``new``."""
     x, ang = intersect_lines(p1, d1, p2, d2)
     b.points[new] = x
     b.add_step(eq, f"Line {n1}, line {n2}; they meet at {new} at {math.degrees(ang):.1f}°.",
-               f"Линия {n1}, линия {n2}; пересекаются в точке {new} под углом "
+               f"Линия {_line_ru(n1)}, линия {_line_ru(n2)}; пересекаются в точке {new} под углом "
                f"{math.degrees(ang):.1f}°.",
                [b.line(n1, p1, d1, x), b.line(n2, p2, d2, x),
                 Element("point", new, as_xy(x), as_xy(x), "point")], angle=ang)
