@@ -29,7 +29,7 @@ OUT = Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith("-")
 
 
 def show(obj, text: str = "") -> None:
-    """В блокноте — показать ``obj`` (его богатое представление); в скрипте — напечатать ``text``."""
+    """В блокноте — показать ``obj`` (его представление); в скрипте — напечатать ``text``."""
     try:
         from IPython import get_ipython
         from IPython.display import display
