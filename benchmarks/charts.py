@@ -152,4 +152,70 @@ def stability_chart(results: dict, folder: Path) -> Path:
     return path
 
 
-__all__ = ["speed_accuracy_chart", "stability_chart"]
+SWEEP_STYLE = {
+    "graphplan full cycle": ("#1f77b4", "-", "o"),
+    "graphplan kinematics": ("#1f77b4", "--", "o"),
+    "closed form: full cycle": ("#2ca02c", "-", "s"),
+    "closed form: kinematics": ("#2ca02c", "--", "s"),
+    "pylinkage numba (kinematics)": ("#8c1c13", "--", "^"),
+    "pylinkage default (kinematics)": ("#d62728", "--", "v"),
+}
+
+
+def sweep_chart(results: dict, folder: Path) -> Path:
+    """Time per turn against the number of positions N, every method (left); the full
+    cycle's time over each other method's (right: below 1 graphplan is faster)."""
+    plt = _pyplot()
+    sw = results["sweep"]
+    sizes = np.asarray(sw["sizes"], float)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), constrained_layout=True)
+    ax = axes[0]
+    for name, ts in sw["median_s"].items():
+        pts = [(n, t) for n, t in zip(sizes, ts, strict=True) if t is not None]
+        if not pts:
+            continue
+        colour, ls, mk = SWEEP_STYLE.get(name, ("#7f7f7f", "-", "o"))
+        ax.plot(*zip(*[(n, t * 1e3) for n, t in pts], strict=True), ls=ls, marker=mk,
+                color=colour, lw=1.2, ms=4, label=name)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("positions per turn N")
+    ax.set_ylabel("time of one turn, ms (median)")
+    ax.set_title("Every method at every N (solid: with the forces)")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left")
+    ax = axes[1]
+    full = sw["median_s"]["graphplan full cycle"]
+    for name in ("closed form: full cycle", "pylinkage numba (kinematics)",
+                 "pylinkage default (kinematics)"):
+        ts = sw["median_s"].get(name) or []
+        pts = [(n, f / t) for n, f, t in zip(sizes, full, ts, strict=False)
+               if f is not None and t is not None]
+        if not pts:
+            continue
+        colour, _, mk = SWEEP_STYLE[name]
+        ax.plot(*zip(*pts, strict=True), marker=mk, color=colour, lw=1.2, ms=4,
+                label=f"graphplan full cycle / {name}")
+    ax.axhline(1.0, color="grey", lw=0.8)
+    ax.axhline(1 / 20, color="#d62728", ls=":", lw=0.8)
+    ax.text(sizes[0], 1 / 20 * 1.15, "target against the default path: 1/20", fontsize=7,
+            color="#d62728")
+    ax.axhline(4.0, color="#2ca02c", ls=":", lw=0.8)
+    ax.text(sizes[0], 4.0 * 1.15, "target against the closed form at N = 360: 4", fontsize=7,
+            color="#2ca02c")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("positions per turn N")
+    ax.set_ylabel("time ratio (below 1: graphplan faster)")
+    ax.set_title("graphplan's full cycle against the others")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=7, loc="upper right")
+    env = results.get("environment", {})
+    fig.suptitle(f"The N sweep on the press ({env.get('cpus', '?')} CPUs, "
+                 f"{env.get('machine', '')}; same process, methods in turns)", fontsize=10)
+    path = _save(fig, folder, "bench-sweep")
+    plt.close(fig)
+    return path
+
+
+__all__ = ["speed_accuracy_chart", "stability_chart", "sweep_chart"]

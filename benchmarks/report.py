@@ -82,12 +82,46 @@ def tables(results: dict) -> str:
             out.append(f"| {name} | {s['first_s']:.2f} | {s['median_s']:.2f} | "
                        f"{s['bytes'] / 1024:.0f} |")
         out += [f"| all | {sh['all']['first_s']:.2f} | {sh['all']['median_s']:.2f} | |", ""]
-    prof = results.get("profile_press_full_cycle_s")
-    if prof:
-        out += ["### Where the press's full cycle goes (360 positions, medians)", "",
-                "| part | µs |", "|---|---:|"]
-        out += [f"| {k} | {v * 1e6:.0f} |" for k, v in prof.items()]
+    sw = results.get("sweep")
+    if sw:
+        sizes = sw["sizes"]
+        out += ["### The N sweep (press; median time of one turn, ms)", "",
+                "| method | " + " | ".join(f"N = {n:,}" for n in sizes) + " |",
+                "|---|" + "---:|" * len(sizes)]
+        for name, ts in sw["median_s"].items():
+            out.append(f"| {name} | " + " | ".join("—" if t is None else f"{t * 1e3:.3g}"
+                                                   for t in ts) + " |")
+        labels = {"default_over_full": "pylinkage default / graphplan full cycle (≥ 20)",
+                  "numba_over_full_paired": "pylinkage numba / graphplan full cycle, by round "
+                                            "(≥ 1)",
+                  "full_over_closed_form": "graphplan full cycle / closed form (≤ 4 at 360)",
+                  "kinematics_over_closed_form": "graphplan kinematics / closed form",
+                  "numba_over_kinematics": "pylinkage numba / graphplan kinematics"}
+        out += ["", "| ratio | " + " | ".join(f"N = {n:,}" for n in sizes) + " |",
+                "|---|" + "---:|" * len(sizes)]
+        for key, label in labels.items():
+            out.append(f"| {label} | " + " | ".join(
+                "—" if v is None else f"{v:.3g}" for v in sw["ratios"][key]) + " |")
+        agree = sw.get("closed_form_agreement", {})
+        if agree:
+            out += ["", "The closed form agrees with graphplan (every load kept, 360 positions) "
+                    "to " + ", ".join(f"{k} {v:.1e}" for k, v in agree.items()) + ".", ""]
+    cmds = results.get("commands")
+    if cmds:
+        out += ["### Whole commands, cold (a new process each; s)", "",
+                "| command | first run (empty cache) | median | min | max | runs |",
+                "|---|---:|---:|---:|---:|---:|"]
+        for e in cmds.values():
+            out.append(f"| `{e['command']}` | {e['first_run_s']:.2f} | {e['median_s']:.2f} | "
+                       f"{e['min_s']:.2f} | {e['max_s']:.2f} | {e['runs']} |")
         out.append("")
+    for key, n in (("profile_press_full_cycle_s", 360), ("profile_press_full_cycle_36_s", 36)):
+        prof = results.get(key)
+        if prof:
+            out += [f"### Where the press's full cycle goes ({n} positions, medians)", "",
+                    "| part | µs |", "|---|---:|"]
+            out += [f"| {k} | {v * 1e6:.0f} |" for k, v in prof.items()]
+            out.append("")
     out += ["### Targets", "", "| target | measured | met |", "|---|---|---|"]
     for t in results.get("targets", []):
         if "value_paired_by_round" in t:
@@ -96,7 +130,7 @@ def tables(results: dict) -> str:
         elif "value_ms" in t:
             val = f"{t['value_ms']:.3g} ms"
         elif "value_s" in t:
-            val = f"{t['value_s']:.3g} s (first in the process {t['first_s']:.3g} s)"
+            val = f"{t['value_s']:.3g} s (first run {t['first_s']:.3g} s)"
         else:
             val = f"{t['value']:.3g}"
         met = {True: 'yes', False: '**no**', None: 'not judged'}[t['met']]

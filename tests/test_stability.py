@@ -233,7 +233,8 @@ def test_benchmark_command_runs_end_to_end(tmp_path):
     root = Path(__file__).resolve().parent.parent
     out = tmp_path / "results.json"
     subprocess.run([sys.executable, "-m", "benchmarks", "--positions", "12", "--reps", "1",
-                    "--no-drafting", "--no-charts", "--mechanisms", "press", "--out", str(out),
+                    "--no-drafting", "--no-charts", "--sweep", "12", "--no-commands",
+                    "--mechanisms", "press", "--out", str(out),
                     "--docs", str(tmp_path)], cwd=root, check=True, capture_output=True,
                    timeout=120)
     res = json.loads(out.read_text(encoding="utf-8"),
@@ -246,6 +247,9 @@ def test_benchmark_command_runs_end_to_end(tmp_path):
     # the generic Newton solver is good to its finite differences, not to round-off
     assert 1e-14 < methods["newton (generic, loop equations)"]["errors"]["accelerations"] < 1e-5
     assert res["targets"] and all("met" in t for t in res["targets"])
+    # the N sweep (issue 21): every method at N = 12, each judged against its target
+    assert res["sweep"]["sizes"] == [12]
+    assert any(t["target"].startswith("sweep N = 12: full cycle ≥ 20×") for t in res["targets"])
     assert res["stability"]["min_angle_deg"] < 90
     assert "press" in res["simplifications"]
     assert (tmp_path / "simplifications.md").read_text(encoding="utf-8").startswith("# Model")

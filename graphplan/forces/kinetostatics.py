@@ -25,12 +25,13 @@ group on an earlier link becoming a known load of that link's group.
 The 6×6 system is solved for all positions at once in closed form (:func:`_solve_dyad`:
 the inner pair eliminated by the normals of the pairs' columns, leaving the 2×2 of the
 force plan's two closing lines, by Cramer's rule; its determinant is det A, so the
-singularity check needs no second factorisation). It is made dimensionless before solving: the moment equations are divided
-by the group's size L and the unknown couples are ``M_P/L``, so that every unknown is a
-force and the condition number ``κ`` (2-norm, reported per dyad in
-:attr:`Forces.conditioning`) grows like 1/sin of the angle between the two closing
-lines of the force plan (method D.3: RRR Rⁿ12 ∥ AB against Rⁿ43 ∥ CB; RRP Rⁿ12 against
-the guide's normal; PRP, RPP the two guides). A pose with ``κ > COND_LIMIT`` raises
+singularity check needs no second factorisation). It is made dimensionless before
+solving: the moment equations are divided by the group's size L and the unknown couples
+are ``M_P/L``, so that every unknown is a force and the condition number ``κ`` (2-norm,
+reported per dyad in :attr:`Forces.conditioning`) grows like 1/sin of the angle between
+the two closing lines of the force plan (method D.3: RRR Rⁿ12 ∥ AB against Rⁿ43 ∥ CB;
+RRP Rⁿ12 against the guide's normal; PRP, RPP the two guides).
+A pose with ``κ > COND_LIMIT`` raises
 :class:`~graphplan.errors.SingularPoseError`; otherwise the relative error of the
 reactions is bounded, to first order, by ``6·ε·Σκ`` over the groups solved so far
 (:attr:`Forces.error_bound`, ε the machine epsilon). The kinematics already refuses a
