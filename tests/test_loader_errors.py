@@ -854,8 +854,8 @@ def test_crank_slider_rod_shorter_than_crank_plus_offset():
                      + r"([0-9.]+)°: the distance from A to the guide, ([0-9.]+) m, "
                      + re.escape("exceeds lAB = 0.1 m")
                      + r"; the crank cannot make a full turn: the chain closes only for φ "
-                     + r"from ([0-9.]+)° to ([0-9.]+)° \(([0-9.]+)° of turn\), so link 1 is "
-                     + r"a rocker, not a crank \(Grashof\) — shorten crank.length or "
+                     + r"in ([0-9.]+)°…([0-9.]+)° \(([0-9.]+)°\), so link 1 can only rock "
+                     + r"within that range — shorten crank.length or "
                      + r"lengthen the dyad's links", msg)
     assert m, msg
     # the reach, said with the likely fix: it closes where 30 − 80·cos φ ≤ 100, i.e.

@@ -11,6 +11,7 @@ that is probably not the one meant.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -106,3 +107,70 @@ def test_load_work_is_the_line_integral_of_the_force(flip):
     pos = solve_positions(mech, np.asarray(lt.dead_centres))
     q = link_coordinate(mech, "3", pos)[1]
     assert (q[1] - q[0]) % (2 * math.pi) < math.pi
+
+
+# --- a driving link that cannot turn, a translating driver ----------------------------------
+
+
+def _example(name: str, **edits: str) -> str:
+    text = (ROOT / "examples" / f"{name}.toml").read_text(encoding="utf-8")
+    for old, new in edits.items():
+        assert old in text, old
+        text = text.replace(old, new)
+    return text
+
+
+def _error(tmp_path, capsys, text: str) -> tuple[Path, str]:
+    from graphplan.cli import main
+
+    path = tmp_path / "variant.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["analyze", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1, err  # one line
+    return path, err
+
+
+def test_a_crank_longer_than_the_rod_reaches_two_ranges(tmp_path, capsys):
+    # the press (guide vertical through O) with l_OA = 250 > l_AB = 200 mm: A stays within
+    # reach of the guide while |x_A| = 0.25·|cos φ| ≤ 0.2, i.e. |cos φ| ≤ 0.8:
+    # φ in 36.87°…143.13° and 216.87°…323.13° (acos 0.8 = 36.87°)
+    _, err = _error(tmp_path, capsys, _example("press", **{"length = 80 ": "length = 250 "}))
+    m = re.search(r"closes only for φ in ([0-9.]+)°…([0-9.]+)° \(([0-9.]+)°\), "
+                  r"([0-9.]+)°…([0-9.]+)° \(([0-9.]+)°\), so link 1 can only rock within one "
+                  r"of these ranges — shorten crank.length", err)
+    assert m, err
+    a = math.degrees(math.acos(0.8))
+    got = [float(m.group(i)) for i in (1, 2, 4, 5)]
+    assert got == pytest.approx([a, 180 - a, 180 + a, 360 - a], abs=0.01)
+    assert "exceeds lAB = 0.2 m" in err  # the cause: A too far from the guide
+
+
+def test_a_four_bar_names_grashof_in_numbers(tmp_path, capsys):
+    # crank 300 mm, coupler 350, rocker 300, frame 400: 0.3 + 0.4 = 0.7 > 0.3 + 0.35 = 0.65;
+    # |AC|² = 0.3² + 0.4² − 2·0.3·0.4·cos φ ≤ 0.65² ⇔ cos φ ≥ −0.71875: φ within ±135.95°
+    _, err = _error(tmp_path, capsys, _example("fourbar", **{"length = 100 ": "length = 300 "}))
+    assert "(Grashof: l_min + l_max = 0.3 + 0.4 = 0.7 m > 0.3 + 0.35 = 0.65 m)" in err
+    m = re.search(r"closes only for φ in ([0-9.]+)°…([0-9.]+)° \(([0-9.]+)°\), so link 1 can "
+                  r"only rock within that range", err)
+    assert m, err
+    b = math.degrees(math.acos(-0.71875))
+    assert [float(m.group(1)), float(m.group(2))] == pytest.approx([360 - b, b], abs=0.01)
+
+
+@pytest.mark.parametrize(("edit", "key", "words"), [
+    ({"[crank]\n": '[crank]\nkind = "slider"\n'}, "crank.kind", "the driving link must turn, not slide"),
+    ({"[crank]\n": '[crank]\nguide = { link = "4", through = "O", angle = 0 }\n'},
+     "crank.guide", "the driving link must turn, not slide"),
+    ({"[crank]\n": '[cylinder]\nlink = "1"\nstroke = 200\n\n[crank]\n'}, "cylinder",
+     "a translating driver is not supported"),
+    ({"[crank]\n": '[driver]\nkind = "hydraulic"\n\n[crank]\n'}, "driver",
+     "a translating driver is not supported"),
+    ({"[crank]\n": '[driver]\nkind = "crank"\n\n[crank]\n'}, "driver",
+     "the driving link is described in [crank]"),
+])
+def test_a_translating_driver_is_one_line_with_the_reason(tmp_path, capsys, edit, key, words):
+    path, err = _error(tmp_path, capsys, _example("fourbar", **edit))
+    assert err.startswith(f"graphplan: error: {path}: {key}: {words}"), err
+    if "translating" in words or "slide" in words:
+        assert "has no ω1 to reduce Mур, Mпр and Jпр to" in err

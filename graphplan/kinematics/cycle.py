@@ -177,7 +177,7 @@ def analyse_cycle(mech: Mechanism) -> Cycle:
     except AssemblyError as exc:
         if isinstance(exc, SingularPoseError):
             raise
-        raise type(exc)(f"{exc}{_reachable(mech)}") from None
+        raise type(exc)(_reachable_hint(mech, str(exc))) from None
     pos, vel = turn.pos, turn.vel
     min_cond = {}
     for name, s in vel.conditioning.items():
@@ -284,40 +284,23 @@ def _dead_centres(mech: Mechanism, link: str, working: int, grid, pos, vel):
     return kind, dead, float(qr[ks]), float(qr[ke]), chord, turn
 
 
-def _reachable(mech: Mechanism) -> str:
-    """Why a crank does not turn fully: the arc of crank angles where the chain closes."""
-    n = 720
+def _closing_arcs(mech: Mechanism, n: int = 720) -> list[tuple[float, float]]:
+    """The arcs of crank angle (rad, from → to counter-clockwise) where the chain closes:
+    every run of a grid of ``n`` angles that assemble, its ends refined by bisection."""
     grid = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-    ok = np.zeros(n, bool)
-    for k in range(n):
-        try:
-            solve_positions(mech, grid[k:k + 1])
-            ok[k] = True
-        except AssemblyError:
-            pass
-    if np.count_nonzero(~ok) < 3:  # isolated angles (parallel lines): not a question of reach
-        return ""
-    if not ok.any():  # it closes nowhere: the first message says why
-        return ""
-    # the longest run of closing angles, cyclically
-    start = int(np.argmin(ok)) if not ok.all() else 0
-    rolled = np.roll(ok, -start)
-    best, best_len, run = 0, 0, None
-    for k, v in enumerate(np.append(rolled, False)):
-        if v and run is None:
-            run = k
-        elif not v and run is not None:
-            if k - run > best_len:
-                best, best_len = run, k - run
-            run = None
-    step = 2 * math.pi / n
 
-    def closes(x):
+    def closes(x) -> bool:
         try:
             solve_positions(mech, np.atleast_1d(x))
             return True
         except AssemblyError:
             return False
+
+    ok = np.array([closes(x) for x in grid])
+    if np.count_nonzero(~ok) < 3 or not ok.any():  # isolated angles (parallel lines): not
+        return []  # a question of reach; or it closes nowhere
+    start = int(np.argmin(ok))  # a failing angle: every run is whole after it
+    step = 2 * math.pi / n
 
     def edge(inside, outside):
         for _ in range(50):
@@ -325,13 +308,59 @@ def _reachable(mech: Mechanism) -> str:
             inside, outside = (mid, outside) if closes(mid) else (inside, mid)
         return inside
 
-    a0 = grid[(best + start) % n]
-    a1 = a0 + (best_len - 1) * step
-    lo, hi = edge(a0, a0 - step), edge(a1, a1 + step)
-    return (f"; the crank cannot make a full turn: the chain closes only for φ from "
-            f"{math.degrees(lo) % 360:.2f}° to {math.degrees(hi) % 360:.2f}° "
-            f"({math.degrees(hi - lo):.1f}° of turn), so link {mech.crank.link} is a rocker, "
-            "not a crank (Grashof) — shorten crank.length or lengthen the dyad's links")
+    arcs, run = [], None
+    for k in range(n + 1):
+        idx = (start + k) % n
+        v = bool(ok[idx]) and k < n
+        if v and run is None:
+            run = k
+        elif not v and run is not None:
+            a0 = grid[(start + run) % n]
+            a1 = a0 + (k - 1 - run) * step
+            arcs.append((edge(a0, a0 - step), edge(a1, a1 + step)))
+            run = None
+    return arcs
+
+
+def _four_bar_hint(mech: Mechanism) -> str:
+    """Grashof's condition in numbers when the crank, one RRR dyad and the frame make a
+    four-bar: the crank turns fully only if it is the shortest link and
+    ``l_min + l_max ≤ l' + l''``."""
+    if len(mech.dyads) != 1 or mech.dyads[0].kind != "RRR":
+        return ""
+    d = mech.dyads[0]
+    a, _, c = d.joints
+    if a != mech.crank.pin or c not in mech.frame_points:
+        return ""
+    o = np.asarray(mech.frame_points[mech.crank.pivot], float)
+    frame = float(np.hypot(*(np.asarray(mech.frame_points[c], float) - o)))
+    ls = sorted([mech.crank.length, *d.lengths[:2], frame])
+    if mech.crank.length > ls[0] + 1e-12:
+        four = ", ".join(f"{x:.6g}" for x in (mech.crank.length, *d.lengths[:2], frame))
+        return (f" (the crank is not the shortest of the four links crank, coupler, rocker, "
+                f"frame: {four} m)")
+    return (f" (Grashof: l_min + l_max = {ls[0]:.6g} + {ls[3]:.6g} = {ls[0] + ls[3]:.6g} m "
+            f"> {ls[1]:.6g} + {ls[2]:.6g} = {ls[1] + ls[2]:.6g} m)")
+
+
+def _reachable_hint(mech: Mechanism, error: str) -> str:
+    """``error`` (a dyad that cannot be assembled) with why the crank does not turn fully:
+    the arcs of crank angles where the chain closes."""
+    arcs = _closing_arcs(mech)
+    if not arcs:  # it closes nowhere (the first message says why), or only fails at
+        return error  # isolated angles (parallel lines): not a question of reach
+    if 2 * math.pi - sum(hi - lo for lo, hi in arcs) < math.radians(1.0):
+        return error  # gaps of a fraction of a degree: isolated angles, not a reach
+    ranges = ", ".join(f"{math.degrees(lo) % 360:.2f}°…{math.degrees(hi) % 360:.2f}° "
+                       f"({math.degrees(hi - lo):.1f}°)" for lo, hi in arcs)
+    cause = _four_bar_hint(mech)
+    return (f"{error}; the crank cannot make a full turn: the chain closes only for φ in "
+            f"{ranges}, so link {mech.crank.link} can only rock within that range{cause} — "
+            "shorten crank.length or lengthen the dyad's links" if len(arcs) == 1 else
+            f"{error}; the crank cannot make a full turn: the chain closes only for φ in "
+            f"{ranges}, "
+            f"so link {mech.crank.link} can only rock within one of these ranges{cause} — "
+            "shorten crank.length or lengthen the dyad's links")
 
 
 def travel_fraction(mech: Mechanism, cycle: Cycle, q) -> Array:

@@ -283,7 +283,48 @@ def _refuse_control_characters(data, source: str, key: str = "") -> None:
             _refuse_control_characters(v, source, where)
 
 
+#: Sections and keys a variant may use for a driving link that does not turn fully about a
+#: frame pivot: a hydraulic or pneumatic cylinder, a slider pushed along a guide.
+DRIVER_SECTIONS = ("driver", "actuator", "cylinder", "slider")
+DRIVER_KEYS = ("kind", "type", "guide", "stroke")
+TRANSLATING = ("slider", "translating", "linear", "prismatic", "cylinder", "hydraulic",
+               "pneumatic", "piston", "ползун", "гидроцилиндр", "цилиндр")
+
+
+def _translating(table: dict) -> str | None:
+    """The key of ``table`` that makes it a translating driver (None: none does)."""
+    for k in DRIVER_KEYS:
+        if k not in table:
+            continue
+        v = table[k]
+        if k in ("guide", "stroke") or (isinstance(v, str) and v.strip().lower() in TRANSLATING):
+            return k
+    return None
+
+
+def _refuse_translating_driver(data: dict, r: _Reader) -> None:
+    """A translating driving link is not a crank: one line saying why graphplan needs one."""
+    why = ("graphplan's initial mechanism is a crank turning fully about a frame pivot at a "
+           "constant speed (rpm or omega): a translating driving link (a hydraulic or "
+           "pneumatic cylinder) has no ω1 to reduce Mур, Mпр and Jпр to; give the rotating "
+           "link that drives the machine as [crank]")
+    for sec in DRIVER_SECTIONS:
+        if sec not in data or sec in SECTIONS:
+            continue
+        table = data[sec] if isinstance(data[sec], dict) else {}
+        if sec != "driver" or _translating(table):
+            raise r.fail(sec, f"a translating driver is not supported: {why}")
+        raise r.fail(sec, "the driving link is described in [crank] (link, joints = [pivot, "
+                     "pin], length, rpm or omega, direction)")
+    crank = data.get("crank")
+    if isinstance(crank, dict):
+        k = _translating({x: v for x, v in crank.items() if x not in SECTIONS["crank"]})
+        if k is not None:
+            raise r.fail(f"crank.{k}", f"the driving link must turn, not slide: {why}")
+
+
 def _build(data: dict, r: _Reader) -> Mechanism:
+    _refuse_translating_driver(data, r)
     r.keys(data, "", set(SECTIONS), {"frame", "crank", "dyads"})
     for sec, allowed in SECTIONS.items():
         if sec in data and allowed is not None:
