@@ -159,7 +159,8 @@ def test_a_four_bar_names_grashof_in_numbers(tmp_path, capsys):
 
 
 @pytest.mark.parametrize(("edit", "key", "words"), [
-    ({"[crank]\n": '[crank]\nkind = "slider"\n'}, "crank.kind", "the driving link must turn, not slide"),
+    ({"[crank]\n": '[crank]\nkind = "slider"\n'}, "crank.kind",
+     "the driving link must turn, not slide"),
     ({"[crank]\n": '[crank]\nguide = { link = "4", through = "O", angle = 0 }\n'},
      "crank.guide", "the driving link must turn, not slide"),
     ({"[crank]\n": '[cylinder]\nlink = "1"\nstroke = 200\n\n[crank]\n'}, "cylinder",
