@@ -21,24 +21,47 @@ ROOT = Path(__file__).resolve().parents[1]
 EX = ROOT / "examples"
 
 
+EXAMPLES = sorted(p.stem for p in EX.glob("*.toml"))
+
+
 @pytest.fixture(scope="module")
 def sheets(tmp_path_factory):
-    """graphplan's own sheet 1 of the press and of the Scotch yoke, as DXF and SVG."""
+    """graphplan's own sheet 1 of an example as DXF and SVG, drawn by the current code
+    (the sheets' layout and scales change: nothing here depends on where plans are)."""
+    from graphplan.checking.checks import reference_for
+    from graphplan.drawing import kinematics_sheet
+    from graphplan.render import sheet_files
+
     out = tmp_path_factory.mktemp("sheets")
-    for ex in ("press", "scotch_yoke", "fourbar", "offset_slider"):
-        assert main(["sheets", str(EX / f"{ex}.toml"), "--format", "svg,dxf", "-o",
-                     str(out / ex)]) == 0
-    return out
+
+    class Sheets:
+        def __truediv__(self, ex: str) -> Path:
+            folder = out / ex
+            if not folder.is_dir():
+                folder.mkdir()
+                ref = reference_for(EX / f"{ex}.toml")
+                files = sheet_files({"sheet1": kinematics_sheet(ref.analysis, lang="ru")},
+                                    ("svg", "dxf"))
+                for name, content in files.items():
+                    if isinstance(content, str):
+                        (folder / name).write_text(content, encoding="utf-8")
+                    else:
+                        (folder / name).write_bytes(content)
+            return folder
+
+    return Sheets()
 
 
 def _wrong(rep):
     return [(f.where, f.quantity, f.kind) for f in rep.wrong]
 
 
-@pytest.mark.parametrize("ex,fmt", [("press", "dxf"), ("press", "svg"),
-                                    ("scotch_yoke", "dxf"), ("scotch_yoke", "svg"),
-                                    ("fourbar", "dxf"), ("offset_slider", "svg")])
+@pytest.mark.parametrize("fmt", ["dxf", "svg"])
+@pytest.mark.parametrize("ex", EXAMPLES)
 def test_graphplans_own_sheet_is_right(sheets, ex, fmt):
+    """Sheet 1 of every example — crowded plans (the six-bar press, both shapers: letters
+    "b, s3" at one point, short components beside the pole) included: no false alarm,
+    every plan found under its caption."""
     dc = check_drawing(sheets / ex / f"sheet1.{fmt}", EX / f"{ex}.toml", lang="en")
     rep = dc.report
     assert rep.ok, _wrong(rep)
@@ -96,6 +119,20 @@ def test_planted_in_graphplans_export(sheets, tmp_path):
     assert other == {"2", "3"}
 
 
+@pytest.mark.parametrize("fmt", ["dxf", "pdf"])
+@pytest.mark.parametrize("ex", EXAMPLES)
+def test_students_drawing_of_every_example_is_right(tmp_path, ex, fmt):
+    """Two positions of every example drawn as a CAD user draws and as a vector PDF: no
+    false alarm, every plan found under its caption."""
+    v = EX / f"{ex}.toml"
+    labels = _two_positions(v)
+    dc = check_drawing(student_sheet(v, tmp_path / f"s.{fmt}", labels, fmt=fmt), v,
+                       lang="en")
+    assert dc.report.ok, _wrong(dc.report)
+    assert {(j.found.kind, j.position) for j in dc.plans} == {
+        (k, lab) for k in ("velocity", "acceleration") for lab in labels}
+
+
 @pytest.mark.parametrize("fmt,inches", [("dxf", False), ("dxf", True), ("pdf", False)])
 def test_students_drawing_is_right(tmp_path, fmt, inches):
     """Drawn as a CAD user draws (pieces, polylines, arrowheads as blocks, MTEXT, far
@@ -149,30 +186,39 @@ def _detected(rep, p: Plant) -> bool:
                word in f.where and WANT[p.kind] in (None, f.kind) for f in rep.findings)
 
 
-def test_planted_errors_recall(tmp_path):
+def _two_positions(v) -> list[str]:
+    """The second position and one half a turn on: no example's choice by hand."""
+    from graphplan.checking.checks import reference_for
+
+    labels = list(reference_for(v).labels)
+    return [labels[1], labels[len(labels) // 2]]
+
+
+@pytest.mark.parametrize("ex", EXAMPLES)
+def test_planted_errors_recall(tmp_path, ex):
     """Every planted error (a moved point, a wrong scale, a normal component left out, the
-    plan of another position) of four mechanisms, drawn as DXF and as PDF: recall ≥ 0.95
-    with the checker's own causes, and no false alarm on the correct drawings."""
-    cases = [("press", ["2", "(2)"]), ("fourbar", ["2", "5"]),
-             ("offset_slider", ["3", "8"]), ("scotch_yoke", ["2", "4"])]
-    total = hit = false_alarms = clean = 0
+    plan of another position) in two positions of every example, drawn as a CAD user
+    draws (DXF) and as a vector PDF (every other example): recall ≥ 0.95 with the
+    checker's own causes, and no false alarm on the correct drawing."""
+    v = EX / f"{ex}.toml"
+    labels = _two_positions(v)
+    fmt = "pdf" if EXAMPLES.index(ex) % 2 else "dxf"
+    rep = check_drawing(student_sheet(v, tmp_path / f"{ex}.{fmt}", labels, fmt=fmt), v,
+                        lang="en").report
+    assert rep.ok, _wrong(rep)
+    total = hit = 0
     missed = []
-    for ex, labels in cases:
-        v = EX / f"{ex}.toml"
-        for fmt in ("dxf", "pdf") if ex in ("press", "offset_slider") else ("dxf",):
-            rep = check_drawing(student_sheet(v, tmp_path / f"{ex}.{fmt}", labels, fmt=fmt),
-                                v, lang="en").report
-            clean += 1
-            false_alarms += not rep.ok
-            for i, p in enumerate(_plants(v, labels)):
-                f = student_sheet(v, tmp_path / f"{ex}-{i}.{fmt}", labels, fmt=fmt, plant=p)
-                total += 1
-                if _detected(check_drawing(f, v, lang="en").report, p):
-                    hit += 1
-                else:
-                    missed.append((ex, fmt, p))
-    assert false_alarms == 0
-    assert total >= 60
+    for i, p in enumerate(_plants(v, labels)):
+        try:
+            f = student_sheet(v, tmp_path / f"{ex}-{i}.{fmt}", labels, fmt=fmt, plant=p)
+        except ValueError:
+            continue  # a normal component with no tangential one after it: nothing to omit
+        total += 1
+        if _detected(check_drawing(f, v, lang="en").report, p):
+            hit += 1
+        else:
+            missed.append(p)
+    assert total >= 12
     assert hit / total >= 0.95, missed
 
 
@@ -229,8 +275,18 @@ def test_command_line(sheets, tmp_path, capsys):
                          ).read_text(encoding="utf-8"))
     jsonschema.validate(data, schema)  # the calculation checker's JSON, same keys
     out = tmp_path / "out"
-    assert main(["check", "--drawing", str(sheets / "press"), "--variant",
-                 str(EX / "press.toml"), "-o", str(out)]) == 1  # sheets 2 and 3: no plan
+    import shutil
+
+    import ezdxf
+
+    cls = tmp_path / "class"
+    cls.mkdir()
+    shutil.copy(sheet, cls / "sheet1.dxf")
+    blank = ezdxf.new()
+    blank.modelspace().add_line((0, 0), (10, 0))
+    blank.saveas(cls / "blank.dxf")
+    assert main(["check", "--drawing", str(cls), "--variant",
+                 str(EX / "press.toml"), "-o", str(out)]) == 1  # blank.dxf: no plan
     text = capsys.readouterr().out
     assert "sheet1.dxf" in text and "not checked" in text
     assert (out / "sheet1" / "report.html").read_text(encoding="utf-8").count("<svg") >= 1

@@ -39,7 +39,8 @@ from dataclasses import dataclass, field
 VERDICTS = ("ok", "inaccurate", "wrong", "not compared")
 KINDS = ("arithmetic", "consistency", "unit", "scale", "sign", "other-variant", "lever-arm",
          "geometry", "formula", "label", "propagated", "model", "coriolis", "unreadable",
-         "direction", "missing", "closure")  # the last three: a drawing's (checking/drawing)
+         "direction", "missing", "closure", "point")  # the last four: a drawing's
+#                                                       (checking/drawing, docs/drawing-check.md)
 
 
 @dataclass(frozen=True, slots=True)

@@ -38,6 +38,7 @@ from .measure import (
     directions,
     fits,
     lay,
+    misplaced_points,
     missing_components,
     segment_lengths,
 )
@@ -335,6 +336,22 @@ def _judge(p: FoundPlan, ref, sheet: dict[str, float], tol: Tolerances, lang: st
         # stated: the angle off graphplan's direction (expected 0), degrees
         f = _plan_finding(p, laid.position, f"∠{dr.name}", "direction", dr.error_deg, 0.0,
                           "°", en, ru, lang, verdict=dr.verdict, key=j.key)
+        if plan_level:
+            f = replace(f, follows_from=(j.findings[0].quantity,))
+        j.findings.append(f)
+    # 4. every point where the construction puts it (a point off its place by more than
+    # the segment tolerance of its vector from the pole: a point built wrong)
+    for pt in misplaced_points(laid, tol):
+        inv = {c: s for s, c in laid.match.items()}
+        name = inv.get(pt.name, pt.name)
+        en = (f"the point {name} is {num(pt.error_mm, 'en', 3)} mm from where the construction "
+              f"puts it (its vector from the pole, {num(pt.length_mm, 'en', 4)} mm, allows "
+              f"{num(pt.band_mm, 'en', 2)} mm).")
+        ru = (f"точка {name} в {num(pt.error_mm, 'ru', 3)} мм от места, где её даёт построение "
+              f"(для вектора из полюса длиной {num(pt.length_mm, 'ru', 4)} мм допустимо "
+              f"{num(pt.band_mm, 'ru', 2)} мм).")
+        f = _plan_finding(p, laid.position, f"•{name}", "point", pt.error_mm, 0.0, "mm", en,
+                          ru, lang, verdict=pt.verdict, key=j.key)
         if plan_level:
             f = replace(f, follows_from=(j.findings[0].quantity,))
         j.findings.append(f)

@@ -31,6 +31,10 @@ import numpy as np
 from ..units import fold
 from .plans import FoundPlan
 
+POLE_GAIN_MM = 0.3
+"""A pole is moved off the node its letter names only when the plan then fits the
+construction this much better (root mean square, mm) — and by half at least."""
+
 
 @dataclass(frozen=True, slots=True)
 class Segmenting:
@@ -49,7 +53,8 @@ class Laid:
     ``match`` maps the student's names to the construction's points; ``vectors`` the
     measured (student) and expected (construction) place of each matched point relative to
     the pole, mm; ``rms`` the fit; ``ratio`` the one factor that fits the student's plan
-    to the construction best, and ``rms_scaled`` the fit after it.
+    to the construction best, and ``rms_scaled`` the fit after it; ``pole_at`` the
+    student's pole on the sheet (mm).
     """
 
     position: str
@@ -64,6 +69,7 @@ class Laid:
     plan: object = None
     segments: list[Segmenting] = field(default_factory=list)
     unknown: list[str] = field(default_factory=list)
+    pole_at: tuple[float, float] = (0.0, 0.0)  # the student's pole on the sheet, mm
 
 
 def norm(name: str) -> str:
@@ -103,7 +109,26 @@ def plan_segments(plan) -> list[Segmenting]:
 
 
 def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
-    """Match the student's letters to the construction's points and fit them."""
+    """Match the student's letters to the construction's points and fit them.
+
+    The pole is the node its letter names, or another node the letter is nearly as near
+    (the end of a short component beside the pole) when the plan fits the construction
+    better from there.
+    """
+    poles = [np.asarray(found.points[found.pole], float)]
+    poles += [np.asarray(o, float) for o in found.options.get(found.pole, ())[1:]]
+    best = None
+    for p0 in poles:
+        laid = _lay_at(found, plan, position, index, p0)
+        score = min(laid.rms, laid.rms_scaled)
+        # another node only when it fits clearly better (not by the reading's noise)
+        if best is None or score < min(best[0] - POLE_GAIN_MM, 0.5 * best[0]):
+            best = (score, laid)
+    assert best is not None
+    return best[1]
+
+
+def _lay_at(found: FoundPlan, plan, position: str, index: int, p0: np.ndarray) -> Laid:
     pole = (plan.kind == "velocity" and "p") or "π"
     by_norm = {norm(n): n for n in plan.points}
     match: dict[str, str] = {}
@@ -113,7 +138,6 @@ def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
             match[name] = pole
         elif norm(name) in by_norm:
             match[name] = by_norm[norm(name)]
-    p0 = np.asarray(found.points[found.pole])
     taken = set(match.values())
     for name in found.points:
         if name in match:
@@ -130,22 +154,32 @@ def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
         taken.add(best)
     # the one factor between the student's plan and the construction, from the letters'
     # nearest points (a plan drawn at another scale is still matched point by point)
-    first = {c: np.asarray(found.points[s]) - p0 for s, c in match.items()}
+    first = {c: (np.asarray(found.points[s]) - p0 if s != found.pole else np.zeros(2))
+             for s, c in match.items()}
     E0 = np.array([plan.points[c] for c in first], float)
     M0 = np.array(list(first.values()), float)
     ee0 = float(np.sum(E0 * E0))
     k0 = float(np.sum(M0 * E0) / ee0) if ee0 > 0 else 1.0
     k0 = k0 if k0 > 0.05 else 1.0
-    measured = {}
-    for s, c in match.items():
-        m = first[c]
-        want = k0 * np.asarray(plan.points[c], float)
-        # a letter between two points: the point that fits the construction
-        for o in found.options.get(s, ())[1:] if s != found.pole else ():
-            mo = np.asarray(o) - p0
-            if np.hypot(*(mo - want)) < np.hypot(*(m - want)):
-                m = mo
-        measured[c] = m
+    # a letter between two points: the point that fits the construction scaled by the
+    # one factor that fits best — from the scale written (1) and from the letters'
+    # nearest points (k0), each refined on the points it chooses; the better fit wins
+    best_fit: tuple[float, dict[str, np.ndarray]] | None = None
+    for k in (1.0, k0):
+        for _round in range(3):
+            measured = _choose(found, match, first, plan, p0, k)
+            M = np.array([measured[c] for c in measured], float)
+            E = np.array([plan.points[c] for c in measured], float)
+            ee = float(np.sum(E * E))
+            k_new = float(np.sum(M * E) / ee) if ee > 0 else 1.0
+            if k_new <= 0.05 or abs(k_new - k) < 1e-9:
+                break
+            k = k_new
+        resid = float(np.sum((M - k * E) ** 2))
+        if best_fit is None or resid < best_fit[0] - 1e-9:
+            best_fit = (resid, measured)
+    assert best_fit is not None
+    measured = best_fit[1]
     expected = {c: np.asarray(plan.points[c], float) for c in match.values()}
     keys = [c for c in measured if c != pole]
     size = max((float(np.hypot(*plan.points[c])) for c in plan.points), default=1.0)
@@ -159,7 +193,23 @@ def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
     else:
         rms, ratio, rms_s = math.inf, 1.0, math.inf
     return Laid(position, index, match, measured, expected, rms, ratio, rms_s, size, plan,
-                plan_segments(plan), unknown)
+                plan_segments(plan), unknown, (float(p0[0]), float(p0[1])))
+
+
+def _choose(found: FoundPlan, match: dict[str, str], first: dict[str, np.ndarray], plan,
+            p0: np.ndarray, k: float) -> dict[str, np.ndarray]:
+    """Each matched letter's point: of the nodes its text is nearly as near (its options),
+    the one nearest the construction's point scaled by ``k`` (mm from the pole)."""
+    measured = {}
+    for s, c in match.items():
+        m = first[c]
+        want = k * np.asarray(plan.points[c], float)
+        for o in found.options.get(s, ())[1:] if s != found.pole else ():
+            mo = np.asarray(o) - p0
+            if np.hypot(*(mo - want)) < np.hypot(*(m - want)):
+                m = mo
+        measured[c] = m
+    return measured
 
 
 def fits(laid: Laid, rms: float, reading_mm: float, segment: float) -> bool:
@@ -201,6 +251,41 @@ def directions(laid: Laid, reading_mm: float) -> list[Direction]:
     return out
 
 
+@dataclass(frozen=True, slots=True)
+class Misplaced:
+    """A point of the student's plan away from the construction's (mm)."""
+
+    name: str  # the construction's name
+    error_mm: float  # distance between the student's point and the construction's
+    length_mm: float  # the construction's vector from the pole to the point
+    band_mm: float  # the distance allowed before the point is wrong
+    verdict: str
+
+
+def misplaced_points(laid: Laid, tol) -> list[Misplaced]:
+    """Points farther from the construction's than a segment of the same length may be
+    off: ``|m − e| ≤ max(segment_ok·|e|, reading)`` is ok, ``≤ max(segment·|e|,
+    2·reading)`` inaccurate, beyond wrong (a point has two coordinates to read); ``m`` and
+    ``e`` are the student's and the construction's vectors from the pole (mm, the scale
+    written). A vector's error as a whole, its length and direction at once: a point 3 mm
+    off a 95 mm vector square to it changes its length by nothing and its direction by
+    under 2°, and is still built wrong."""
+    pole = (laid.plan.kind == "velocity" and "p") or "π"
+    out = []
+    for c, m in laid.measured.items():
+        if c == pole:
+            continue
+        e = laid.expected[c]
+        err = float(np.hypot(*(m - e)))
+        length = float(np.hypot(*e))
+        ok = max(tol.segment_ok * length, tol.reading_mm)
+        band = max(tol.segment * length, 2.0 * tol.reading_mm)
+        if err <= ok:
+            continue
+        out.append(Misplaced(c, err, length, band, "inaccurate" if err <= band else "wrong"))
+    return out
+
+
 def missing_components(laid: Laid, reading_mm: float) -> list[Segmenting]:
     """Normal and Coriolis components of the construction the student did not letter
     (those shorter than twice the reading precision may well be left out)."""
@@ -233,5 +318,18 @@ def segment_lengths(laid: Laid, reading_mm: float = 0.5) -> dict[str, float]:
     return out
 
 
-__all__ = ["Direction", "Laid", "Segmenting", "construction", "directions", "fits", "lay",
-           "missing_components", "norm", "plan_segments", "segment_lengths"]
+__all__ = [
+    "Direction",
+    "Laid",
+    "Misplaced",
+    "Segmenting",
+    "construction",
+    "directions",
+    "fits",
+    "lay",
+    "misplaced_points",
+    "missing_components",
+    "norm",
+    "plan_segments",
+    "segment_lengths",
+]

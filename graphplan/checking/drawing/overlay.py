@@ -57,7 +57,7 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
         L = j.laid
         if L is None or L.plan is None:
             continue
-        p0 = np.asarray(j.found.points[j.found.pole])
+        p0 = np.asarray(L.pole_at)
         plan = L.plan
         for sg in L.segments:
             a = p0 + plan.points[sg.start]

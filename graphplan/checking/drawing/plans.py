@@ -191,8 +191,12 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
             nd = scene.nodes[L.node]  # type: ignore[index]
             if L.name not in points:
                 points[L.name] = (nd.x, nd.y)
-                options[L.name] = [(scene.nodes[n].x, scene.nodes[n].y) for n in L.options
-                                   if scene.node_group(n) == g]
+                # the other nodes the letter is nearly as near (not where two pieces of
+                # one line meet: no point is there unless the letter is nearest it)
+                options[L.name] = [(scene.nodes[n].x, scene.nodes[n].y)
+                                   for i, n in enumerate(L.options)
+                                   if scene.node_group(n) == g and
+                                   (i == 0 or not scene.is_join(n))]
         plans.append(FoundPlan(kind, g, poles[0].name, points, letters, bbox, segments=segs,
                                options=options))
     _captions(scene, plans)

@@ -132,23 +132,31 @@ class Scene:
     def _bare_heads(self) -> list[Segment]:
         """A vector shorter than its arrowhead is drawn as the head alone: the head's own
         axis (the middle of its base to its tip) stands for the vector's line."""
-        ends: dict[tuple[int, int], bool] = {}
+        # the lines ending at each place, as unit vectors pointing to that end
+        ends: dict[tuple[int, int], list[tuple[float, float]]] = {}
         for s in self.segments:
-            for x, y in ((s.x1, s.y1), (s.x2, s.y2)):
-                ends[(round(x / SNAP_MM), round(y / SNAP_MM))] = True
+            L = s.length
+            for x, y, ox, oy in ((s.x1, s.y1, s.x2, s.y2), (s.x2, s.y2, s.x1, s.y1)):
+                ends.setdefault((round(x / SNAP_MM), round(y / SNAP_MM)), []).append(
+                    ((x - ox) / L, (y - oy) / L))
         out = []
         for pts in self.arrow_tips:
             if len(pts) < 3:
                 continue
             tip = head_tip(pts)
-            k = (round(tip[0] / SNAP_MM), round(tip[1] / SNAP_MM))
-            if any((k[0] + i, k[1] + j) in ends for i in (-1, 0, 1) for j in (-1, 0, 1)):
-                continue
             base = [p for p in pts if abs(p[0] - tip[0]) + abs(p[1] - tip[1]) > 1e-6]
             if not base:
                 continue
             bx = sum(p[0] for p in base) / len(base)
             by = sum(p[1] for p in base) / len(base)
+            hl = math.hypot(tip[0] - bx, tip[1] - by)
+            k = (round(tip[0] / SNAP_MM), round(tip[1] / SNAP_MM))
+            # a line that ends at the tip along the head is its vector's; another line
+            # ending there (the next vector's start, a construction line) is not
+            if hl > 0 and any((tip[0] - bx) * ux / hl + (tip[1] - by) * uy / hl > 0.9
+                              for i in (-1, 0, 1) for j in (-1, 0, 1)
+                              for ux, uy in ends.get((k[0] + i, k[1] + j), ())):
+                continue
             if math.hypot(tip[0] - bx, tip[1] - by) < 0.5:
                 continue  # a dot, not an arrowhead
             out.append(Segment(bx, by, tip[0], tip[1], width=0.5))
@@ -168,17 +176,18 @@ class Scene:
             cents.append((cx, cy))
             grid.setdefault((int(cx // cell), int(cy // cell)), []).append(h)
         out = []
+        carried: dict[int, list[tuple[float, float]]] = {}  # head → the carried lines' starts
         for s in segs:
             if s.length < 1.0:
                 out.append(s)
                 continue
             ends = [(s.x1, s.y1), (s.x2, s.y2)]
             for e in (0, 1):
+                cand: list[tuple[float, int]] = []
                 ex, ey = ends[e]
                 ox, oy = ends[1 - e]
                 L = math.hypot(ex - ox, ey - oy)
                 dx, dy = (ex - ox) / L, (ey - oy) / L
-                best = 0.0
                 ci, cj = int(ex // cell), int(ey // cell)
                 for di in (-1, 0, 1):
                     for dj in (-1, 0, 1):
@@ -199,9 +208,20 @@ class Scene:
                             hl = math.hypot(hx, hy)
                             if far <= 0.05 or hl == 0 or (hx * dx + hy * dy) / hl < 0.9:
                                 continue
-                            best = max(best, far)
-                if best > 0.05:
-                    ends[e] = (ex + best * dx, ey + best * dy)
+                            cand.append((far, h))
+                # one head carries one line: a second line from the same start to the
+                # same base (a short vector drawn over a longer one, ending where the
+                # longer one's head begins: ps3 on pb) ends at the base, unless it has a
+                # head of its own there (vectors drawn over each other: pa, pc, ps4)
+                best = max((f for f, _h in cand), default=0.0)
+                for far, h in sorted(cand, key=lambda c: (-c[0], c[1])):
+                    if far < best - SNAP_MM:
+                        break
+                    if not any(math.hypot(ox - qx, oy - qy) <= SNAP_MM
+                               for qx, qy in carried.get(h, ())):
+                        carried.setdefault(h, []).append((ox, oy))
+                        ends[e] = (ex + far * dx, ey + far * dy)
+                        break
             out.append(Segment(ends[0][0], ends[0][1], ends[1][0], ends[1][1], s.colour,
                                s.width, s.layer))
         return out
@@ -366,6 +386,23 @@ class Scene:
         return any(seg in on for on in self.on_segment if on) if not hasattr(
             self, "_interior") else bool(self._interior.get(seg))
 
+    def is_join(self, n: int) -> bool:
+        """Whether node n is only where pieces of one straight line meet (a line split in
+        two, a polyline's vertex on a straight run, with perhaps a construction line drawn
+        along it): no arrowhead, every line ending at or passing through it parallel."""
+        nd = self.nodes[n]
+        if nd.tip or nd.ends != 2:
+            return False
+        dirs = []
+        for i in nd.segments + self.on_segment[n]:
+            s = self.segments[i]
+            L = s.length
+            if L <= 0:
+                return False
+            dirs.append(((s.x2 - s.x1) / L, (s.y2 - s.y1) / L))
+        ux, uy = dirs[0]
+        return all(abs(ux * vy - uy * vx) < 0.01 for vx, vy in dirs[1:])
+
     # --- letters ------------------------------------------------------------------------
 
     def _letters(self) -> list[Letter]:
@@ -411,10 +448,14 @@ class Scene:
                         if d > reach:
                             continue
                         cost = d - 0.25 * t.height * min(nd.degree - 1, 2)
-                        if nd.degree == 1 and self._overshoot(n):
+                        if nd.ends == 1 and not nd.tip and self._overshoot(n):
                             cost += 2.5 * t.height
+                        elif self.is_join(n):  # where one line's pieces meet: no point
+                            cost += 1.0 * t.height
                         if pole:  # vectors start at a pole: no arrowhead points there
-                            cost += 2.0 * t.height if nd.tip else 0.0
+                            # (a pole where many vectors start may be some short one's tip)
+                            cost += 2.0 * t.height if nd.tip and nd.ends <= 2 else 0.0
+                            cost -= 0.25 * t.height * min(max(nd.ends - 3, 0), 4)
                         elif nd.tip:
                             cost -= 0.3 * t.height
                         lst.append((cost, n, d))
