@@ -80,14 +80,34 @@ def test_dead_centre_extras_are_not_default_positions():
     assert len(rows) == 2 and m[rows[1]] <= m[rows[0]]
 
 
-def test_wide_table_says_what_it_left_out():
-    _a, sheet = built("shaper")
-    titles = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)
-              and t.id == "s2-table-title"]
-    table = _table(sheet)
-    ncols = len(next(iter(table.values())))
+def _parts(sheet) -> list[list[str]]:
+    """The headers of the parts of the table of sheet 2 (the first, then its continuations)."""
+    texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
+    out = []
+    for pre in ["s2-table", *(f"s2-table-{n}" for n in range(2, 10))]:
+        cols = [texts[f"{pre}-r0c{j}"] for j in range(1, 40) if f"{pre}-r0c{j}" in texts]
+        if cols:
+            out.append(cols)
+    return out
+
+
+@pytest.mark.parametrize("fmt", ["A1", "A2", "A3"])
+def test_wide_table_is_split_not_cut(fmt):
+    """The shaper's table (3 + 7 reactions + 4 columns) is never cut: where it is wider than
+    its place it is continued under its title with the position column repeated."""
+    from graphplan.drawing import Page
+
+    a, _ = built("shaper")
+    sheet = kinetostatics_sheet(a, page=Page(fmt))
+    parts = _parts(sheet)
+    header = [h for p in parts for h in p[(1 if p is not parts[0] else 0):]]
     total = 3 + 7 + 4  # head, the shaper's seven reactions, tail
-    assert ncols == total or f"столбцов {ncols} из {total}" in titles[0]
+    assert len(header) == total and len(set(header)) == total
+    assert all(p[0] == "Пол." for p in parts)
+    conts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)
+             and (t.id or "").startswith("s2-table-title-")]
+    assert len(conts) == len(parts) - 1
+    assert all(c.startswith("Продолжение таблицы") for c in conts)
 
 
 def test_arm_h21_is_drawn_at_the_schemes_scale():

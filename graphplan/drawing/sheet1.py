@@ -441,13 +441,15 @@ PLAN_LAYERS = {"velocity": "velocity_plan", "acceleration": "acceleration_plan",
 
 
 def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
-               segment_labels: bool = False) -> list[Item]:
+               segment_labels: bool = False, rename: dict[str, str] | None = None
+               ) -> list[Item]:
     """A plan centred in its cell, with its caption and letters.
 
     Any construction with ``kind``, ``points`` and ``steps`` is drawn: velocity and
     acceleration plans, force plans, Zhukovsky's lever. With ``segment_labels`` every
     vector is also named at its middle (a force plan names its forces, not only its
-    vertices).
+    vertices); ``rename`` writes some of them otherwise (a force too short to see with its
+    value, sheet 2).
     """
     layer = PLAN_LAYERS[getattr(plan, "kind", "lever")]
     pts = np.array(list(plan.points.values()))
@@ -482,8 +484,10 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     if segment_labels:
         named = {e.name: e for e in elems if e.kind == "segment"
                  and e.role not in ("absolute", "arm") and math.dist(e.start, e.end) > 1e-9}
+        rename = rename or {}
         reqs += [LabelRequest(to(((e.start[0] + e.end[0]) / 2, (e.start[1] + e.end[1]) / 2)),
-                              _label(name), 3.5, group=f"{ident}-seg")
+                              rename.get(name, _label(name)), 3.5,
+                              group=f"{ident}-seg" if name not in rename else f"{ident}-{name}")
                  for name, e in named.items()]
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
     keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),

@@ -1,37 +1,44 @@
-"""Sheet 2, kinetostatic analysis: for the chosen positions, the scheme of the mechanism
-with its loads and reactions, the force plan of every Assur group and of the crank, and
-Zhukovsky's lever; below them the curve Mур(φ) and the table of the force analysis.
+"""Sheet 2, kinetostatic analysis, as a ТММ teacher expects it: for each analysed position,
+every Assur group drawn separately (from the last attached to the first) with all its
+loads — weights G, inertia forces Pи, inertia moments Mи, the technological force Q — and
+the reactions of the links taken away, the revolute ones in their tangential and normal
+components; next to each group its force plan; the initial link (the crank) with R21, its
+own loads, the arm h21 and the balancing moment Mур, and its force plan; Zhukovsky's lever.
+Under them the diagram of the technological force Q(s) over the output's travel (working
+and idle strokes), the curve Mур(φ) and the table of the force analysis (split into parts,
+its header repeated, when it is wider than its place).
 
 The positions are the variant's ``kinetostatics.positions`` (labels); by default the
 working positions (the variant's extra positions off the dead centres: the press's (2),
 (3)) and one idle position, the one of the largest |Mур| outside the working stroke
 (the position of the largest |Mур| when no extra position is a working one), at most
-three. Every plan is the construction of
-:mod:`graphplan.plans.forces` / :mod:`graphplan.plans.zhukovsky`, placed by a translation and
-the flip of y, as on sheet 1. The scheme is drawn at the plan of positions' Kl when it
-fits its cell, else at the next coarser scale of the series (printed in its caption);
-the arrows of loads and reactions on it show directions, not magnitudes.
+three — on a smaller format as many of them as its page holds
+(:func:`graphplan.project.layout.sheet2_layout`). Every plan is the construction of
+:mod:`graphplan.plans.forces` / :mod:`graphplan.plans.zhukovsky` at the groups' Kl (one for the
+sheet, :class:`graphplan.project.scales.Sheet2Scales`), placed by a translation and the flip of
+y, as on sheet 1. The arrows of loads and reactions on the groups show directions, not
+magnitudes; a force whose vector on a plan is shorter than 2 mm is written with its value
+and «<2 мм» rather than left as a dot with a name.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 from shapely.geometry import Point
 
+from ..forces import reaction_name
 from ..plans import force_plans, zhukovsky_lever
 from ..project import (
     CAPTION,
-    GAP,
-    SHEET2_STRIP,
+    group_links,
     sheet2_positions,
     sheet2_scales,
-    sheet_scales,
-    titled_table,
+    sheet2_table_header,
+    split_table,
 )
-from ..units import Scale, fmt, nice_ceil
+from ..units import Scale, fmt
 from .labels import LabelRequest, place_labels
 from .sheet import (
     MAIN,
@@ -45,17 +52,19 @@ from .sheet import (
     Rect,
     Sheet,
     Style,
+    Text,
     arc_point,
     item_geometry,
     text_at_centre,
+    text_box,
+    text_width,
 )
 from .sheet1 import (
     JOINT_R,
     WHITE_FILL,
-    _joints,
+    _pair_points,
     _Paper,
     _slider_block,
-    _support,
     _units,
     ill_mark_items,
     link_items,
@@ -65,84 +74,179 @@ from .sheet1 import (
     turning_arrow,
 )
 
-ARROW_MM = 16.0  #: length of a load's or reaction's arrow on the scheme (direction only)
+ARROW_MM = 16.0  #: length of a load's or reaction's arrow on a group (direction only), mm
+SHORT_MM = 2.0  #: a force's vector on a plan shorter than this is written with its value
 
 WORDS = {
-    "ru": {"scheme": "Схема, пол.", "plan": "План сил", "crank": "Кривошип", "lever":
-           "Рычаг Жуковского", "curve": "Уравновешивающий момент Mур(φ), все нагрузки",
-           "table": "Силовой расчёт", "sheet": "Силовой анализ", "pos": "Пол.",
-           "head": ("Пол.", "φ, °", "Kp, Н/мм"), "kN": "кН",
-           "tail": ("h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
-    "en": {"scheme": "Scheme, pos.", "plan": "Force plan", "crank": "Crank", "lever":
-           "Zhukovsky's lever", "curve": "Balancing moment Mур(φ), all loads",
-           "table": "Force analysis", "sheet": "Force analysis", "pos": "Pos.",
-           "head": ("Pos.", "φ, °", "Kp, N/mm"), "kN": "kN",
-           "tail": ("h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
+    "ru": {"group": "Схема звеньев", "link": "Схема звена", "pos": "пол.", "plan": "План сил",
+           "crank": "Кривошип", "lever": "Рычаг Жуковского", "lever_short": "Рычаг Ж.",
+           "curve": "Уравновешивающий момент Mур(φ), все нагрузки",
+           "qs": "Сила полезного сопротивления", "work": "р.х.", "idle": "х.х.",
+           "table": "Силовой расчёт", "continued": "Продолжение таблицы «Силовой расчёт»",
+           "sheet": "Силовой анализ", "N": "Н", "kN": "кН", "short": "<2 мм",
+           "header": ("Группы Ассура и кривошип вычерчены отдельно, Kl = {kl}; стрелки сил на "
+                      "схемах показывают направления, их величины — на планах сил")},
+    "en": {"group": "Scheme of links", "link": "Scheme of link", "pos": "pos.",
+           "plan": "Force plan", "crank": "Crank", "lever": "Zhukovsky's lever",
+           "lever_short": "Lever",
+           "curve": "Balancing moment Mур(φ), all loads",
+           "qs": "Technological force", "work": "w.s.", "idle": "i.s.",
+           "table": "Force analysis", "continued": "Table «Force analysis» continued",
+           "sheet": "Force analysis", "N": "N", "kN": "kN", "short": "<2 mm",
+           "header": ("The Assur groups and the crank drawn separately, Kl = {kl}; the arrows on "
+                      "the schemes give directions, their sizes are on the force plans")},
 }
 
 
-def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang: str,
-                  ident: str, slots=None) -> list[Item]:
-    """The mechanism at position k with every load and reaction on it (directions)."""
-    mech, kin = analysis.mech, analysis.kin
-    pts = {n: p[k] for n, p in kin.pos.points.items()}
-    allp = np.array(list(pts.values()))
-    ext = np.ptp(allp, axis=0)
-    room = np.array([cell.width, cell.height - CAPTION]) - 2 * (ARROW_MM + 8.0)
-    kl = kl1.per_mm
-    if np.any(ext / kl > room):
-        kl = nice_ceil(float(np.max(ext / room)))
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    centre = np.array([(cell.x0 + cell.x1) / 2, (cell.y0 + CAPTION + cell.y1) / 2])
+def _caption(cell: Rect, text, ident: str) -> Text:
+    """A cell's caption: the first of ``text`` (a string or the longest form first) that
+    fits the cell at 3.5 mm lettering, else at 2.5, else the last form at 1.8."""
+    forms = [text] if isinstance(text, str) else list(text)
+    pick = (forms[-1], 1.8)
+    for h in (3.5, 2.5):
+        fit = [f for f in forms if text_width(Text((0, 0), f, h, layer="text")) <= cell.width - 2.0]
+        if fit:
+            pick = (fit[0], h)
+            break
+    return text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), pick[0], pick[1],
+                          layer="text", id=ident)
+
+
+def _fitted_text(box: Rect, forms, ident: str) -> Text:
+    """One line at the left of ``box``: the first form that fits it at 3.5, else 2.5 mm."""
+    for h in (3.5, 2.5):
+        for f in forms:
+            if text_width(Text((0, 0), f, h, layer="text")) <= box.width:
+                return Text((box.x0, (box.y0 + box.y1) / 2 + h / 2), f, h, layer="text", id=ident)
+    return Text((box.x0, (box.y0 + box.y1) / 2 + 0.9), forms[-1], 1.8, layer="text", id=ident)
+
+
+def _figure_paper(kin, k: int, names, cell: Rect, kl: float, pivot) -> _Paper:
+    """Paper of a figure drawn at Kl, its points centred in the cell below the caption."""
+    pts = np.array([kin.pos.points[n][k] for n in names])
+    mid = (pts.min(axis=0) + pts.max(axis=0)) / 2
+    cx, cy = (cell.x0 + cell.x1) / 2, (cell.y0 + CAPTION + cell.y1) / 2
+    return _Paper((cx + (pivot[0] - mid[0]) / kl, cy - (pivot[1] - mid[1]) / kl), kl, pivot)
+
+
+def _segments(fp) -> dict[str, np.ndarray]:
+    """The vectors (plan mm, y up) of a plan's named segments."""
+    return {e.name: np.asarray(e.end, float) - np.asarray(e.start, float)
+            for s in fp.steps for e in s.elements if e.kind == "segment"}
+
+
+def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: float,
+                 ident: str, fig: str, slots, lang: str) -> list[Item]:
+    """One Assur group (or the crank), freed from its neighbours, at position k: its links,
+    its loads, the reactions of the links taken away (a revolute pair's in its components
+    Rτ and Rn as the plan found them), the crank's h21 and Mур."""
+    mech, kin, loads, forces = analysis.mech, analysis.kin, analysis.loads, analysis.forces
+    crank = links == (mech.crank.link,)
+    names = [p for ln in links for p in mech.points_of(ln) if p in kin.pos.points]
     pivot = kin.pos.points[mech.crank.pivot][k]
-    mid = (lo + hi) / 2
-    origin = (float(centre[0] + (pivot[0] - mid[0]) / kl),
-              float(centre[1] - (pivot[1] - mid[1]) / kl))
-    P = _Paper(origin, kl, pivot)
+    P = _figure_paper(kin, k, names, cell, kl, pivot)
     L = "force_plan"
-    items: list[Item] = []
-    items += link_items(mech, kin, k, P, MAIN, ident, L, slots)
+    pre = f"{ident}-{fig}"
+    own = {f"{ident}-link-{ln}" for ln in links}
+    items: list[Item] = [it for it in link_items(mech, kin, k, P, MAIN, ident, L, slots)
+                         if it.id and (it.id in own or any(it.id.startswith(o + "-")
+                                                           for o in own))]
     for key, (G, u) in kin.pos.guides.items():
         slider, carrier = key.split("/")
+        if slider not in links:
+            continue
         corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
         if corners:
             items.append(Polyline(corners, Style(0.5, fill="white"), True, layer=L,
-                                  id=f"{ident}-slider-{key.replace('/', '-')}"))
-        if carrier == mech.frame_link:
+                                  id=f"{ident}-slider-{slider}-{carrier}"))
+        if carrier not in links:  # the guide of the link taken away: its axis
             d = np.array([u[k][0], -u[k][1]])
-            at = pts[slider_point(mech, kin, k, slider, G[k], u[k])]
+            at = kin.pos.points[slider_point(mech, kin, k, slider, G[k], u[k])][k]
             c = np.asarray(P(G[k] + np.dot(at - G[k], u[k]) * u[k]))
             items.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
-                              layer=L, id=f"{ident}-guide-{slider}"))
-    for j in _joints(mech):
-        items.append(Circle(P(pts[j]), JOINT_R, WHITE_FILL, layer=L, id=f"{ident}-joint-{j}"))
-    for fp in mech.frame_points:
-        items += [replace(it, layer=L)
-                  for it in _support(P(mech.frame_points[fp]), f"{ident}-sup-{fp}")]
-    reqs: list[LabelRequest] = []
-    arrows = []
-    for f in loads.all_forces():
-        if np.hypot(*f.vector[k]) > 0:
-            arrows.append((f.name, f.at[k], f.vector[k], False))
+                              layer=L, id=f"{pre}-guide-{slider}"))
+    if crank:
+        joints = {mech.crank.pivot, mech.crank.pin}
+    else:
+        d = next(d for d in mech.dyads if set(d.links) == set(links))
+        joints = {p for p, kind in zip(_pair_points(d), d.kind, strict=False)
+                  if p and kind == "R"}
+    for j in sorted(joints):
+        items.append(Circle(P(kin.pos.points[j][k]), JOINT_R, WHITE_FILL, layer=L,
+                            id=f"{pre}-joint-{j}"))
     inner = cell.polygon().buffer(-(ARROW_MM + 4.0))
+    arrows: list[tuple[str, np.ndarray, np.ndarray, bool]] = []
+    couples: list[tuple[str, str, float]] = []
+    for ln in links:
+        for f in loads.forces.get(ln, ()):
+            if np.hypot(*f.vector[k]) > 0:
+                arrows.append((f.name, f.at[k], f.vector[k], False))
+        for m in loads.moments.get(ln, ()):
+            if m.moment[k]:
+                couples.append((m.name, ln, float(m.moment[k])))
+    seg = _segments(fp)
     for r in forces.reactions.values():
-        if r.on in analysis.mech.moving_links and np.hypot(*r.vector[k]) > 0:
-            at = r.at[k]
-            if not inner.contains(Point(P(at))):  # a slide's line of action far off: at X
-                at = r.ref[k]
-            arrows.append((r.name, at, r.vector[k], True))
+        vec, at = np.asarray(r.vector[k], float), np.asarray(r.at[k], float)
+        if np.hypot(*vec) == 0:
+            continue
+        if r.on in links and r.by not in links:
+            name = r.name
+        elif r.by in links and r.on not in links and r.on != mech.frame_link:
+            name, vec = reaction_name(r.on, r.by), -vec  # of a group solved before
+        else:
+            continue
+        if not inner.contains(Point(P(at))):  # a slide's line of action far off
+            at = np.asarray(r.ref[k], float)
+        parts = [q for q in (f"Rτ{name[1:]}", f"Rn{name[1:]}") if q in seg
+                 and np.hypot(*seg[q]) > 1e-9]
+        for q in parts:
+            arrows.append((q, at, seg[q], True))
+        arrows.append((name, at, vec, True))
+    reqs: list[LabelRequest] = []
     for n, (name, at, vec, reaction) in enumerate(arrows):
         tip = np.asarray(P(at))
         d = np.array([vec[0], -vec[1]]) / float(np.hypot(*vec))
         # a load starts at its point; a reaction ends at the joint it acts on
         p0, p1 = (tip - ARROW_MM * d, tip) if reaction else (tip, tip + ARROW_MM * d)
         items.append(Arrow(tuple(p0), tuple(p1), Style(0.35), 3.0, 1.0, layer=L,
-                           id=f"{ident}-f{n}"))
-        reqs.append(LabelRequest(tuple((p0 + p1) / 2), name, 3.5, group=ident))
-    # the arm h21 of R21 about the crank's pivot: its line of action through the pin and
-    # the perpendicular from the pivot
+                           id=f"{pre}-f{n}"))
+        free = p0 if reaction else p1  # the letter at the arrow's free end, off the joint
+        reqs.append(LabelRequest(tuple(free + 1.0 * d * (1 if not reaction else -1)), name, 3.5,
+                                 group=pre))
+    centres = {ln: getattr(mech.links.get(ln), "centre", None) for ln in links}
+    for n, (name, ln, m) in enumerate(couples):
+        c_name = centres.get(ln)
+        pts = [kin.pos.points[p][k] for p in mech.points_of(ln) if p in kin.pos.points]
+        c = P(kin.pos.points[c_name][k] if c_name in kin.pos.points else np.mean(pts, axis=0))
+        a0 = 30.0 + 90.0 * n
+        items += turning_arrow(c, 7.0, a0, 120.0, m >= 0, 30.0, layer=L, ident=f"{pre}-m{n}")
+        reqs.append(LabelRequest(arc_point(c, 9.0, a0 + 60.0), name, 3.5, group=pre))
+    if crank:
+        items += _crank_marks(analysis, k, P, pre, ident, reqs)
+    w = WORDS[lang]
+    what = (f"{w['link']} {links[0]}" if crank else f"{w['group']} {'–'.join(links)}")
+    scale = _units(Scale("Kl", kl, "m/mm").basis, lang)
+    pos = f"{w['pos']} {kin.labels[k]}"
+    caption = _caption(cell, (f"{what}, {pos}, {scale}", f"{what.split()[0]}, {pos}, {scale}",
+                              f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
+                       f"{pre}-caption" if not crank else f"{ident}-caption")
+    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    keep = [cell.polygon().exterior.buffer(0.5), text_box(caption).buffer(0.5)]
+    items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{pre}-t", keep_out=keep,
+                          merge_mm=0.5)
+    items.append(caption)
+    return items
+
+
+def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
+    """The crank's line of R21 (dashed), the arm h21 from the pivot and the turning arrow
+    of Mур about the pivot."""
+    mech, kin, forces = analysis.mech, analysis.kin, analysis.forces
+    items: list[Item] = []
+    pts = {n: p[k] for n, p in kin.pos.points.items()}
+    pivot = pts[mech.crank.pivot]
     try:
-        r21 = forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k]
+        r21 = np.asarray(forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k])
     except KeyError:
         r21 = np.zeros(2)
     if np.hypot(*r21) > 0:
@@ -157,51 +261,95 @@ def _scheme_items(analysis, loads, forces, k: int, cell: Rect, kl1: Scale, lang:
         if math.dist(foot, o) > 0.5:
             items.append(Line(tuple(o), tuple(foot), THIN, layer="dimensions",
                               id=f"{ident}-h21"))
-            reqs.append(LabelRequest(tuple((o + foot) / 2), "h21", 3.5, group=ident))
-    # the balancing moment: a turning arrow about the crank's pivot
+            reqs.append(LabelRequest(tuple((o + foot) / 2), "h21", 3.5, group=pre))
     c = P(pivot)
     a0 = math.degrees(float(kin.phi[k])) + 150.0
-    items += turning_arrow(c, 9.0, a0, 60.0, float(forces.M_bal[k]) >= 0, 20.0, layer=L,
-                           ident=f"{ident}-mbal")
-    reqs.insert(0, LabelRequest(arc_point(c, 13.0, a0 + 30.0), "Mур", 3.5, group=ident))
-    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
-    keep = [cell.polygon().exterior.buffer(0.5)]
-    items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{ident}-t", keep_out=keep)
-    scale = Scale("Kl", kl, "m/mm").basis
-    items.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2),
-                                f"{WORDS[lang]['scheme']} {kin.labels[k]}, {_units(scale, lang)}",
-                                3.5, layer="text", id=f"{ident}-caption"))
+    items += turning_arrow(c, 9.0, a0, 60.0, float(forces.M_bal[k]) >= 0, 20.0,
+                           layer="force_plan", ident=f"{ident}-mbal")
+    reqs.insert(0, LabelRequest(arc_point(c, 13.0, a0 + 30.0), "Mур", 3.5, group=pre))
     return items
+
+
+def _plan_items(plan, cell: Rect, captions, ident: str, rename) -> list[Item]:
+    """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named),
+    its caption the first of ``captions`` that fits the cell."""
+    items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename)
+    return [it for it in items if it.id != f"{ident}-caption"] + [
+        _caption(cell, captions, f"{ident}-caption")]
+
+
+def _short_notes(plan, lang: str) -> dict[str, str]:
+    """Forces of a plan whose vector is shorter than SHORT_MM: ``{name: note}``, the note
+    giving the value and «<2 мм» (a dot with a name tells a reader nothing)."""
+    w = WORDS[lang]
+    return {q: f"{q} = {r.value:.0f} {w['N']}" if r.value >= 100 else
+            f"{q} = {fmt(r.value, 3)} {w['N']}" for q, r in plan.readings.items()
+            if 0.0 < r.exact_mm < SHORT_MM and r.unit == "N" and not q.startswith("h")}
+
+
+def _note_items(notes: dict[str, str], cell: Rect, ident: str, lang: str) -> list[Item]:
+    """The footnote of a plan's short forces at the bottom of its cell: «* Pи2 = 55,2 Н,
+    … (<2 мм)», the forces' letters on the plan marked with the star."""
+    if not notes:
+        return []
+    parts = [*notes.values()]
+    parts[-1] += f" ({WORDS[lang]['short']})"
+    lines: list[str] = []
+    for p in parts:
+        trial = f"{lines[-1]}, {p}" if lines else f"* {p}"
+        if lines and text_width(Text((0, 0), trial, 2.5, layer="text")) <= cell.width - 2.0:
+            lines[-1] = trial
+        else:
+            lines.append(trial if not lines else p)
+    out = []
+    for n, line in enumerate(reversed(lines)):
+        out.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y1 - 2.0 - 4.25 * n), line, 2.5,
+                                  layer="text", id=f"{ident}-short{len(lines) - n}"))
+    return out
 
 
 def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None) -> Sheet:
     """Sheet 2 of the project for ``analysis`` (see the module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    own_page = page is not None  # else the variant's page: the project's scales
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    sc = sheet_scales(mech, kin, page) if own_page else analysis.sheet1
     loads, forces = analysis.loads, analysis.forces
+    own_page = page.format != mech.settings.get("drawing", {}).get("format", "A1")
     s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page) if own_page else analysis.sheet2
+    kl = s2.kl
     w = WORDS[lang]
-    f = page.frame
     n_groups = len(mech.dyads)
     items: list[Item] = []
     summary = []
     mmax = float(np.max(np.abs(forces.M_bal)))
+    figures = group_links(mech)
     for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
-        items += _scheme_items(analysis, loads, forces, k, cells[0], sc.kl, lang, ident,
-                               sc.slots)
-        plans = force_plans(mech, kin, forces, loads, k, sc.kl, room_mm=s2.room_mm)
-        for i, fp in enumerate(plans):
+        plans = force_plans(mech, kin, forces, loads, k, kl, room_mm=s2.room_mm)
+        if s2.kl_crank.per_mm != kl.per_mm:  # the crank's arms read on its own drawing
+            plans = (*plans[:-1], force_plans(mech, kin, forces, loads, k, s2.kl_crank,
+                                              room_mm=s2.room_mm)[-1])
+        for i, (fp, links) in enumerate(zip(plans, figures, strict=True)):
+            fig_kl = s2.kl_crank if i == len(figures) - 1 else kl
+            items += _group_items(analysis, fp, k, links, cells[2 * i], fig_kl.per_mm, ident,
+                                  f"g{i}", s2.slots, lang)
             title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])
             cap = f"{title}, {_kp(fp.scale, lang)}"
-            items += plan_items(fp, cells[1 + i], cap, f"{ident}-fp{i}", segment_labels=True)
-            items += ill_mark_items(fp, cells[1 + i], f"{ident}-fp{i}", lang)
-        lever = zhukovsky_lever(mech, kin, loads, k, sc.kl, s2.lever_kv(kin, k),
+            cell = cells[2 * i + 1]
+            notes = _note_items(_short_notes(fp, lang), cell, f"{ident}-fp{i}", lang)
+            # the plan above its footnote
+            room = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - 4.25 * len(notes))
+            items += _plan_items(fp, room, (cap, cap.split(", ")[0].split()[-1] + ", "
+                                            + cap.split(", ")[-1]), f"{ident}-fp{i}",
+                                 {q: f"{q}*" for q in _short_notes(fp, lang)})
+            items += notes
+            items += ill_mark_items(fp, cell, f"{ident}-fp{i}", lang)
+        lever = zhukovsky_lever(mech, kin, loads, k, kl, s2.lever_kv(kin, k),
                                 reference=float(forces.M_bal[k]))
-        cap = f"{w['lever']}, {_units(lever.plan.scale.basis, lang)}"
-        items += plan_items(lever, cells[-1], cap, f"{ident}-lever", segment_labels=True)
+        kv = _units(lever.plan.scale.basis, lang)
+        pos = f"{w['pos']} {kin.labels[k]}"
+        items += _plan_items(lever, cells[-1], (f"{w['lever']}, {pos}, {kv}",
+                                                f"{w['lever_short']}, {pos}, {kv}"),
+                             f"{ident}-lever", {})
         items += ill_mark_items(lever, cells[-1], f"{ident}-lever", lang)
         crank = plans[-1]
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
@@ -213,29 +361,163 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
                           _moment(float(crank.M_bal), mmax), _moment(float(lever.M_bal), mmax),
                           f"{lever.discrepancy_pct:.2f}"
                           if abs(float(crank.M_bal)) >= 1e-9 * max(mmax, 1.0) else "—"])
-    strip = Rect(s2.cells[0][0].x0, f.y1 - SHEET2_STRIP, f.x1 - 185.0 - GAP, f.y1 - 4.0)
-    items += _curve_items(analysis, Rect(strip.x0, strip.y0, strip.x0 + 250.0, strip.y1), lang)
-    tx = strip.x0 + 250.0 + GAP
-    items += _table_items(forces, summary, Rect(tx, strip.y0, strip.x1, strip.y1), lang)
+    lay = s2.layout
+    hb = lay.header
+    note = w["header"].format(kl=_units(f"{fmt(kl.per_mm)} m/mm", lang)
+                              + (f", {w['crank'].lower()}: {_units(fmt(s2.kl_crank.per_mm), lang)}"
+                                 if s2.kl_crank.per_mm != kl.per_mm else ""))
+    items.append(_fitted_text(hb, (note, note.split(";")[0]), "s2-header"))
+    items += _qs_items(analysis, s2, lay.qs, lang)
+    items += _curve_items(analysis, lay.curve, lang)
+    items += split_table(lay.table.x0, lay.table.y0, lay.table.width, w["table"],
+                         table_header(forces, lang), summary, ident="s2-table",
+                         title_id="s2-table-title", continued=w["continued"])
     return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]), lang=lang)
 
 
 def table_header(forces, lang: str) -> list[str]:
-    """Columns of the table of sheet 2: position, φ, Kp of the first group, every reaction
-    (kN, in the order solved), h21, Mур from the plans and from the lever, their difference."""
+    """Columns of the table of sheet 2 (:func:`graphplan.project.sheet2_table_header`)."""
+    return sheet2_table_header(forces.reactions, lang)
+
+
+def q_curves(analysis, n: int = 361):
+    """The technological loads over the cycle, for the diagram Q(s): per load its name, the
+    travel s of the link it acts on from the start dead centre of its stroke (m; a rocker's
+    in degrees; a load over the crank angle: the crank's travel, degrees), its size (N, N·m)
+    and whether the crank is in the working stroke there. Returns (curves, unit of s)."""
+    from ..forces import resistance_loads
+    from ..kinematics import in_working_stroke, link_coordinate, solve
+
+    mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
+    if not mech.resistances:
+        return [], ""
+    sense = mech.crank.sense
+    m = max(n, int(n * cycle.period / (2 * math.pi)))
+    tau = np.linspace(0.0, cycle.period, m)
+    phi = kin.phi[0] + sense * tau
+    fine = solve(mech, phi)
+    work = in_working_stroke(mech, cycle, np.mod(phi, 2 * math.pi))
+    out = []
+    unit = "m"
+    for res, load in zip(mech.resistances, resistance_loads(mech, fine, cycle), strict=False):
+        size = (np.hypot(*np.asarray(load.vector).T) if hasattr(load, "vector")
+                else np.abs(np.asarray(load.moment)))
+        if res.over == "crank":
+            x, unit = np.degrees(tau), "deg_crank"
+        else:
+            tl = res.travel_link or mech.output.link
+            lt = cycle.travels[(tl, res.working or mech.output.working)]
+            q = link_coordinate(mech, tl, fine.pos, fine.vel)[1]
+            x = lt.fraction(q) * abs(lt.q_end - lt.q_start)
+            if lt.kind == "rocker":
+                x, unit = np.degrees(x), "deg"
+        out.append((load.name, x, size, work, kin.phi[0] + 0.0))
+    return out, unit
+
+
+def _qs_items(analysis, s2, box: Rect, lang: str) -> list[Item]:
+    """The diagram of the technological force Q(s) (matplotlib, played into the sheet's
+    items), the analysed positions marked."""
+    from .mpl_items import figure_items
+
+    curves, unit = q_curves(analysis)
+    if not curves:
+        return []
+    fig = q_figure(analysis, curves, unit, s2.positions, box.width, box.height, lang)
+    return [figure_items(fig, (box.x0, box.y0), id="s2-q-diagram", lang=lang)]
+
+
+def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm: float,
+             lang: str):
+    """Q(s): each load's size against its link's travel, the working stroke solid, the
+    idle one dashed, the analysed positions dotted and numbered."""
+    import matplotlib
+    from matplotlib.figure import Figure as MplFigure
+
+    from .figures import MM, _font
+
     w = WORDS[lang]
-    return [*w["head"], *(f"{n}, {w['kN']}" for n in forces.reactions), *w["tail"]]
+    kin = analysis.kin
+    big = max(float(np.max(c[2])) for c in curves)
+    kilo = big >= 1e4
+    moment = any(not hasattr(ld, "vector") for ld in ())
+    f_unit = (w["kN"] if kilo else w["N"])
+    div = 1000.0 if kilo else 1.0
+    s_words = {"m": ("s, м" if lang == "ru" else "s, m"), "deg": "ψ, °",
+               "deg_crank": "φ, °"}[unit]
+    names = ", ".join(c[0] for c in curves)
+    title = f"{w['qs']} {names}({s_words.split(',')[0]})"
+    with matplotlib.rc_context({"axes.unicode_minus": False}):
+        fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
+        ax = fig.add_axes((20 / width_mm, 16 / height_mm, 1 - 26 / width_mm,
+                           1 - 32 / height_mm))
+        for name, x, size, work, _ in curves:
+            y = size / div
+            # runs of one stroke: the working stroke solid, the idle stroke dashed
+            edges = np.flatnonzero(np.diff(work.astype(int))) + 1
+            for run in np.split(np.arange(len(x)), edges):
+                if len(run) < 2:
+                    continue
+                ax.plot(x[run], y[run], "-" if work[run[0]] else "--", color="black",
+                        lw=(0.5 if work[run[0]] else 0.3) * MM)
+        # the analysed positions on the curve of the first load
+        name, x, size, work, _ = curves[0]
+        from ..forces import resistance_loads
+
+        at = resistance_loads(analysis.mech, kin, analysis.cycle)
+        ld = at[0]
+        vals = (np.hypot(*np.asarray(ld.vector).T) if hasattr(ld, "vector")
+                else np.abs(np.asarray(ld.moment)))
+        xs = _position_travel(analysis, unit)
+        shown: list[tuple[float, float]] = []
+        x_mm = (width_mm - 26.0) / max(float(np.max(x)), 1e-12)
+        y_mm = (height_mm - 32.0) / max(big / div * 1.15, 1e-12)
+        for k in positions:
+            px, py = float(xs[k]), float(vals[k]) / div
+            ax.plot([px], [py], "o", color="black", markersize=1.2 * MM)
+            if any(abs(px - a) * x_mm < 9.0 and abs(py - b) * y_mm < 6.0 for a, b in shown):
+                continue
+            shown.append((px, py))
+            # written on the side the curve falls away from: left of a rising curve
+            near = np.argsort(np.abs(x - px) + 1e9 * (np.abs(size / div - py) > 0.02 * big / div
+                                                       + 1e-12))[:2]
+            j0, j1 = sorted(int(j) for j in near)
+            rising = (size[j1] - size[j0]) * (x[j1] - x[j0]) >= 0
+            ax.annotate(kin.labels[k], (px, py),
+                        xytext=((-1.5 if rising else 1.5) * MM, 1.0 * MM),
+                        textcoords="offset points", ha="right" if rising else "left",
+                        va="bottom",
+                        **_font(kin.labels[k], 2.5))
+        ax.set_xlim(0, float(np.max(x)) * 1.02 if np.max(x) > 0 else 1.0)
+        ax.set_ylim(0, big / div * 1.15 if big > 0 else 1.0)
+        for lab in ax.get_xticklabels() + ax.get_yticklabels():
+            lab.set(**_font("0123456789,.", 2.5))
+        ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", 2.5)["fontsize"])
+        for sp in ax.spines.values():
+            sp.set_linewidth(0.25 * MM)
+        ax.set_xlabel(s_words, **_font(s_words, 3.5))
+        ax.set_ylabel(f"Q, {f_unit}", **_font(f"Q, {f_unit}", 3.5))
+        leg = f"— {w['work']}   - - {w['idle']}"
+        fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
+                 **_font(leg, 2.5))
+        fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
+    del moment
+    return fig
 
 
-def _table_items(forces, summary, box: Rect, lang: str) -> list[Item]:
-    """The table under its title; a table too wide loses its last columns and says so."""
-    def notes(shown, total):
-        return ([f" (столбцов {shown} из {total}; полностью — forces.ru.md)"] if lang == "ru"
-                else [f" ({shown} of {total} columns; all in forces.en.md)"])
+def _position_travel(analysis, unit: str) -> np.ndarray:
+    """The abscissa of each position on Q(s) (the first load's travel)."""
+    from ..kinematics import link_coordinate
 
-    return titled_table(box.x0, box.y0, box.width, WORDS[lang]["table"],
-                        table_header(forces, lang), summary, ident="s2-table",
-                        title_id="s2-table-title", notes=notes)
+    mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
+    res = mech.resistances[0]
+    if res.over == "crank":
+        return np.degrees(np.mod((kin.phi - kin.phi[0]) * mech.crank.sense, cycle.period))
+    tl = res.travel_link or mech.output.link
+    lt = cycle.travels[(tl, res.working or mech.output.working)]
+    q = link_coordinate(mech, tl, kin.pos, kin.vel)[1]
+    x = lt.fraction(q) * abs(lt.q_end - lt.q_start)
+    return np.degrees(x) if unit == "deg" else x
 
 
 def _moment(m: float, scale: float) -> str:
@@ -283,7 +565,7 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
         ax.set_xlim(0, period)
         ax.set_xticks(curve.position_travel_deg)
         ax.set_xticklabels(spaced_labels(curve.position_travel_deg, list(curve.labels),
-                                         (width_mm - 28.0) / 360.0),
+                                         (width_mm - 28.0) / period),
                            **_font("0123456789()", 2.5))
         for lab in ax.get_yticklabels():
             lab.set(**_font("0123456789-", 2.5))
@@ -295,4 +577,5 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
     return fig
 
 
-__all__ = ["kinetostatics_sheet", "moment_figure", "sheet2_positions"]
+__all__ = ["kinetostatics_sheet", "moment_figure", "q_curves", "q_figure", "sheet2_positions",
+           "table_header"]

@@ -220,24 +220,116 @@ def fit_columns(header, rows, width: float, height: float = 3.5,
                        [widths[j] for j in keep], len(keep), len(header))
 
 
-SHEET2_STRIP = 120.0  #: height of sheet 2's bottom strip (Mур(φ) and the table), mm
+SHEET2_STRIP = 120.0  #: height of sheet 2's bottom strip on A1 (Q(s), Mур(φ), the table), mm
 SHEET2_CELL_MIN = 60.0  #: smallest useful cell of sheet 2, mm
 LABEL_ROOM = 12.0  #: room kept around a plan in its cell for letters, mm
+CHART_W = (180.0, 240.0)  #: widths of the Q(s) and Mур(φ) charts on A1, mm
+TABLE_PART_GAP = 4.0  #: between the parts of a split table, mm
 
 
-def sheet2_cells(page: Page, n_groups: int, n_rows: int) -> tuple[tuple[Rect, ...], ...]:
-    """The cells of sheet 2, one row per position: the scheme, the plans of the groups, the
-    crank's plan, Zhukovsky's lever (each cell's top CAPTION mm for its caption)."""
+@dataclass(frozen=True, slots=True)
+class Sheet2Layout:
+    """Regions of sheet 2 (mm on paper, y down).
+
+    ``rows``: per analysed position, its cells in the order the force plans are built —
+    for every Assur group from the last attached to the first, the group drawn separately
+    and its force plan; then the crank and its force plan; then Zhukovsky's lever.
+    ``header`` the band at the top (the scales), ``qs`` the chart of the technological
+    force Q(s), ``curve`` the chart Mур(φ), ``table`` the box of the table of the force
+    analysis (split into parts, its header repeated, when it is wider than the box).
+    """
+
+    page: Page
+    rows: tuple[tuple[Rect, ...], ...]
+    header: Rect
+    qs: Rect
+    curve: Rect
+    table: Rect
+
+
+#: The words of sheet 2's table: its leading and trailing columns, and the unit of a reaction.
+SHEET2_TABLE_WORDS = {
+    "ru": {"head": ("Пол.", "φ, °", "Kp, Н/мм"), "kN": "кН",
+           "tail": ("h21, мм", "Mур, Н·м", "Mур(Ж), Н·м", "Δ, %")},
+    "en": {"head": ("Pos.", "φ, °", "Kp, N/mm"), "kN": "kN",
+           "tail": ("h21, mm", "Mур, N·m", "Mур(Zh), N·m", "Δ, %")},
+}
+
+
+def sheet2_table_header(reactions, lang: str) -> list[str]:
+    """Columns of the table of sheet 2: position, φ, Kp of the first group, every reaction
+    (kN, in the order solved), h21, Mур from the plans and from the lever, their difference."""
+    w = SHEET2_TABLE_WORDS[lang]
+    return [*w["head"], *(f"{n}, {w['kN']}" for n in reactions), *w["tail"]]
+
+
+def sheet2_cell_min(page: Page) -> float:
+    """The smallest cell sheet 2 draws a group, a plan or the lever in: SHEET2_CELL_MIN on
+    A1, less on a smaller format (but never under 45 mm)."""
+    return max(45.0, SHEET2_CELL_MIN * min(1.0, page.frame.height / 584.0) ** 0.5)
+
+
+def _sheet2_grid(x0, y0, w, h, n_pos, per_pos):
+    """Cells of ``n_pos`` positions of ``per_pos`` cells each, a position's cells
+    consecutive in reading order (one or more rows per position): the grid whose smaller
+    cell side (below the caption) is the largest. Returns (that side, rows of cells)."""
+    best = None
+    for rows_per in range(1, per_pos + 1):
+        ncol = math.ceil(per_pos / rows_per)
+        if rows_per > 1 and math.ceil(per_pos / (rows_per - 1)) == ncol:
+            continue
+        nrow = rows_per * n_pos
+        cw, ch = w / ncol, h / nrow
+        side = min(cw, ch - CAPTION)
+        if best is None or side > best[0] + 1e-9:
+            best = (side, ncol, rows_per, cw, ch)
+    side, ncol, rows_per, cw, ch = best  # type: ignore[misc]
+    out = []
+    for p in range(n_pos):
+        cells = []
+        for i in range(per_pos):
+            r, c = p * rows_per + i // ncol, i % ncol
+            # the last cell of a position (the lever) takes the rest of its row
+            c1 = ncol if i == per_pos - 1 else c + 1
+            cells.append(Rect(x0 + c * cw, y0 + r * ch, x0 + c1 * cw, y0 + (r + 1) * ch))
+        out.append(tuple(cells))
+    return side, tuple(out)
+
+
+def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height) -> Sheet2Layout:
+    """Cut ``page`` for sheet 2: as many of the ``n_wanted`` positions as give cells of at
+    least :func:`sheet2_cell_min` (at least one), the strip of the charts and the table.
+
+    ``table_height(width)`` is the height the table needs (split into parts) in a box
+    ``width`` mm wide; the strip is as tall as the charts want or the table needs, the
+    table above the title block, right of the two charts. Raises LayoutError when even
+    one position leaves no useful cell.
+    """
     f = page.frame
-    x0, y0, x1 = f.x0 + 4.0, f.y0 + GRAPH26_SIZE[1] + 8.0, f.x1 - 4.0
-    y1 = f.y1 - SHEET2_STRIP - GAP
-    ncol = n_groups + 3
-    cw, ch = (x1 - x0) / ncol, (y1 - y0) / n_rows
-    if min(cw, ch) < SHEET2_CELL_MIN:
-        raise LayoutError(f"sheet 2 leaves cells of {min(cw, ch):.0f} mm on {page.format}: "
-                          "choose fewer positions (kinetostatics.positions) or a larger format")
-    return tuple(tuple(Rect(x0 + i * cw, y0 + r * ch, x0 + (i + 1) * cw, y0 + (r + 1) * ch)
-                       for i in range(ncol)) for r in range(n_rows))
+    k = min(1.0, f.height / 584.0)
+    kw = min(1.0, f.width / 816.0)
+    x0, x1 = f.x0 + 4.0, f.x1 - 4.0
+    tb_w, tb_h = TITLE_BLOCK_SIZE
+    wq, wm = CHART_W[0] * kw, CHART_W[1] * kw
+    tx0 = x0 + wq + GAP + wm + GAP
+    t_w = x1 - tx0
+    t_h = table_height(t_w)
+    strip = max(SHEET2_STRIP * k, t_h + GAP + tb_h + 2.0)
+    header = Rect(f.x0 + GRAPH26_SIZE[0] + GAP, f.y0 + 1.0, x1, f.y0 + GRAPH26_SIZE[1] - 1.0)
+    y0, y1 = f.y0 + GRAPH26_SIZE[1] + 3.0, f.y1 - strip - GAP
+    per_pos = 2 * n_groups + 3
+    least = sheet2_cell_min(page)
+    for n in range(max(n_wanted, 1), 0, -1):
+        side, rows = _sheet2_grid(x0, y0, x1 - x0, y1 - y0, n, per_pos)
+        if side >= least or n == 1:
+            break
+    if side < 0.75 * least:
+        raise LayoutError(f"sheet 2 leaves cells of {side:.0f} mm on {page.format}: "
+                          "choose a larger format")
+    sy0, sy1 = f.y1 - strip, f.y1 - 4.0
+    return Sheet2Layout(page, rows, header, Rect(x0, sy0, x0 + wq, sy1),
+                        Rect(x0 + wq + GAP, sy0, x0 + wq + GAP + wm, sy1),
+                        Rect(tx0, sy0, x1, f.y1 - tb_h - GAP))
 
 
 def plan_room(cell: Rect) -> float:
@@ -266,4 +358,72 @@ def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *
                 break
     items: list[object] = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
     items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5, id=ident)
+    return items
+
+
+def _column_widths(header, rows, height: float = 3.5, pad: float = 3.0) -> list[float]:
+    from ..drawing.sheet import Text, text_width
+
+    widths = []
+    for j in range(len(header)):
+        cells = [str(header[j])] + [str(row[j]) for row in rows]
+        widths.append(max(text_width(Text((0, 0), c, height, layer="tables")) for c in cells
+                          if c.strip()) + pad)
+    return widths
+
+
+def table_parts(header, rows, width: float, key: int = 1) -> list[FittedTable]:
+    """A table too wide for ``width`` split into parts one under the other, each as wide
+    as fits, every part after the first repeating the ``key`` leading columns (the
+    position), as a continued table is drawn (GOST 2.105: «Продолжение таблицы»).
+
+    Nothing is left out; a single column wider than ``width`` is a LayoutError.
+    """
+    widths = _column_widths(header, rows)
+    n = len(header)
+    parts: list[list[int]] = []
+    j = 0
+    while j < n:
+        cols = list(range(min(key, n))) if parts else []
+        acc = sum(widths[c] for c in cols)
+        start = max(j, len(cols)) if not parts else j
+        j = start
+        while j < n and acc + widths[j] <= width + 1e-9:
+            cols.append(j)
+            acc += widths[j]
+            j += 1
+        if j == start:
+            raise LayoutError(f"a table column ({header[j]!r}) is wider than the "
+                              f"{width:.0f} mm its place has")
+        parts.append(cols)
+    return [FittedTable([str(header[c]) for c in cols], [[row[c] for c in cols] for row in rows],
+                        [widths[c] for c in cols], len(cols), n) for cols in parts]
+
+
+def split_table_height(header, rows, width: float, key: int = 1) -> float:
+    """Height of the table under its title, split by :func:`table_parts` (inf: cannot)."""
+    try:
+        parts = table_parts(header, rows, width, key)
+    except LayoutError:
+        return math.inf
+    return sum(CAPTION + ROW * (len(rows) + 1) for _ in parts) + TABLE_PART_GAP * (
+        len(parts) - 1)
+
+
+def split_table(x0: float, y0: float, width: float, title: str, header, rows, *, ident: str,
+                title_id: str, continued: str, key: int = 1) -> list:
+    """A table under its title at (x0, y0); wider than ``width``, in parts one under the
+    other (:func:`table_parts`), each after the first under ``continued`` («Продолжение
+    таблицы …») with the key columns and its own header. Ids: the first part
+    ``{ident}-r{i}c{j}``, the n-th ``{ident}-{n}-r{i}c{j}``."""
+    from ..drawing.sheet import Text, table_items
+
+    items: list = []
+    y = y0
+    for n, part in enumerate(table_parts(header, rows, width, key), 1):
+        items.append(Text((x0, y + 5.0), title if n == 1 else continued, 5.0 if n == 1 else 3.5,
+                          layer="text", id=title_id if n == 1 else f"{title_id}-{n}"))
+        items += table_items((x0, y + CAPTION), part.widths, part.rows, part.header, 3.5,
+                             id=ident if n == 1 else f"{ident}-{n}")
+        y += CAPTION + ROW * (len(rows) + 1) + TABLE_PART_GAP
     return items

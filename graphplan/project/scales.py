@@ -20,7 +20,7 @@ from ..kinematics import in_working_stroke
 from ..model import Mechanism
 from ..paper import GRAPH26_SIZE, Page
 from ..plans import plan_name
-from ..units import PLAN_SERIES, Scale, fit_scale, nice_ceil
+from ..units import PLAN_SERIES, Scale, fit_scale, fmt, nice_ceil
 from .layout import (
     CAPTION,
     GAP,
@@ -30,9 +30,12 @@ from .layout import (
     Rect,
     Sheet1Layout,
     diagram_min,
+    Sheet2Layout,
     plan_room,
     sheet1_layout,
-    sheet2_cells,
+    sheet2_layout,
+    sheet2_table_header,
+    split_table_height,
 )
 
 PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
@@ -315,12 +318,18 @@ def sheet2_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
 
 @dataclass(frozen=True, slots=True)
 class Sheet2Scales:
-    """What sheet 2 is drawn at: its positions, its cells, the room of a force plan (each
-    Kp is the series value that fits the plan into it) and the lever's cell."""
+    """What sheet 2 is drawn at: its positions (as many of the wanted ones as its page
+    holds), its cells, the room of a force plan (each Kp is the series value that fits the
+    plan into it), Kl of the groups drawn separately and of the crank, the lever's cell."""
 
     positions: tuple[int, ...]
     cells: tuple[tuple[Rect, ...], ...]
     room_mm: float
+    kl: Scale | None = None  #: of the groups
+    kl_crank: Scale | None = None  #: of the crank (its own: a short crank is drawn larger)
+    layout: Sheet2Layout | None = None
+    slots: dict[str, tuple[float, float]] | None = None
+    wanted: tuple[int, ...] = ()
 
     def lever_kv(self, kin, k: int) -> Scale:
         """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
@@ -332,10 +341,61 @@ class Sheet2Scales:
         return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
 
 
+GROUP_ROOM = 18.0  #: kept on each side of a group drawn on sheet 2 for its loads' arrows, mm
+
+
+def group_links(mech: Mechanism) -> list[tuple[str, ...]]:
+    """The links of each figure sheet 2 draws separately, in the order of the force plans:
+    the Assur groups from the last attached to the first, then the crank."""
+    return [tuple(mech.dyads[i].links) for i in reversed(range(len(mech.dyads)))] + [
+        (mech.crank.link,)]
+
+
+def _group_kl(mech: Mechanism, kin, positions, rows, crank: bool = False) -> Scale:
+    """Kl of the groups drawn separately (``crank``: of the crank): the usual series value
+    (1, 2, 2.5, 4, 5 × 10^k) at which every group (the crank) of every position fits its
+    cell with its arrows."""
+    need = 0.0
+    figures = group_links(mech)
+    for k, cells in zip(positions, rows, strict=False):
+        for n, links in enumerate(figures):
+            if (n == len(figures) - 1) != crank:
+                continue
+            cell = cells[2 * n]
+            pts = np.array([kin.pos.points[p][k] for ln in links for p in mech.points_of(ln)
+                            if p in kin.pos.points])
+            if len(pts) < 2:
+                continue
+            w, h = np.ptp(pts, axis=0)
+            rw = max(cell.width - 2 * GROUP_ROOM, 10.0)
+            rh = max(cell.height - CAPTION - 2 * GROUP_ROOM, 10.0)
+            need = max(need, float(w) / rw, float(h) / rh)
+    return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
+
+
 def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None
                   ) -> Sheet2Scales:
-    """Positions, cells and plan room of sheet 2 (see :mod:`graphplan.drawing.sheet2`)."""
+    """Positions, cells, plan room and Kl of sheet 2 (see :mod:`graphplan.drawing.sheet2`)."""
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    rows = sheet2_positions(mech, kin, forces, cycle)
-    cells = sheet2_cells(page, len(mech.dyads), len(rows))
-    return Sheet2Scales(rows, cells, plan_room(cells[0][1]))
+    wanted = sheet2_positions(mech, kin, forces, cycle)
+    header = sheet2_table_header(forces.reactions, "ru")
+    # the table's rows as wide as its widest values are likely to be (the layout is cut
+    # before the plans are built); 10 % kept for what they are not
+    mb = [fmt(float(forces.M_bal[k]), 5) for k in wanted]
+    sample = [[kin.labels[k], "000.0", "10000",
+               *(fmt(float(r.magnitude[k]) / 1000.0, 5) for r in forces.reactions.values()),
+               "000.00", mb[i], mb[i], "00.00"] for i, k in enumerate(wanted)]
+
+    def table_height(width: float) -> float:
+        return split_table_height(header, sample, 0.9 * width)
+
+    lay = sheet2_layout(page, len(mech.dyads), len(wanted), table_height)
+    positions = wanted[:len(lay.rows)]
+    kl = _group_kl(mech, kin, positions, lay.rows)
+    # the crank at the groups' scale or larger
+    kl_crank = Scale("Kl", min(kl.per_mm, _group_kl(mech, kin, positions, lay.rows, True).per_mm),
+                     "m/mm")
+    slots = slot_ranges(mech, one_turn(mech, kin)) if any(
+        key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
+    return Sheet2Scales(positions, lay.rows, plan_room(lay.rows[0][1]), kl, kl_crank, lay, slots,
+                        wanted)
