@@ -231,7 +231,9 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
                               f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
                        f"{pre}-caption" if not crank else f"{ident}-caption")
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
-    keep = [cell.polygon().exterior.buffer(0.5), text_box(caption).buffer(0.5)]
+    # the letters stay inside the figure's cell, clear of its caption
+    keep = [cell.polygon().buffer(300.0).difference(cell.polygon().buffer(-0.5)),
+            text_box(caption).buffer(0.5)]
     items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{pre}-t", keep_out=keep,
                           merge_mm=0.5)
     items.append(caption)
@@ -440,7 +442,6 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
     kin = analysis.kin
     big = max(float(np.max(c[2])) for c in curves)
     kilo = big >= 1e4
-    moment = any(not hasattr(ld, "vector") for ld in ())
     f_unit = (w["kN"] if kilo else w["N"])
     div = 1000.0 if kilo else 1.0
     s_words = {"m": ("s, м" if lang == "ru" else "s, m"), "deg": "ψ, °",
@@ -451,7 +452,7 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
         fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
         ax = fig.add_axes((20 / width_mm, 16 / height_mm, 1 - 26 / width_mm,
                            1 - 32 / height_mm))
-        for name, x, size, work, _ in curves:
+        for _name, x, size, work, _ in curves:
             y = size / div
             # runs of one stroke: the working stroke solid, the idle stroke dashed
             edges = np.flatnonzero(np.diff(work.astype(int))) + 1
@@ -461,7 +462,7 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
                 ax.plot(x[run], y[run], "-" if work[run[0]] else "--", color="black",
                         lw=(0.5 if work[run[0]] else 0.3) * MM)
         # the analysed positions on the curve of the first load
-        name, x, size, work, _ = curves[0]
+        _name, x, size, work, _ = curves[0]
         from ..forces import resistance_loads
 
         at = resistance_loads(analysis.mech, kin, analysis.cycle)
@@ -501,7 +502,6 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
         fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
                  **_font(leg, 2.5))
         fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
-    del moment
     return fig
 
 

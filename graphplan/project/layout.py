@@ -137,7 +137,7 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     n_v = n_positions if n_plans is None else n_plans
     n_a = n_v if n_acc is None else n_acc
     table_h = ROW * (n_positions + 1) + CAPTION
-    tb_w, tb_h = TITLE_BLOCK_SIZE
+    tb_h = TITLE_BLOCK_SIZE[1]
     struct_h = structure_block_height(n_groups)
     strip = max(table_h, tb_h + GAP + SCALES_BLOCK + struct_h)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
@@ -309,7 +309,7 @@ def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height) -> She
     k = min(1.0, f.height / 584.0)
     kw = min(1.0, f.width / 816.0)
     x0, x1 = f.x0 + 4.0, f.x1 - 4.0
-    tb_w, tb_h = TITLE_BLOCK_SIZE
+    tb_h = TITLE_BLOCK_SIZE[1]
     wq, wm = CHART_W[0] * kw, CHART_W[1] * kw
     tx0 = x0 + wq + GAP + wm + GAP
     t_w = x1 - tx0

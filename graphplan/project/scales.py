@@ -29,8 +29,8 @@ from .layout import (
     VECTOR_MAX,
     Rect,
     Sheet1Layout,
-    diagram_min,
     Sheet2Layout,
+    diagram_min,
     plan_room,
     sheet1_layout,
     sheet2_layout,
@@ -337,7 +337,9 @@ class Sheet2Scales:
         cell = self.cells[0][-1]
         v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
         ext = float(np.max(np.ptp(v, axis=0)))
-        room = min(cell.width, cell.height - CAPTION) - 40.0
+        # the loads are drawn up to FORCE_ARROW_MM (30 mm) from their points
+        side = min(cell.width, cell.height - CAPTION)
+        room = max(side - 60.0, 0.4 * side)
         return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
 
 
