@@ -137,7 +137,7 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     n_v = n_positions if n_plans is None else n_plans
     n_a = n_v if n_acc is None else n_acc
     table_h = ROW * (n_positions + 1) + CAPTION
-    tb_h = TITLE_BLOCK_SIZE[1]
+    tb_w, tb_h = TITLE_BLOCK_SIZE
     struct_h = structure_block_height(n_groups)
     strip = max(table_h, tb_h + GAP + SCALES_BLOCK + struct_h)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
