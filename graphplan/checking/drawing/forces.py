@@ -23,7 +23,11 @@ from ..units import fold
 from .plans import caption_kind, caption_position, stated_scales
 from .scene import Scene, point_segment, split_names
 
-_FORCE = re.compile(r"^(?:R[τtnⁿ]?\d\d|G\d{1,2}|(?:Pи|Pu|Фи|Ф|Fи|Pin)\d{1,2}|Q|Fпс|Pпс)$")
+_FORCE = re.compile(r"^(?:R[τtnⁿ]?\d\d|G\d{1,2}|(?:Pи|Pu|Фи|Ф|Fи|Pin)\d{1,2}|Q\d{0,2}|"
+                    r"[FP][а-яё]{1,3}\d{0,2}|F(?:pc|ps|g|c)\d{0,2})$")
+"""A force's name: a reaction (``R43``, ``Rτ12``, ``Rn12``), a weight (``G3``), a force of
+inertia (``Pи3``, ``Фи3``), the working load (``Q``, ``Fпс``, ``Pпс``), a gas or liquid
+force (``Fг2``, ``Fж``)."""
 
 
 def is_force_name(name: str) -> bool:
@@ -40,6 +44,7 @@ class DrawnForce:
     end: tuple[float, float]
     sense: bool
     segments: tuple[int, ...]
+    options: tuple[DrawnForce, ...] = ()  # other lines the name is nearly as near
 
     @property
     def length(self) -> float:
@@ -103,8 +108,15 @@ def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
 def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) -> int | None:
     """The line a text names: the nearest (a force's name is beside the middle of its
     arrow; a construction line, without an arrowhead, only when nothing else is near)."""
+    near = _lines_near(scene, t, min_len, forces)
+    return near[0][1] if near else None
+
+
+def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
+                ) -> list[tuple[float, int]]:
+    """The lines within reach of a text, as (cost, segment), the likeliest first."""
     reach = 3.0 * t.height + 0.35 * t.height * len(t.text) + 2.0
-    best = None
+    out: list[tuple[float, int]] = []
     for i, s in enumerate(scene.segments):
         if s.length < min_len:
             continue
@@ -117,8 +129,7 @@ def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) ->
         if not forces:
             cost = d - (3.0 if _foot(scene, i) else 0.0) - (3.0 if _at_pivot(scene, s)
                                                             else 0.0)
-            if best is None or cost < best[0]:
-                best = (cost, i)
+            out.append((cost, i))
             continue
         # a force's name is written beside the middle part of its line
         L2 = s.length ** 2
@@ -129,9 +140,8 @@ def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) ->
         cost = d + 0.25 * mid
         if not any(scene.heads[i]):
             cost += 3.0 * t.height  # a construction line, not a force's arrow
-        if best is None or cost < best[0]:
-            best = (cost, i)
-    return best[1] if best else None
+        out.append((cost, i))
+    return sorted(out)
 
 
 def _at_pivot(scene: Scene, s) -> bool:
@@ -158,6 +168,18 @@ def _foot(scene: Scene, i: int) -> bool:
     return False
 
 
+def _drawn(scene: Scene, i: int) -> DrawnForce:
+    """The force drawn along segment i (carried on through its collinear pieces): its
+    ends, the tip second when its own arrowhead shows the sense."""
+    segs, a, b = _whole_line(scene, i)
+    na, nb = scene.nodes[a], scene.nodes[b]
+    at_a = any(scene.heads[j][k] for j in segs for k in (0, 1) if scene.seg_nodes[j][k] == a)
+    at_b = any(scene.heads[j][k] for j in segs for k in (0, 1) if scene.seg_nodes[j][k] == b)
+    if at_a and not at_b:
+        na, nb = nb, na
+    return DrawnForce("", (na.x, na.y), (nb.x, nb.y), at_a != at_b, tuple(segs))
+
+
 def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
     """The force plans of a drawing (see the module docstring)."""
     by_group: dict[int, dict[str, DrawnForce]] = {}
@@ -165,23 +187,25 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
         names = split_names(t.text)
         if not names or not all(is_force_name(n) for n in names):
             continue
-        i = _nearest_line(scene, t, min_len=0.8)
-        if i is None:
+        near = _lines_near(scene, t, min_len=0.8)
+        if not near:
             continue
-        segs, a, b = _whole_line(scene, i)
-        na, nb = scene.nodes[a], scene.nodes[b]
-        # the sense: the arrowhead of this line, at one of its ends
-        at_a = any(scene.heads[j][k] for j in segs for k in (0, 1)
-                   if scene.seg_nodes[j][k] == a)
-        at_b = any(scene.heads[j][k] for j in segs for k in (0, 1)
-                   if scene.seg_nodes[j][k] == b)
-        if at_a and not at_b:
-            na, nb = nb, na
-        f0 = DrawnForce("", (na.x, na.y), (nb.x, nb.y), at_a != at_b, tuple(segs))
+        i = near[0][1]
         g = scene.group_of[i]
+        # the lines the text is nearly as near, of the same plan: in a crowded polygon
+        # the name may stand nearer a neighbour's line (judged against the construction)
+        lines = [near[0][1]] + [k for c, k in near[1:6]
+                                if c <= near[0][0] + 2.0 * t.height + 2.0 and
+                                scene.group_of[k] == g]
+        drawn = []
+        for k in lines:
+            f = _drawn(scene, k)
+            if all(f.segments != o.segments for o in drawn):
+                drawn.append(f)
         for n in names:
             by_group.setdefault(g, {}).setdefault(
-                n, DrawnForce(n, f0.start, f0.end, f0.sense, f0.segments))
+                n, DrawnForce(n, drawn[0].start, drawn[0].end, drawn[0].sense,
+                              drawn[0].segments, tuple(drawn[1:])))
     plans = []
     for g, forces in by_group.items():
         if len(forces) < 2:
@@ -226,24 +250,44 @@ def _closure(forces: dict[str, DrawnForce]) -> float | None:
 
 
 def _captions(scene: Scene, plans: list[FoundForcePlan]) -> None:
+    """Each plan's caption: the nearest above it (a caption below counts three times as
+    far) within reach, else the nearest above it in its column (a sheet in rows, its
+    captions along the top of each row); captions and plans one to one, nearest pairs
+    first. A plan's position is its caption's, else the one a caption on the same line
+    names (the row's «Схема, пол. 4» above the row's force plans)."""
     scales = stated_scales(scene.drawing.texts)
-    for p in plans:
+    caps = [(t, caption_kind(t.text)) for t in scene.drawing.texts]
+    caps = [(t, k) for t, k in caps if k in ("force", "scheme", "lever") and len(t.text) >= 6]
+    pairs = []
+    for i, p in enumerate(plans):
         x0, y0, x1, y1 = p.bbox
         reach = 0.5 * math.hypot(x1 - x0, y1 - y0) + 40.0
-        best = None
-        for t in scene.drawing.texts:
-            kind = caption_kind(t.text)
-            if kind not in ("force", "scheme", "lever") or len(t.text) < 6:
-                continue
+        for j, (t, _k) in enumerate(caps):
             dx = max(x0 - t.x, 0.0, t.x - x1)
             dy = max(y0 - t.y, 0.0, t.y - y1)
             d = math.hypot(dx, dy) * (3.0 if t.y < y0 else 1.0)
-            if d <= reach and (best is None or d < best[0]):
-                best = (d, t, kind)
-        if best:
-            p.caption = best[1]
-            p.kind = "force" if best[2] == "force" else best[2]
-            p.position = caption_position(best[1].text)
+            if d <= reach:
+                pairs.append((d, i, j))
+            elif t.y > y1 and dx <= 40.0 and t.y - y1 <= 250.0:
+                pairs.append((1000.0 + (t.y - y1) + dx, i, j))  # the column's caption
+    done_p: set[int] = set()
+    done_c: set[int] = set()
+    for _d, i, j in sorted(pairs):
+        if i in done_p or j in done_c:
+            continue
+        done_p.add(i)
+        done_c.add(j)
+        t, kind = caps[j]
+        p = plans[i]
+        p.caption = t
+        p.kind = kind
+        p.position = caption_position(t.text)
+        if p.position is None:
+            row = [c for c, _k in caps if abs(c.y - t.y) <= 0.5 * max(t.height, 1.0) and
+                   caption_position(c.text) is not None]
+            if row:
+                p.position = caption_position(min(row, key=lambda c: abs(c.x - t.x)).text)
+    for p in plans:
         own = [s for s in scales if s.symbol == "Kp" and (s.text is p.caption or _near(
             s.text, p.bbox, 12.0))]
         if own:

@@ -17,7 +17,7 @@ import numpy as np
 from ..engine import Tolerances
 from ..findings import Finding
 from ..words import num
-from .forces import DrawnArm, FoundForcePlan
+from .forces import DrawnArm, DrawnForce, FoundForcePlan, _closure
 from .judged import Judged
 
 
@@ -94,7 +94,19 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
     j.pos = pos
     j.scales = {"Kp": float(fp.kp)}
     k = labels.index(pos)
+    _choose_lines(fp, ref, vocab, k, tol)
     for name, f in fp.forces.items():
+        e = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
+        if e is not None and e < SHORT_MM and f.length >= SHORT_MM:
+            # a force too short to draw to scale, its name read off a neighbour's line
+            j.findings.append(_finding(
+                j.key, pos, f"{name}_mm", "label", None, e, "mm",
+                f"{name} is {num(e, 'en', 2)} mm at this Kp, too short to draw: its name "
+                f"stands at a line of {num(f.length, 'en', 3)} mm, not judged.",
+                f"{name} при этом Kp — {num(e, 'ru', 2)} мм, слишком мала для чертежа: её "
+                f"название стоит у линии {num(f.length, 'ru', 3)} мм, не проверяется.",
+                lang, verdict="ok"))
+            continue
         if vocab.lookup(f"{name}_mm") is not None:
             j.figures[f"{name}_mm"] = f.length
         line = ref.force_line(name, k)
@@ -131,6 +143,48 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
             f"многоугольник сил не замкнут: его концы в {num(fp.closure_mm, 'ru', 3)} мм "
             "друг от друга (сумма сил группы в равновесии равна нулю).", lang))
     return j
+
+
+SHORT_MM = 2.0
+"""A force shorter than this on its plan (mm) cannot be drawn to scale (the sheets say so
+and draw it as a dot or a stub): a name of one at a longer line is not judged."""
+
+
+def _mismatch(f: DrawnForce, length: float | None, vec) -> float:
+    """How far a drawn force is from graphplan's (mm): the difference of the lengths plus
+    the length times the angle between them (radians; the line's only without a sense)."""
+    if length is None:
+        return math.inf
+    out = abs(f.length - length)
+    if vec is not None and float(np.hypot(*vec)) > 0 and f.length > 0:
+        out += length * abs(math.radians(_angle_error(f, vec)))
+    return out
+
+
+def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> None:
+    """A name written nearer a neighbour's line than its own (a crowded polygon): when
+    the line nearest the name is not the force graphplan draws and another line the
+    name is nearly as near is, within the segment tolerance, that line is the force."""
+    changed = False
+    for name, f in list(fp.forces.items()):
+        if not f.options:
+            continue
+        length = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
+        line = ref.force_line(name, k)
+        vec = None if line is None else line[1]
+        if length is None:
+            continue
+        band = max(tol.segment * length, tol.reading_mm)
+        now = _mismatch(f, length, vec)
+        if now <= band:
+            continue
+        best = min(f.options, key=lambda o: _mismatch(o, length, vec))
+        if _mismatch(best, length, vec) <= band:
+            fp.forces[name] = DrawnForce(name, best.start, best.end, best.sense, best.segments,
+                                         (f, *[o for o in f.options if o is not best]))
+            changed = True
+    if changed:
+        fp.closure_mm = _closure(fp.forces)
 
 
 def judge_arm(a: DrawnArm, ref, sheet: dict[str, float], lang: str):
