@@ -10,6 +10,7 @@ that is probably not the one meant.
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from pathlib import Path
@@ -17,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from graphplan.forces import point_velocity
 from graphplan.kinematics import analyse_cycle, link_coordinate, solve_positions
 from graphplan.model import load, loads
 from graphplan.project import analyze
@@ -175,3 +177,83 @@ def test_a_translating_driver_is_one_line_with_the_reason(tmp_path, capsys, edit
     assert err.startswith(f"graphplan: error: {path}: {key}: {words}"), err
     if "translating" in words or "slide" in words:
         assert "has no ω1 to reduce Mур, Mпр and Jпр to" in err
+
+
+# --- every unseen variant: the JSON, the A1 sheets, the power balance -----------------------
+
+ALL = sorted(p.stem for p in VARIANTS.glob("*.toml"))
+
+
+def _no_nan(constant):
+    raise AssertionError(f"{constant} in the JSON")
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_analyze_json_and_sheets_of_every_unseen_variant(name, tmp_path, capsys):
+    from graphplan.cli import main
+
+    path = VARIANTS / f"{name}.toml"
+    out = tmp_path / "a.json"
+    assert main(["analyze", str(path), "--json", "-o", str(out)]) == 0
+    report = json.loads(out.read_text(encoding="utf-8"), parse_constant=_no_nan)
+    assert report["warnings"] == []
+    try:
+        from test_json_contract import validate
+    except ImportError:  # jsonschema is an extra
+        validate = None
+    if validate is not None:
+        validate(report, "analysis")
+    sheets = tmp_path / "sheets"
+    assert main(["sheets", str(path), "-o", str(sheets), "--page", "A1"]) == 0
+    assert {"sheet1.svg", "sheet2.svg", "sheet3.svg", "analysis.json"} <= {
+        f.name for f in sheets.iterdir()}
+    for f in sheets.iterdir():
+        text = f.read_text(encoding="utf-8")
+        assert not re.search(r"\b(nan|inf|infinity)\b", text, re.IGNORECASE), f.name
+    json.loads((sheets / "analysis.json").read_text(encoding="utf-8"), parse_constant=_no_nan)
+    capsys.readouterr()
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_power_balance_of_every_unseen_variant(name):
+    """Σ F·v + Σ M·ω + Mур·ω1 = 0 at every position, with the variant's neglect rule and
+    with every load kept, to 1e-9 of the largest power term."""
+    from graphplan.forces import compute_loads, load_power, solve_forces
+
+    a = analyze(load(VARIANTS / f"{name}.toml"))
+    mech, kin = a.mech, a.kin
+    for neglect in (None, 0.0):
+        ld = compute_loads(mech, kin, a.cycle, neglect_below=neglect)
+        M_bal = solve_forces(mech, kin, ld).M_bal
+        terms = [np.einsum("ij,ij->i", f.vector, point_velocity(mech, kin, f.link, f.at))
+                 for f in ld.all_forces()]
+        terms += [m.moment * kin.vel.omega[m.link] for m in ld.all_moments()]
+        scale = float(np.max(np.abs(terms)))
+        resid = load_power(mech, kin, ld) + M_bal * mech.crank.omega
+        assert scale > 0 and np.all(np.isfinite(M_bal))
+        assert np.max(np.abs(resid)) <= 1e-9 * scale, name
+
+
+def test_the_pump_by_crank_angle_is_the_pump_by_strokes():
+    """The same water force given over the crank angle in kN and as gauge pressures over
+    the strokes: Mур equal at every position off the dead centres (where the force jumps)."""
+    from graphplan.forces import compute_loads, solve_forces
+
+    out = []
+    for path in (ROOT / "examples" / "pump.toml", VARIANTS / "pump_crank_angle.toml"):
+        a = analyze(load(path))
+        ld = compute_loads(a.mech, a.kin, a.cycle, neglect_below=0.0)
+        out.append((a.kin.labels, solve_forces(a.mech, a.kin, ld).M_bal))
+    (labels, m0), (labels1, m1) = out
+    assert labels == labels1
+    off = [k for k, lab in enumerate(labels) if lab not in ("0", "6")]
+    assert np.allclose(m0[off], m1[off], rtol=1e-9, atol=1e-9 * np.max(np.abs(m0)))
+
+
+def test_loads_in_kN_are_newtons_inside():
+    shaper = load(VARIANTS / "shaper_part.toml")
+    cut, friction = shaper.resistances
+    assert cut.maximum == pytest.approx(4000.0) and friction.strokes[0][0][1] == 150.0
+    fourbar = load(VARIANTS / "fourbar_cw.toml")
+    assert fourbar.resistances[0].maximum == pytest.approx(250.0)
+    assert fourbar.crank.omega == pytest.approx(-12.0)  # 12 rad/s, clockwise

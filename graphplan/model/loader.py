@@ -46,7 +46,12 @@ PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "atm": 101325.0
 """Units of the pressures of an indicator diagram, in Pa (kgf/cm2: кгс/см², the old at)."""
 LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense", "over",
              "stroke", "strokes", "travel", "angle", "travel_link", "working", "phase",
-             "bore", "p_max", "p_ambient", "pressure_unit"}
+             "bore", "p_max", "p_ambient", "pressure_unit", "unit"}
+FORCE_UNITS = {"N": 1.0, "kN": 1e3, "MN": 1e6, "Н": 1.0, "кН": 1e3, "МН": 1e6}
+"""Units of a force load's ``max`` or ``value``, in N (Russian spellings accepted)."""
+MOMENT_UNITS = {"N·m": 1.0, "N*m": 1.0, "Nm": 1.0, "kN·m": 1e3, "kN*m": 1e3, "kNm": 1e3,
+                "Н·м": 1.0, "кН·м": 1e3}
+"""Units of a couple's ``max`` or ``value``, in N·m."""
 STROKE_SETS = ("working", "idle", "both")
 NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_']*")  # used with fullmatch: no trailing newline
 LINK_RE = re.compile(r"[0-9]{1,3}")
@@ -893,6 +898,9 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
         # the scale of the values
         offset = 0.0
         if gas:
+            if "unit" in lt:
+                raise r.fail(f"{path}.unit", "a gas force is p·πD²/4: its unit is "
+                             "pressure_unit (MPa, bar …), with the bore in the length unit")
             for k in ("max", "value"):
                 if k in lt:
                     raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
@@ -912,18 +920,22 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
             for k in ("p_max", "p_ambient", "pressure_unit"):
                 if k in lt:
                     raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
+            units = FORCE_UNITS if kind == "force" else MOMENT_UNITS
+            factor = units[r.string(lt.get("unit", "N" if kind == "force" else "N·m"),
+                                    f"{path}.unit", tuple(units))]
+            top = MAX_LOAD / factor
             if "value" in lt:
                 for k in ("max", "diagram", "strokes", "travel"):
                     if k in lt:
                         raise r.fail(f"{path}.{k}", "a constant load is given by 'value' alone")
-                lo = -MAX_LOAD if sense == "diagram" else 0.0
+                lo = -top if sense == "diagram" else 0.0
                 maximum = 1.0
-                const = r.number(lt["value"], f"{path}.value", lo=lo, hi=MAX_LOAD)
+                const = r.number(lt["value"], f"{path}.value", lo=lo, hi=top) * factor
             elif "max" not in lt:
                 raise r.fail(f"{path}.max", "missing required key (the scale of the diagram, "
                              "N or N·m; or give 'value' for a constant load)")
             else:
-                maximum = r.number(lt["max"], f"{path}.max", nonneg=True, hi=MAX_LOAD)
+                maximum = r.number(lt["max"], f"{path}.max", nonneg=True, hi=top) * factor
         signed = sense == "diagram"
         strokes: tuple = ()
         if "value" in lt:  # constant: the whole cycle, or the strokes named
