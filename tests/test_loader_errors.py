@@ -560,7 +560,7 @@ CASES = [
     ("load-unknown-key", P, [set_("loads[0].maximum", 1)],
      "loads[0].maximum", "unknown key (expected one of: angle, bore, diagram, kind, link, max, "
      "name, over, p_ambient, p_max, phase, point, pressure_unit, sense, stroke, strokes, travel, "
-     "travel_link, value, working)"),
+     "travel_link, unit, value, working)"),
     ("load-missing-max", P, [drop("loads[0].max")], "loads[0].max", "missing required key"),
     ("load-missing-diagram", P, [drop("loads[0].diagram")],
      "loads[0].diagram", "missing required key: 'diagram'"),
