@@ -13,8 +13,14 @@ combination (each carried on into the later lines that use it), checks them and 
   charged as a fault lowers it (≥ 0,95);
 * cause named right: of the faults found, the share with the planted kind (≥ 0,9).
 
+A student draws on from their own wrong figures (the acceleration plan from a wrong
+normal or Coriolis component, the force plans of every group from wrong loads and
+reactions): such faults are planted in every variant (``normal``, ``load``, and any
+fault that reaches a load), and the plans' readings that follow from them must be
+consequences, never faults of their own.
+
 The scores are printed (``pytest -s``, and ``-rA`` shows them in the summary) and kept in
-docs/check-format.md. A class of 200 takes about a minute on one core.
+docs/check-format.md. A class of 240 takes about a minute on one core.
 """
 
 from pathlib import Path
@@ -39,12 +45,15 @@ def _report(s) -> str:
 
 
 @pytest.mark.parametrize("seed", [0, 1])
-def test_a_class_of_200_generated_students(seed):
-    s = score(VARIANTS, 200, seed=seed)
+def test_a_class_of_240_generated_students(seed):
+    s = score(VARIANTS, 240, seed=seed)
     print("\n" + _report(s))
     assert s.works >= 200 and s.variants >= 8
+    families = {"engine", "compressor", "pump", "slotter", "crusher"}
+    assert families <= {Path(v).stem for v in VARIANTS}
     assert s.false_alarms == 0, _report(s)
     assert s.recall >= 0.95, _report(s)
     assert s.root_attribution >= 0.95, _report(s)
     assert s.cause_accuracy >= 0.9, _report(s)
     assert s.clean_works >= 25 and s.planted >= 150
+    assert s.redrawn >= 40  # faults the student drew plans on from, followed

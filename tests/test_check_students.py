@@ -68,9 +68,9 @@ lines = ["vB = pb∙Kv = (29,9∙0,02 = 0,598 м/с"]
 def test_a_line_nothing_of_which_is_compared_says_so():
     r = _check(FOURBAR_HEAD + '''[[positions]]
 label = "2"
-lines = ["K = 1,4", "vB = pb∙Kv = 29,9∙0,02 = 0,598 м/с"]
+lines = ["ψ = 1,4", "vB = pb∙Kv = 29,9∙0,02 = 0,598 м/с"]
 ''', lang="en")
-    (ln,) = [ln for ln in r.lines if ln.text == "K = 1,4"]
+    (ln,) = [ln for ln in r.lines if ln.text == "ψ = 1,4"]
     assert "not known" in ln.compared
     assert all(ln.compared == "" for ln in r.lines if ln.text.startswith("vB"))
     # the scales are the student's choice: shown as not compared, never as right
@@ -81,7 +81,7 @@ lines = ["K = 1,4", "vB = pb∙Kv = 29,9∙0,02 = 0,598 м/с"]
     from graphplan.checking.report_text import text_report
 
     text = text_report(r)
-    assert "not compared" in text and "K = 1,4" in text
+    assert "not compared" in text and "ψ = 1,4" in text
 
 
 def test_the_summary_never_contradicts_the_findings():

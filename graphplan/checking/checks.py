@@ -142,6 +142,52 @@ class Checker:
         return Fig(scope, q.key, occs, q, s, e, model, sc, note, ok, tol, rel,
                    self.verdict(s, e, ok, tol))
 
+    def _discrepancies(self, figs: dict[tuple, Fig]) -> None:
+        """δ, the discrepancy of the two balancing moments of a position (Zhukovsky's
+        lever and the force plans), is the student's own: it is compared with the value
+        their own Мур and Мур.ж give — by the line's formula when it names the two
+        (``δ = (Мур.ж − Мур)/Мур.ж∙100``) when it names the two, and by
+        ``|Мур.ж − Мур|/|Мур.ж|·100`` (or over Мур, or the larger): judged within 0,1
+        percentage point or 5 % of itself (ok), 0,3 point or 10 % (inaccurate). A formula
+        of the line that gives none of these is the fault (``formula``)."""
+        from .expressions import value as evaluate_node
+
+        for (scope, key), f in figs.items():
+            if key != ("mbal_discrepancy",):
+                continue
+            o = f.occs[0]
+            m = figs.get((scope, ("M_bal",)))
+            mz = figs.get((scope, ("M_bal", "lever")))
+            if o.position is None or m is None or mz is None:
+                continue
+            a, b = abs(mz.s), abs(m.s)
+            d = abs(mz.s - m.s)
+            cands = [100.0 * d / x for x in (a, b, max(a, b)) if x > 0]
+            lw = o.work
+            own = None
+            if lw is not None and lw.template is not None and o.role == "result":
+                env = {}
+                for name in {x.name for x in lw.occs if x.role == "operand"}:
+                    x = next(y for y in lw.occs if y.name == name and y.role == "operand")
+                    if x.q.key == ("M_bal",):
+                        env[name] = m.s
+                    elif x.q.key == ("M_bal", "lever"):
+                        env[name] = mz.s
+                try:
+                    own = abs(evaluate_node(lw.template, env)) if len(env) == 2 else None
+                except Exception:  # a formula that cannot be evaluated
+                    own = None
+                if own is not None and own < 1.0 and any(
+                        abs(own * 100 - c) <= 0.1 * c + 1e-9 for c in cands):
+                    own *= 100.0  # the formula as a fraction, the result in %
+            # the discrepancy by any of the usual denominators; a formula of the line's own
+            # that gives none of them is a fault of the formula (see Diagnoser._delta)
+            e = min(cands, key=lambda c: abs(c - f.s))
+            f.e, f.model, f.scale_note = e, "rule", ""
+            f.ok, f.tol, f.rel = max(0.05 * e, 0.1), max(0.1 * e, 0.3), 0.05
+            f.verdict = self.verdict(f.s, e, f.ok, f.tol)
+            f.extra["delta"] = (m, mz, cands, own)
+
     def _diagnose_at_scales(self, f: Fig, dg: Diagnoser) -> tuple[Fig, Diag]:
         """A length on paper wrong at every scale the student used there: the scale whose
         diagnosis is the most specific (the stated one on a tie)."""
@@ -177,11 +223,13 @@ class Checker:
                 continue
             figs[(scope, key)] = self.evaluate(scope, occs)
         dg = Diagnoser(self, figs)
+        self._discrepancies(figs)
         changed = True
         while changed:  # down the student's chain: a reading, its value, the load from it
             changed = False
             for f in figs.values():
-                if f.verdict == "wrong" and dg.own_chain(f):
+                if f.verdict == "wrong" and (dg.own_chain(f) or dg.own_forces_chain(f) or
+                                             dg.own_plan_chain(f)):
                     f.verdict = "inaccurate"
                     f.own_chain = changed = True
         consistency = self._consistency(figs, dg)  # first: it adds notes to the figures
@@ -286,6 +334,13 @@ class Checker:
                     continue
                 if o.q.on_paper and _close(a, b, 0, self.tol.reading_mm):
                     continue
+                if o.q.on_paper and o.q.scale:  # one segment on two plans at two scales
+                    ka = self.w.stated_scales(o.position, o.line).get(o.q.scale)
+                    kb = self.w.stated_scales(s0.position, s0.line).get(o.q.scale)
+                    if ka and kb and not _close(ka, kb, 1e-6) and _close(
+                            a * ka, b * kb, max(self.tol.arithmetic, 0.002),
+                            self.tol.reading_mm * max(ka, kb)):
+                        continue
                 key_v = next((v for v in groups if _close(v, o.value, 1e-6)), o.value)
                 groups[key_v].append(o)
             for occs in groups.values():
@@ -319,9 +374,12 @@ class Checker:
         """A force written as its segment on the force plan where the force is meant
         (``Мур = R21∙h21∙Кl`` with R21 = 60,02 mm of the plan at Kp = 2 N/mm)."""
         plan = SCALE_OF_DIMENSION.get(f.q.dimension)
-        k = self.w.stated_scales(o.position, o.line).get(plan or "")
-        if not k or f.q.on_paper or abs(k - 1) < 0.05 or not _close(
-                abs(o.raw) * k, abs(f.s), 0.01):
+        # the force's own plan: the Kp stated where the force is read off it, or here
+        s0 = f.occs[0]
+        ks = [self.w.stated_scales(x.position, x.line).get(plan or "") for x in (s0, o)]
+        k = next((x for x in ks if x and abs(x - 1) >= 0.05 and _close(
+            abs(o.raw) * x, abs(f.s), 0.01)), None)
+        if not k or f.q.on_paper:
             return None
         sc = scale_text(plan, k, "en")  # type: ignore[arg-type]
         en = (f"{o.name} = {num(o.raw)} is its segment on the force plan (mm), not the "
@@ -478,7 +536,8 @@ class Checker:
             d = f.diag
             why = (d.ru if self.lang == "ru" else d.en) if d else ""
             if f.verdict == "not compared":
-                why = _NOT_COMPARED["figure"](self.lang)
+                why = (_NOT_COMPARED["delta"] if f.key == ("mbal_discrepancy",) else
+                       _NOT_COMPARED["figure"])(self.lang)
             else:
                 self._compared.update(id(x.work) for x in f.occs)
             yield FigureCheck(o.position, o.name, f.q.unit, f.s, f.e, f.verdict,
@@ -535,6 +594,10 @@ _NOT_COMPARED = {
     "nothing": _Say("the line names no figure (give `quantity` or `symbols`)",
                     "строка не называет величину (укажите `quantity` или `symbols`)"),
     "unread": _Say("the line cannot be read", "строку не удалось прочитать"),
+    "delta": _Say("δ compares the position's Мур of the force plans with Мур.ж of "
+                  "Zhukovsky's lever: write both at this position to compare it",
+                  "δ сравнивает Мур планов сил и Мур.ж рычага Жуковского: запишите оба "
+                  "в этом положении, чтобы его проверить"),
 }
 
 

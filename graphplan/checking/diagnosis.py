@@ -48,11 +48,13 @@ from .errors import ExpressionError
 from .expressions import decimals, show, value
 from .matching import flip_term, sum_terms
 from .quantities import SCALE_OF_DIMENSION, Quantity
+from .units import fold
 from .words import num, pct, qty, scale_text
 
 UNIT_RATIOS = ((1e3, "1000 (N and kN, or mm and m)", "1000 (Н и кН, или мм и м)"),
                (1e6, "10⁶", "10⁶"), (9.81, "g (kg and N)", "g (кг и Н)"))
 SERIES_RATIOS = (2.0, 0.5, 2.5, 0.4, 4.0, 0.25, 5.0, 0.2, 10.0, 0.1)
+_LOAD_NAMES = {"inertia_force": "Pи", "inertia_moment": "Mи", "weight": "G"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,6 +94,7 @@ class Fig:
     diag: Diag | None = None
     extra_notes: list[str] = field(default_factory=list)
     own_chain: bool = False  # off only as far as the student's readings carry it
+    extra: dict = field(default_factory=dict)  # what a special check found (δ)
 
     @property
     def name(self) -> str:
@@ -161,10 +164,12 @@ class Diagnoser:
         """The first hypothesis of the module docstring that explains the figure."""
         from dataclasses import replace
 
-        for rank, h in enumerate((self._arithmetic, self._follows, self._unit, self._sign,
+        for rank, h in enumerate((self._arithmetic, self._delta, self._cycle, self._follows,
+                                  self._unit,
+                                  self._sign, self._lever,
                                   self._formula,
-                                  self._coriolis, self._coriolis_plan, self._segment,
-                                  self._polygon,
+                                  self._coriolis, self._coriolis_plan, self._normal_plan,
+                                  self._segment, self._own_forces, self._polygon,
                                   self._lever_arm, self._geometry, self._scale,
                                   self._models, self._own_reading, self._other_position,
                                   self._neighbours, self._label, self._series)):
@@ -213,6 +218,72 @@ class Diagnoser:
             ru += f" (по расчёту {self._u(f, f.e, 'ru')})."
         return Diag("arithmetic", en, ru)
 
+    def _delta(self, f: Fig) -> Diag | None:
+        """δ, the discrepancy of Мур and Мур.ж, that the student's own two moments do not
+        give: written as a fraction (``unit``), by a formula of its own (``formula``), or
+        not from the moments they wrote (``consistency``)."""
+        got = f.extra.get("delta")
+        if got is None or f.e is None:
+            return None
+        m, mz, cands, own = got
+        o = f.occs[0]
+        mine = (f"Мур = {self._u(m, m.s)} ({m.occs[0].where_in('en')}) and Мур.ж = "
+                f"{self._u(mz, mz.s)} ({mz.occs[0].where_in('en')})")
+        mine_ru = (f"Мур = {self._u(m, m.s, 'ru')} ({m.occs[0].where_in('ru')}) и Мур.ж = "
+                   f"{self._u(mz, mz.s, 'ru')} ({mz.occs[0].where_in('ru')})")
+        std = cands[0]
+        if any(abs(f.s * 100 - c) <= max(0.05 * c, 0.1) for c in cands):
+            en = (f"δ = {num(f.s)} is a fraction: in per cent the student's own {mine} give "
+                  f"{num(std)} %.")
+            ru = (f"δ = {num(f.s, 'ru')} — доля, а не проценты: собственные {mine_ru} дают "
+                  f"{num(std, 'ru')} %.")
+            return Diag("unit", en, ru)
+        if own is not None and all(abs(own - c) > max(0.05 * c, 0.1) for c in cands) and \
+                abs(f.s - own) <= f.tol:
+            en = (f"the formula of δ does not give the discrepancy: with the student's own "
+                  f"{mine}, |Мур.ж − Мур|/|Мур.ж|·100 = {num(std)} %.")
+            ru = (f"формула δ неверна: для собственных {mine_ru} расхождение "
+                  f"|Мур.ж − Мур|/|Мур.ж|·100 = {num(std, 'ru')} %.")
+            return Diag("formula", en, ru)
+        en = (f"δ = {num(f.s)} % does not follow from the student's own {mine}: "
+              f"|Мур.ж − Мур|/|Мур.ж|·100 = {num(f.e)} %.")
+        ru = (f"δ = {num(f.s, 'ru')} % не следует из собственных {mine_ru}: "
+              f"|Мур.ж − Мур|/|Мур.ж|·100 = {num(f.e, 'ru')} %.")
+        _ = o
+        return Diag("consistency", en, ru)
+
+    def _lever(self, f: Fig) -> Diag | None:
+        """Мур.ж of Zhukovsky's lever that disagrees with the student's own Мур of the force
+        plans, which is right: the lever is off (``consistency``, δ said)."""
+        if f.key != ("M_bal", "lever") or f.e is None:
+            return None
+        m = self.figs.get((f.scope, ("M_bal",)))
+        if m is None or m.verdict == "wrong" or not m.s:
+            return None
+        delta = abs(f.s - m.s) / max(abs(f.s), 1e-12) * 100
+        en = (f"Мур.ж = {self._u(f, f.s)} of Zhukovsky's lever differs from the student's own "
+              f"Мур = {self._u(m, m.s)} of the force plans ({m.occs[0].where_in('en')}) by "
+              f"δ = {num(delta, digits=3)} %; Мур is right (graphplan: {self._u(f, f.e)}): the "
+              "lever is off.")
+        ru = (f"Мур.ж = {self._u(f, f.s, 'ru')} по рычагу Жуковского расходится с собственным "
+              f"Мур = {self._u(m, m.s, 'ru')} по планам сил ({m.occs[0].where_in('ru')}) на "
+              f"δ = {num(delta, 'ru', 3)} %; Мур верен (по расчёту {self._u(f, f.e, 'ru')}): "
+              "ошибка в рычаге.")
+        return Diag("consistency", en, ru)
+
+    def _cycle(self, f: Fig) -> Diag | None:
+        """K written the other way up (φ_idle/φ_working, ``(180° − θ)/(180° + θ)``)."""
+        if f.key != ("time_ratio",) or not f.e or not f.s or abs(f.e - 1) < 1e-6 or \
+                not self.near(f, 1.0 / f.s, f.e):
+            return None
+        en = (f"K = {num(f.s)} is the inverse ratio: K = φ_working/φ_idle = (180° + θ)/"
+              f"(180° − θ) = {num(f.e)}, the slower (working) stroke's crank angle over the "
+              "faster one's.")
+        ru = (f"K = {num(f.s, 'ru')} — обратное отношение: K = φр.х/φх.х = (180° + θ)/"
+              f"(180° − θ) = {num(f.e, 'ru')} (угол поворота кривошипа за рабочий ход к углу "
+              "за холостой).")
+        return Diag("formula", en, ru)
+
     def _unit_slip(self, f: Fig, computed: float, written: float, text: str) -> Diag | None:
         """The numbers give ``computed``, the result says ``written`` = computed/1000 (the
         kN written with the unit N) or ×1000: a unit slip, not arithmetic."""
@@ -254,7 +325,9 @@ class Diagnoser:
             if r == 9.81 and f.q.dimension not in ("N", "kg", "N·m"):
                 continue
             for ratio in (r, 1.0 / r):
-                if self.near_rel(f, f.s, f.e * ratio):
+                # a small force read at ±0,5 mm of its plan keeps its reading allowance
+                if self.near_rel(f, f.s, f.e * ratio) or (
+                        r != 9.81 and not f.q.on_paper and abs(f.s / ratio - f.e) <= f.tol):
                     times = f"{num(ratio)} times" if ratio > 1 else f"1/{num(1 / ratio)} of"
                     en = (f"{o.name} = {o.text} is {times} graphplan's "
                           f"{self._u(f, f.e)}: a unit mix-up (a factor of {en_r}).")
@@ -349,8 +422,13 @@ class Diagnoser:
         if o.role != "result" or lw is None or lw.arithmetic != "ok" or \
                 lw.template is None or lw.matched is None or f.e is None:
             return False
+        if lw.matched.signs and not lw.line.symbols:  # the numbers are not its formula's
+            return False
         env, offs = self.model_env(lw, band=1)
         if env is None:
+            return False
+        scales = {x.name for x in lw.occs if x.role == "operand" and x.q.kind == "scale"}
+        if scales & set(offs):  # computed with another scale (Kv for Ka): not drafting
             return False
         if offs:  # off beyond their band, but each may be right by its own chain
             for name, _node in lw.matched.bindings:
@@ -468,24 +546,41 @@ class Diagnoser:
             return None
         k = self.ref.index(o.position)
         names = self.ref.coriolis_names(k)
-        if len(names) != 1:
+        if not names:
             return None
-        mine = [g for g in self.figs.values() if self.is_coriolis(g) and
-                g.occs[0].position == o.position and g.e]
-        if mine:
-            g = min(mine, key=lambda x: x.q.kind != "segment")
-            if g.verdict != "wrong":
-                return None
-            factor = g.s / g.e
-        else:
-            g, factor = None, 0.0
         sc = f.scales
         if not (sc.get("Kv") and sc.get("Ka")):
             return None
-        v = self.ref.reading_mm_coriolis(q.name, k, sc.get("Kl", 1e-3), sc["Kv"], sc["Ka"],
-                                         round(factor, 6))
-        if v is None or not self.near(f, v) or self.near(f, v, f.e):
-            return None
+        mine = [g for g in self.figs.values() if self.is_coriolis(g) and
+                g.occs[0].position == o.position and g.e]
+        if len(names) > 1:  # each component with the student's own factor
+            pairs = self.ref.coriolis_pairs(k)
+            each: dict[str, tuple[float, Fig]] = {}
+            for g in sorted(mine, key=lambda x: x.q.kind == "segment"):
+                cname = next((n for n in names if n in g.key), None)
+                if cname in pairs and g.verdict == "wrong":
+                    each[cname] = (g.s / g.e, g)
+            if not each:
+                return None
+            spec = tuple(sorted((n, round(x, 6)) for n, (x, _g) in each.items()))
+            v = self.ref.reading_mm_coriolis(q.name, k, sc.get("Kl", 1e-3), sc["Kv"],
+                                             sc["Ka"], 1.0, (), spec)
+            if not self.explains(f, v):
+                return None
+            g = next(iter(each.values()))[1]
+        else:
+            if mine:
+                g = min(mine, key=lambda x: x.q.kind != "segment")
+                if g.verdict != "wrong":
+                    return None
+                factor = g.s / g.e
+            else:
+                g, factor = None, 0.0
+            v = self.ref.reading_mm_coriolis(q.name, k, sc.get("Kl", 1e-3), sc["Kv"],
+                                             sc["Ka"], round(factor, 6))
+            if not (self.explains(f, v) if g is not None else (
+                    v is not None and self.near(f, v) and not self.near(f, v, f.e))):
+                return None
         if g is not None:
             en = (f"follows from {g.name}: the plan drawn with that Coriolis acceleration "
                   f"gives {num(v)} mm (graphplan: {num(f.e)} mm).")
@@ -504,6 +599,216 @@ class Diagnoser:
         ru = (f"план построен без кориолисова ускорения aᵏ = 2·ω·v_r: без него {q.name} = "
               f"{num(v, 'ru')} мм, как записано; с ним {num(f.e, 'ru')} мм.")
         return Diag("coriolis", en, ru)
+
+    def explains(self, f: Fig, v: float | None) -> bool:
+        """The student's own chain's value ``v`` explains the stated figure: within its
+        tolerance, nearer to it than graphplan's value, and moved from graphplan's by
+        more than half the *ok* band (a small effect that drafting error carries over
+        the band is still the effect)."""
+        if v is None or f.e is None:
+            return False
+        if not self.near(f, v):
+            # the band around the chain's own value (a small segment keeps its reading
+            # allowance), widened by half: the chain carries the drafting of its inputs
+            tol = max(self.c.band(f.q, abs(v), f.scales, f.occs[0].text)[1], f.tol)
+            if abs(f.s - v) > 1.5 * tol:
+                return False
+        if not self.near(f, v, f.e):
+            return True
+        return abs(v - f.e) >= 0.5 * f.ok and abs(f.s - v) < abs(f.s - f.e)
+
+    def normal_plan_value(self, f: Fig) -> tuple[float, tuple[str, ...]] | None:
+        """A segment of the acceleration plan rebuilt with the student's own wrong normal
+        components (and Coriolis ones, if wrong too): (its length, the wrong names)."""
+        q, o = f.q, f.occs[0]
+        if q.kind != "segment" or q.scale != "Ka" or o.position not in self.ref.labels or \
+                f.e is None or q.key[1] == "a_n" or self.is_coriolis(f):
+            return None
+        k = self.ref.index(o.position)
+        normals: dict[str, tuple[float, Fig]] = {}
+        slipped: set[str] = set()
+        for g in self.figs.values():
+            key = g.key[1:] if g.key[0] == "segment" else g.key
+            if key[0] != "a_n" or g.occs[0].position != o.position or not g.e or \
+                    g.verdict in ("ok", "not compared"):
+                continue
+            link = self.ref.normal_link(key[1], key[2])
+            if link is None:
+                continue
+            # a normal component off its value: wrong, or inaccurate with a slip in it
+            w = g.occs[0].work
+            if g.verdict == "wrong" or (w is not None and w.arithmetic in ("wrong", "sign")):
+                slipped.add(link)
+            # the segment is what is drawn: it wins over the value it was laid off from
+            if link not in normals or g.q.kind == "segment":
+                normals[link] = (g.s / g.e, g)
+        normals = {ln: x for ln, x in normals.items() if ln in slipped}
+        if not normals:
+            return None
+        each: dict[str, float] = {}
+        names = self.ref.coriolis_names(k)
+        for g in sorted(self.figs.values(), key=lambda x: x.q.kind == "segment"):
+            cname = next((n for n in names if n in g.key), None)
+            if cname and self.is_coriolis(g) and g.occs[0].position == o.position and \
+                    g.e and g.verdict == "wrong":
+                each[cname] = round(g.s / g.e, 6)
+        sc = f.scales
+        if not (sc.get("Kv") and sc.get("Ka")):
+            return None
+        spec = tuple(sorted((ln, round(x, 6)) for ln, (x, _g) in normals.items()))
+        v = self.ref.reading_mm_coriolis(q.name, k, sc.get("Kl", 1e-3), sc["Kv"], sc["Ka"],
+                                         1.0, spec, tuple(sorted(each.items())))
+        if v is None:
+            return None
+        return v, tuple(dict.fromkeys(g.name for _x, g in normals.values()))
+
+    def within_chain(self, f: Fig, v: float | None) -> bool:
+        """The stated figure is within its reading band of its own chain's value ``v``
+        and nearer to it than to graphplan's: a reading off the student's own plan."""
+        if v is None or f.e is None or abs(f.s - v) >= abs(f.s - f.e):
+            return False
+        return abs(f.s - v) <= self.c.band(f.q, abs(v), f.scales, f.occs[0].text)[1]
+
+    def own_plan_chain(self, f: Fig) -> bool:
+        """A segment of the student's own acceleration plan (drawn from a wrong normal
+        component) that the chain moves too little to call it a consequence: at worst
+        inaccurate."""
+        got = self.normal_plan_value(f)
+        return got is not None and not self.explains(f, got[0]) and \
+            self.within_chain(f, got[0])
+
+    def _normal_plan(self, f: Fig) -> Diag | None:
+        """A segment of the acceleration plan drawn from the student's own wrong normal
+        component (``n_BA = anBA/Ka`` from a wrong ``anBA``): the plan rebuilt with it
+        (and with the student's Coriolis acceleration, if that is wrong too) gives the
+        segment — it follows from the normal component (``propagated``)."""
+        got = self.normal_plan_value(f)
+        if got is None or not self.explains(f, got[0]):
+            return None
+        v, names = got
+        en = (f"follows from {', '.join(names)}: the plan drawn with that normal component "
+              f"gives {num(v)} mm (graphplan: {num(f.e)} mm).")
+        ru = (f"следует из {', '.join(names)}: план, построенный с этой нормальной "
+              f"составляющей, даёт {num(v, 'ru')} мм (по расчёту {num(f.e, 'ru')} мм).")
+        return Diag("propagated", en, ru, names)
+
+    # the student's own force analysis
+
+    def _outer_pair(self, i: str, j: str) -> tuple[str, str] | None:
+        """(by, on) of a reaction between two groups: by the group solved first (the
+        later one in the structure) on the group it passes to; ``None`` otherwise."""
+        mech = self.ref.mech
+        where = {ln: n for n, d in enumerate(mech.dyads) for ln in d.links}
+        if i not in where or j not in where or where[i] == where[j]:
+            return None
+        return (i, j) if where[i] > where[j] else (j, i)
+
+    def own_force_inputs(self, position: str, skip: tuple = ()):
+        """The student's own figures a force plan of ``position`` is drawn from: loads
+        (name → size), tangential reactions, reactions passed from one group to the
+        next, and which of them are wrong (name → the input's place)."""
+        sizes: dict[str, float] = {}
+        tang: dict[str, float] = {}
+        outer: dict[tuple[str, str], float] = {}
+        wrong: dict[str, tuple[str, object]] = {}
+        for g in self.figs.values():
+            if g.e is None or g.key == skip or g.scope not in (position, "global"):
+                continue
+            key = g.key
+            if g.q.kind == "load":
+                name = _LOAD_NAMES.get(key[0])
+                name = f"{name}{key[1]}" if name else (key[1] if key[0] == "resistance"
+                                                       else None)
+                if name is None:
+                    continue
+                slot: tuple[str, object] = ("size", fold(name))
+                sizes[fold(name)] = g.s
+            elif key[0] == "reaction_t" and g.scope == position:
+                slot = ("tang", f"Rτ{key[1]}{key[2]}")
+                tang[f"Rτ{key[1]}{key[2]}"] = g.s
+            elif key[0] == "reaction" and g.scope == position:
+                pair = self._outer_pair(key[1], key[2])
+                if pair is None:
+                    continue
+                slot = ("outer", pair)
+                outer[pair] = g.s
+            else:
+                continue
+            if g.verdict == "wrong":
+                wrong[g.name] = slot
+        return sizes, tang, outer, wrong
+
+    def own_force_value(self, f: Fig, k: int, own) -> float | None:
+        """The figure's value (in its unit, at its scales) in an own force analysis."""
+        key = f.key[1:] if f.key[0] == "segment" else f.key
+        v = self.ref.own_value(key, k, own)
+        if v is None:
+            return None
+        if f.q.on_paper:
+            s = f.scales.get(f.q.scale or "")
+            return abs(v) / s if s else None
+        return v if f.q.signed else abs(v)
+
+    def own_forces_chain(self, f: Fig) -> bool:
+        """A figure of the force plans (a reaction, its segment, an arm of a reaction,
+        h21, Mур) that the student's own force analysis gives, from their own loads and
+        reactions each within its tolerance: their drafting error carried (at worst
+        inaccurate), as :meth:`own_chain` for a line's formula."""
+        o = f.occs[0]
+        key = f.key[1:] if f.key[0] == "segment" else f.key
+        if o.position is None or o.position not in self.ref.labels or f.e is None:
+            return False
+        if not (key[0] in ("reaction", "reaction_n", "crank_arm", "M_bal") or (
+                key[0] == "arm" and fold(str(key[1]))[:1] == "R")):
+            return False
+        if o.work is not None and o.work.arithmetic in ("wrong", "sign", "unread"):
+            return False
+        k = self.ref.index(o.position)
+        sizes, tang, outer, wrong = self.own_force_inputs(
+            o.position, skip=("reaction", *key[1:]) if key[0] == "reaction" else ())
+        model = f.model if f.model in ("rule", "full") else "rule"
+        own = self.ref.own_forces(k, sizes, tang, model, outer)
+        v = None if own is None else self.own_force_value(f, k, own)
+        if wrong and self.explains(f, v):
+            return False  # a consequence of a wrong figure: "follows from" it
+        return self.within_chain(f, v)
+
+    def _own_forces(self, f: Fig) -> Diag | None:
+        """A reaction, its segment, an arm of a reaction, h21 or Mур of the force plans
+        drawn from the student's own loads, tangential reactions and the reactions one
+        group passes to the next (:meth:`Reference.own_forces`): right working from a
+        wrong figure (``propagated``), in a mechanism of any number of groups."""
+        o = f.occs[0]
+        key = f.key[1:] if f.key[0] == "segment" else f.key
+        if o.position is None or o.position not in self.ref.labels or f.e is None:
+            return None
+        if not (key[0] in ("reaction", "reaction_n", "crank_arm", "M_bal") or (
+                key[0] == "arm" and fold(str(key[1]))[:1] == "R")):
+            return None
+        k = self.ref.index(o.position)
+        sizes, tang, outer, wrong = self.own_force_inputs(
+            o.position, skip=("reaction", *key[1:]) if key[0] == "reaction" else ())
+        if not wrong:
+            return None
+        model = f.model if f.model in ("rule", "full") else "rule"
+        own = self.ref.own_forces(k, sizes, tang, model, outer)
+        v = None if own is None else self.own_force_value(f, k, own)
+        if v is None or not self.explains(f, v):
+            return None
+        causes = []
+        for name, (what, slot) in wrong.items():  # the wrong inputs that move this figure
+            s2, t2, o2 = dict(sizes), dict(tang), dict(outer)
+            {"size": s2, "tang": t2, "outer": o2}[what].pop(slot, None)  # type: ignore
+            alt = self.ref.own_forces(k, s2, t2, model, o2)
+            w = None if alt is None else self.own_force_value(f, k, alt)
+            if w is None or abs(w - v) > 0.25 * max(f.tol, 1e-12):
+                causes.append(name)
+        causes = causes or list(wrong)
+        en = (f"follows from {', '.join(causes)}: the force plans drawn with these values "
+              f"give {self._u(f, v)} (graphplan: {self._u(f, f.e)}).")
+        ru = (f"следует из {', '.join(causes)}: планы сил, построенные с этими значениями, "
+              f"дают {self._u(f, v, 'ru')} (по расчёту {self._u(f, f.e, 'ru')}).")
+        return Diag("propagated", en, ru, tuple(causes))
 
     def _own_reading(self, f: Fig) -> Diag | None:
         """The student's own value of the same figure at another position, or of another

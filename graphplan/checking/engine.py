@@ -96,11 +96,18 @@ def read_member(text: str, vocab: Vocabulary) -> Member:
     try:
         node = parse(text, names=True, resolve=vocab.split)
     except ExpressionError as exc:
-        # a name with a dotted index, as written for the lever's moment (Мур.ж)
-        dotted = re.fullmatch(r"\s*([^\W\d]\w*)\.([^\W\d]\w*)\s*", text)
-        if dotted is None:
+        # a name with a dotted index, as written for the lever's moment (Мур.ж), alone
+        # or in a formula ((Мур.ж − Мур)/Мур.ж∙100)
+        node = None
+        for t in (text, body):
+            undotted = re.sub(r"(?<=[^\W\d_])\.(?=[^\W\d_])", "_", t)
+            try:
+                node = parse(undotted, names=True, resolve=vocab.split)
+                break
+            except ExpressionError:
+                continue
+        if node is None:
             return Member(text, "text", error=str(exc))
-        node = Sym(f"{dotted.group(1)}_{dotted.group(2)}")
     if isinstance(node, Sym):
         return Member(text, "name", node)
     unknown = [n for n in _sym_names(node) if vocab.lookup(n) is None]

@@ -18,7 +18,17 @@ written numbers, as a student computes it. It must pass the checker clean.
 ``sign``        Mур with the wrong sign
 ``unit``        a reaction in кН with the number of newtons
 ``lever-arm``   the arm of the same force about another point
+``normal``      a slip in a normal component ``aⁿ = v²/l``
+``load``        a slip in an inertia force or moment (``Pи = m∙a``)
+…               (and the others of :data:`FAULT_KINDS`)
 ==============  ==================================================================
+
+A student draws on from their own figures: every later line that uses a wrong value
+takes it (:func:`_carry`), the acceleration plan is built again from a wrong normal or
+Coriolis component, and the force plans from wrong loads, tangential reactions and the
+reactions one group passes to the next (:func:`_redraw`, with
+:meth:`~graphplan.checking.reference.Reference.own_forces`): the readings off them
+change, and the checker must call them consequences, not faults.
 
 Each injected fault is returned with the finding the checker must report for it
 (position, quantity, kind).
@@ -36,14 +46,17 @@ import numpy as np
 
 from .expressions import evaluate
 from .reference import Reference
+from .units import fold
 
 FAULT_KINDS = ("arithmetic", "scale", "other", "sign", "unit", "lever-arm", "unit-down",
-               "coriolis", "reuse", "label", "segment-for-force", "coriolis-left-out")
+               "coriolis", "reuse", "label", "segment-for-force", "coriolis-left-out",
+               "normal", "load")
 KIND_OF_FAULT = {"arithmetic": "arithmetic", "scale": "scale", "other": "other-variant",
                  "sign": "sign", "unit": "unit", "lever-arm": "lever-arm",
                  "unit-down": "unit", "coriolis": "coriolis", "reuse": "other-variant",
                  "label": "label", "segment-for-force": "scale",
-                 "coriolis-left-out": "coriolis"}
+                 "coriolis-left-out": "coriolis", "normal": "arithmetic",
+                 "load": "arithmetic"}
 
 
 def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
@@ -365,6 +378,11 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                      tuple(out_positions), student)
 
 
+def _decimals(text: str) -> int:
+    """Decimals a number is written with (a length read again keeps its precision)."""
+    return len(text.split(",")[1]) if "," in text else 0
+
+
 def _close_rel(a: float, b: float) -> bool:
     return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 
@@ -531,7 +549,8 @@ def _crank_line(fp, written: dict[str, float], arms: list, kl: float, cr,
         h_txt = measure(h)
         if force in react:
             aname = f"h{force[1:]}"
-            lines.append(GenLine(aname, "", (), "мм", result_text=h_txt))
+            lines.append(GenLine(aname, "", (), "мм", result_text=h_txt,
+                                 tags=("crank_arm",)))
         else:
             aname = f"h{force}{about}"
             arms.append((aname, force, about))
@@ -564,6 +583,7 @@ class Fault:
     finding_kind: str
     line: str  # the faulty line as written
     carried: tuple[str, ...] = ()  # later lines that use the wrong value, as written
+    redrawn: tuple[str, ...] = ()  # plans drawn again from it: "acceleration", "forces"
 
 
 def _positions_with(gen: Generated, pred) -> list[tuple[int, int]]:
@@ -572,8 +592,9 @@ def _positions_with(gen: Generated, pred) -> list[tuple[int, int]]:
 
 
 def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
-           ref: Reference | None = None) -> tuple[Generated, tuple[Fault, ...]]:
-    """Put one fault of each of ``kinds`` into ``gen``, each at a position of its own.
+           ref: Reference | None = None, only=None) -> tuple[Generated, tuple[Fault, ...]]:
+    """Put one fault of each of ``kinds`` into ``gen``, each at a position of its own
+    (``only``: a predicate on the lines a fault may go into, default any that fits).
 
     Raises
     ------
@@ -588,27 +609,181 @@ def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
         now = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
                                            zip(gen.positions, positions, strict=True)))
         cands = [(i, j) for i, lines in enumerate(positions) for j, ln in enumerate(lines)
-                 if i not in used_pos and _fits(kind, ln, gen.positions[i].label, ref, now)]
+                 if i not in used_pos and (only is None or only(ln)) and
+                 _fits(kind, ln, gen.positions[i].label, ref, now)]
         if not cands:
             raise ValueError(f"no line left for a fault of kind {kind!r}")
         i, j = rng.choice(cands)
         label = gen.positions[i].label
         old = positions[i][j]
+        orig = list(positions[i])
+        before = [ln.text() for ln in orig]
         if kind == "coriolis-left-out":
             used_pos.add(i)
-            faults.append(_leave_out_coriolis(positions[i], j, label, ref, now))
-            continue
-        new, quantity = _apply(kind, old, label, ref, now, rng)
-        positions[i][j] = new
-        used_pos.add(i)
-        carried: tuple[str, ...] = ()
+            fault = _leave_out_coriolis(positions[i], j, label, ref, now)
+        else:
+            new, quantity = _apply(kind, old, label, ref, now, rng)
+            positions[i][j] = new
+            used_pos.add(i)
+            if kind not in ("unit", "unit-down", "sign", "segment-for-force"):
+                _carry(positions[i], j, old, new)
+            fault = Fault(kind, label, quantity, KIND_OF_FAULT[kind], new.text())
         if kind not in ("unit", "unit-down", "sign", "segment-for-force"):
-            carried = _carry(positions[i], j, old, new)
-        faults.append(Fault(kind, label, quantity, KIND_OF_FAULT[kind], new.text(),
-                            carried))
+            # the student draws on with their own values: the acceleration plan from a
+            # wrong normal or Coriolis component, the force plans from wrong loads
+            redrawn = _redraw(positions[i], orig, label, ref, now)
+        else:
+            redrawn = ()
+        was = set(before)
+        carried = tuple(t for t in (ln.text() for ln in positions[i])
+                        if t not in was and t != fault.line)
+        faults.append(replace(fault, carried=carried, redrawn=redrawn))
     out = replace(gen, positions=tuple(replace(p, lines=tuple(ls)) for p, ls in
                                        zip(gen.positions, positions, strict=True)))
     return out, tuple(faults)
+
+
+def _redraw(lines: list[GenLine], orig: list[GenLine], label: str, ref: Reference,
+            gen: Generated) -> tuple[str, ...]:
+    """A student draws on from their own figures: when a fault changed a normal or
+    Coriolis component, the acceleration plan is rebuilt with it (every segment read
+    again, with the same drafting error); when it changed a load, a tangential reaction
+    or a reaction one group passes to the next, the force plans are solved again from
+    the student's own values (:meth:`Reference.own_forces`) and every reaction, arm of a
+    reaction and h21 the fault moves is read off them (with the drafting error it was
+    read with). The changes are carried on (:func:`_carry`).
+    ``orig`` are the position's lines before the fault. Returns the plans redrawn
+    (``"acceleration"``, ``"forces"``) where a reading changed."""
+    sc = _scales(gen)
+    kl, kv, ka = sc.get("Кl", 1e-3), sc.get("Kv"), sc.get("Ka")
+    k = ref.index(label)
+    done: list[str] = []
+    if k is None or not kv or not ka:
+        return ()
+    was = {ln.text() for ln in orig}
+    first = {ln.lhs: ln for ln in reversed(orig)}
+
+    def written(ln: GenLine) -> float:
+        return evaluate(_written_result(ln)).number
+
+    def changed() -> list[GenLine]:
+        return [ln for ln in lines if ln.text() not in was]
+
+    # the acceleration plan from the student's own normal and Coriolis components
+    moved = [ln for ln in changed() if {"normal", "coriolis"} & set(ln.tags) and
+             ln.lhs in first and written(first[ln.lhs])]
+    if moved:
+        normals, each = [], []
+        for ln in moved:  # the student's component over graphplan's (as the checker has it)
+            if "normal" in ln.tags and len(ln.lhs) == 4:
+                link = ref.normal_link(ln.lhs[2], ln.lhs[3])
+                exact = ref.value(("a_n", ln.lhs[2], ln.lhs[3]), k)
+                if link is not None and exact:
+                    normals.append((link, round(written(ln) / exact, 6)))
+            elif "coriolis" in ln.tags:
+                exact = ref.plan_value("k_" + ln.lhs[2:], k)
+                if exact:
+                    each.append(("k_" + ln.lhs[2:], round(written(ln) / exact, 6)))
+        spec = tuple(sorted(normals))
+        for m, ln in enumerate(lines):
+            if "reading" not in ln.tags or ln.operands[1].name != "Ka":
+                continue
+            seg = ln.operands[0]
+            e0 = ref.reading_mm(seg.name, k, kl, kv, ka)
+            e1 = ref.reading_mm_coriolis(seg.name, k, kl, kv, ka, 1.0, spec,
+                                         tuple(sorted(each)))
+            if e0 is None or e1 is None or abs(e1 - e0) < 0.01:
+                continue
+            mine = float(seg.text.replace(",", ".")) + (e1 - e0)
+            new = replace(ln, operands=(replace(seg, text=_fmt(abs(mine), decimals=_decimals(
+                seg.text))),
+                                        *ln.operands[1:]))
+            lines[m] = new
+            _carry(lines, m, ln, new)
+            if "acceleration" not in done:
+                done.append("acceleration")
+    where = {ln_: n for n, d in enumerate(ref.mech.dyads) for ln_ in d.links}
+
+    def outer_pair(name: str) -> tuple[str, str] | None:
+        if not re.fullmatch(r"R\d\d", name):
+            return None
+        i_, j_ = name[1], name[2]
+        if i_ in where and j_ in where and where[i_] != where[j_]:
+            return (i_, j_) if where[i_] > where[j_] else (j_, i_)
+        return None
+
+    if not any({"load", "tangential"} & set(ln.tags) or ("reaction" in ln.tags and
+                                                         outer_pair(ln.lhs))
+               for ln in changed()):
+        return tuple(done)
+    # the force plans from the student's own loads, tangential and passed-on reactions
+
+    def inputs(upto: list[GenLine]):
+        sizes: dict[str, float] = {}
+        tang: dict[str, float] = {}
+        outer: dict[tuple[str, str], float] = {}
+        for x in upto:
+            if "load" in x.tags:
+                sizes[fold(x.lhs)] = abs(written(x))
+            elif "tangential" in x.tags:
+                tang[x.lhs] = abs(written(x))
+            elif "reaction" in x.tags and outer_pair(x.lhs):
+                outer[outer_pair(x.lhs)] = abs(written(x))  # type: ignore[index]
+        return sizes, tang, outer
+
+    arms = {n: (f, a) for p in gen.positions if p.label == label for n, f, a in p.arms}
+    kp = None
+    for m in range(len(lines)):
+        ln = lines[m]
+        if ln.lhs == "Кр" and ln.result_text is not None:
+            kp = evaluate(ln.result_text).number
+        targets: list[tuple[int, tuple, float]] = []  # operand index (-1: result), key, scale
+        if "reaction" in ln.tags and re.fullmatch(r"R\d\d", ln.lhs) and kp:
+            targets.append((0, ("reaction", ln.lhs[1], ln.lhs[2]), kp))
+        elif "crank_arm" in ln.tags:
+            targets.append((-1, ("crank_arm", ln.lhs[1]), kl))
+        elif {"tangential", "M_bal"} & set(ln.tags):
+            for t, op in enumerate(ln.operands):
+                spec_ = arms.get(op.name)
+                if spec_ is not None and spec_[0].startswith("R"):
+                    targets.append((t, ("arm", *spec_), kl))
+        if not targets:
+            continue
+        n_before = next((i for i, x in enumerate(orig) if x.lhs == ln.lhs and
+                         x.tags == ln.tags), None)
+        if n_before is None:
+            continue
+        s1, t1, o1 = inputs(lines[:m])
+        s0, t0, o0 = inputs(orig[:n_before])
+        own = ref.own_forces(k, s1, t1, "rule", o1)
+        base = ref.own_forces(k, s0, t0, "rule", o0)
+        if own is None or base is None:
+            continue
+        new = ln
+        for t, key, scale in targets:
+            # read off the student's own plan, with the same drafting error; a figure
+            # the fault does not move is left as it was read
+            e0, e1 = ref.value(key, k), ref.own_value(key, k, own)
+            e_before = ref.own_value(key, k, base)
+            if e0 is None or e1 is None or e_before is None or \
+                    abs(e1 - e_before) / scale < 0.01:
+                continue
+            if t < 0:
+                mine = evaluate(new.result_text or "0").number + (e1 - e0) / scale
+                new = replace(new, result_text=_fmt(abs(mine), decimals=_decimals(
+                    new.result_text or "0")))
+            else:
+                op = new.operands[t]
+                mine = float(op.text.replace(",", ".")) + (abs(e1) - abs(e0)) / scale
+                ops = list(new.operands)
+                ops[t] = replace(op, text=_fmt(abs(mine), decimals=_decimals(op.text)))
+                new = replace(new, operands=tuple(ops))
+        if new is not ln:
+            lines[m] = new
+            _carry(lines, m, ln, new)
+            if "forces" not in done:
+                done.append("forces")
+    return tuple(done)
 
 
 def _without_coriolis(lines: list[GenLine], label: str, ref: Reference, gen: Generated
@@ -725,6 +900,10 @@ def _fits(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated) ->
     if kind == "arithmetic":
         return bool(ln.operands) and "scale" not in ln.tags and abs(ln.result) > 1e-6 \
             and "M_bal" not in ln.tags
+    if kind == "normal":  # a slip in aⁿ = v²/l, and the acceleration plan drawn from it
+        return "normal" in ln.tags and abs(ln.result) > 1e-6
+    if kind == "load":  # a slip in Pи = m∙a or Mи = IS∙ε, and the force plans drawn on
+        return "load" in ln.tags and bool(ln.operands) and abs(ln.result) > 1e-6
     if kind == "scale":
         return "reading" in ln.tags and abs(ln.result) > 1e-3 and float(
             ln.operands[0].text.replace(",", ".")) >= 5
@@ -851,7 +1030,7 @@ def _other_arms(ln: GenLine, label: str, ref: Reference, gen: Generated):
 
 def _apply(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated,
            rng: random.Random) -> tuple[GenLine, str]:
-    if kind == "arithmetic":
+    if kind in ("arithmetic", "normal", "load"):
         factor = rng.choice((1.2, 1.3, 1.45, 1.6, 1.75, 1.9))
         return replace(ln, result_text=_fmt(ln.result * factor, ln.digits)), ln.lhs
     if kind == "scale":
@@ -914,6 +1093,7 @@ class Scores:
     reported: int
     reported_roots: int
     false_alarms: int
+    redrawn: int = 0  # planted faults the student drew a plan on from (a chain to follow)
     misses: tuple[str, ...] = ()
     alarms: tuple[str, ...] = ()
     miscaused: tuple[str, ...] = ()
@@ -935,7 +1115,8 @@ class Scores:
         return (f"{self.works} works over {self.variants} variants ({self.clean_works} "
                 f"correct, {self.planted} planted faults): recall {self.recall:.3f}, false "
                 f"alarms {self.false_alarms}, root attribution {self.root_attribution:.3f}, "
-                f"cause named right {self.cause_accuracy:.3f}")
+                f"cause named right {self.cause_accuracy:.3f}; {self.redrawn} faults with "
+                "plans drawn on from them")
 
 
 def _plan_class(variants, works: int, rng: random.Random):
@@ -969,7 +1150,7 @@ def score(variants, works: int = 200, *, seed: int = 0, noise_mm: float = 0.5,
     for v in variants:
         ref = reference_for(v)
         labels[v] = [p.label for p in generate(v, ref=ref).positions]
-    planted = found = cause = reported = roots = alarms_n = clean = 0
+    planted = found = cause = reported = roots = alarms_n = clean = redrawn = 0
     misses, alarms, miscaused, not_roots = [], [], [], []
     plan = _plan_class(variants, works, rng)
     for n, (v, kinds) in enumerate(plan):
@@ -1001,6 +1182,7 @@ def score(variants, works: int = 200, *, seed: int = 0, noise_mm: float = 0.5,
         tag = f"{v.stem} #{n}"
         for fault in faults:
             planted += 1
+            redrawn += bool(fault.redrawn)
             hit = [f for f in primary if f.position == fault.position and
                    fault.quantity in f.quantity.split(" = ")]
             if not hit:
@@ -1028,7 +1210,8 @@ def score(variants, works: int = 200, *, seed: int = 0, noise_mm: float = 0.5,
                 alarms.append(f"{tag} {f.kind} {f.where} {f.quantity}: {f.line} — "
                               f"{f.explanation_en}")
     return Scores(len(plan), len(variants), clean, planted, found, cause, reported, roots,
-                  alarms_n, tuple(misses), tuple(alarms), tuple(miscaused), tuple(not_roots))
+                  alarms_n, redrawn, tuple(misses), tuple(alarms), tuple(miscaused),
+                  tuple(not_roots))
 
 
 __all__ = ["FAULT_KINDS", "KIND_OF_FAULT", "Drafting", "Fault", "GenLine", "Generated",

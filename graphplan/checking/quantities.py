@@ -26,6 +26,9 @@ name                meaning                                                     
 ``h21``             the arm of R21 about the crank's pivot, on the position plan mm
 ``h3`` …            an arm declared in the student file (force, about a point)    mm
 ``Mур``             the balancing moment, counter-clockwise positive              N·m
+``Мур.ж``           the same from Zhukovsky's lever                               N·m
+``δ``               their discrepancy, ``|Мур.ж − Мур|/Мур.ж·100``               %
+``K`` ``θ``         coefficient of change of average speed, and its angle θ      —, °
 ``X@4``             the figure X of position 4 (in templates)                    —
 ==================  ===========================================================  ======
 
@@ -99,9 +102,13 @@ SCALE_OF_DIMENSION = {"m": "Kl", "m/s": "Kv", "m/s²": "Ka", "N": "Kp"}
 _SCALE_ALIASES = {"Kl": "Kl", "μl": "Kl", "Kv": "Kv", "μv": "Kv", "Ka": "Ka", "μa": "Ka",
                   "Kp": "Kp", "KP": "Kp", "KF": "Kp", "Kf": "Kp", "μF": "Kp", "μp": "Kp",
                   "μP": "Kp"}
-_MBAL_ALIASES = ("Mур", "Mуp", "M_ур", "Mур1", "Mbal", "M_bal", "Mb",
-                 # the same moment from Zhukovsky's lever (Мур.ж is read as Мур_ж)
-                 "Mурж", "Mур_ж", "MурЖ", "Mур_Ж", "Mур_рыч", "Mур_р")
+_MBAL_ALIASES = ("Mур", "Mуp", "M_ур", "Mур1", "Mbal", "M_bal", "Mb")
+# the same moment from Zhukovsky's lever (Мур.ж is read as Мур_ж): a figure of its own,
+# compared with graphplan's Mур and with the force plans' Мур by δ
+_LEVER_ALIASES = ("Mурж", "Mур_ж", "MурЖ", "Mур_Ж", "Mур_рыч", "Mур_р", "Mж", "M_ж",
+                  "Mурл", "Mур_л")
+# δ = |Мур.ж − Мур|/Мур.ж·100 %, the discrepancy of the two
+_DELTA_ALIASES = ("δМур", "δM", "δ_Мур", "δMур", "Δ", "ΔМур", "δ%", "delta")
 _INERTIA_FORCE = ("Pи", "Фи", "Ф", "Φ", "Fи", "Pin")
 _INERTIA_MOMENT = ("Mи", "MФ", "MΦ", "Min")
 
@@ -217,6 +224,13 @@ class Vocabulary:
                        factor=0.001, tolerance="segment", scale="Kl"))
         add(_q("Mур", ("M_bal",), "moment", "N·m", "N·m", signed=True, prefixes=(0, 1)),
             *_MBAL_ALIASES)
+        add(_q("Mур.ж", ("M_bal", "lever"), "moment", "N·m", "N·m", signed=True,
+               prefixes=(0, 1)), *_LEVER_ALIASES)
+        add(_q("δ", ("mbal_discrepancy",), "cycle", "%", "1", factor=0.01), *_DELTA_ALIASES)
+        # the coefficient of change of the output's average speed, and the angle between
+        # the crank's positions at the output's dead centres: K = (180° + θ)/(180° − θ)
+        add(_q("K", ("time_ratio",), "cycle", "1", "1", scope="global"), "Kср")
+        add(_q("θ", ("overlap_angle",), "cycle", "deg", "deg", scope="global"), "Θ", "θ°")
         # lengths of the links and the same lengths drawn on the position plan
         points_by_link = {ln: mech.points_of(ln) for ln in (mech.frame_link, *mech.moving_links)}
         for ln, pts in points_by_link.items():

@@ -160,7 +160,7 @@ class Reference:
 
     def _max_value(self, key: Key, model: str) -> float | None:
         if key[0] in ("mass", "weight", "g", "rpm", "omega1", "eps1", "inertia",
-                      "resistance_max", "length"):
+                      "resistance_max", "length", "time_ratio", "overlap_angle"):
             return self._value(key, 0, self.kin, self.loads, self.forces, model)
         kin, loads, forces = self._max
         model = model if model in loads else "rule"
@@ -186,6 +186,13 @@ class Reference:
             return abs(mech.crank.omega)
         if what == "eps1":
             return 0.0
+        if what == "time_ratio":  # K = φ_working/φ_idle
+            return float(self.cycle.time_ratio)
+        if what == "overlap_angle":  # θ = 180°·(K − 1)/(K + 1)
+            K = float(self.cycle.time_ratio)
+            return 180.0 * (K - 1.0) / (K + 1.0)
+        if what == "mbal_discrepancy":  # the student's own: see Checker
+            return None
         if what == "resistance_max":
             return mech.resistances[0].maximum if mech.resistances else None
         if what == "length":
@@ -318,6 +325,139 @@ class Reference:
             return None
         return float(np.hypot(*(line[0] - self.kin.pos.points[pt][k])))
 
+    # --- the student's own force analysis ---------------------------------------------
+
+    def own_forces(self, k: int, sizes: dict[str, float], tangential: dict[str, float],
+                   model: str = "rule", outer: dict[tuple[str, str], float] | None = None
+                   ) -> tuple[Loads, Forces] | None:
+        """The force analysis of position k as the student draws it: every load of
+        ``sizes`` (name → the student's magnitude, N or N·m) at the student's size along
+        graphplan's line of action, and every tangential reaction of ``tangential`` (name
+        ``Rτ12`` → the student's magnitude) laid off as the student computed it.
+
+        The force plans are solved group by group, the last group first, so a second
+        group's reactions feed the first group and the crank (h21, Mур). A tangential
+        reaction the student got wrong (``Rτ12`` from a wrong arm) is the plan closed
+        with ``Rτ12' = Rτ12 + Δ``: the group's equilibrium with an extra couple
+        ``C = −(r_A − r_B) × Δ`` on the link, which leaves every force sum as the
+        student's polygon has it and makes the moment equation give ``Rτ12'``. A reaction
+        of ``outer`` ((by, on) → the student's magnitude: ``("4", "2")`` for R42, a
+        reaction the group solved first passes on to a later one) enters the later
+        group at the student's size: an extra force ``Δ`` on ``on`` at the pair.
+        Returns (loads, forces), or ``None`` when graphplan cannot solve it.
+        """
+        from ..errors import GraphplanError
+        from ..forces import ForceLoad, MomentLoad
+
+        base = self.loads[model if model in ("rule", "full") else "rule"]
+        outer = outer or {}
+        key = ("own", k, model, tuple(sorted(sizes.items())), tuple(sorted(tangential.items())),
+               tuple(sorted(outer.items())))
+        if key in self._plans:
+            return self._plans[key]
+        forces = {}
+        for ln, fs in base.forces.items():
+            out = []
+            for f in fs:
+                size = sizes.get(fold(f.name))
+                mag = float(np.hypot(*f.vector[k]))
+                if size is not None and mag > 0:
+                    v = np.array(f.vector, float)
+                    v[k] = v[k] * (size / mag)
+                    f = replace(f, vector=v)
+                out.append(f)
+            forces[ln] = tuple(out)
+        moments = {}
+        for ln, ms in base.moments.items():
+            out_m = []
+            for m in ms:
+                size = sizes.get(fold(m.name))
+                if size is not None and m.moment[k] != 0:
+                    mo = np.array(m.moment, float)
+                    mo[k] = math.copysign(size, mo[k])
+                    m = replace(m, moment=mo)
+                out_m.append(m)
+            moments[ln] = tuple(out_m)
+        loads = replace(base, forces=forces, moments=moments)
+        try:
+            fs_ = solve_forces(self.mech, self.kin, loads)
+            if outer:
+                pushes = []
+                for (by, on), want in outer.items():
+                    vec, r = self._reaction(fs_, by, on, k)
+                    size = 0.0 if vec is None else float(np.hypot(*vec))
+                    if size <= 1e-9 * max(abs(want), 1.0):
+                        continue
+                    v = np.zeros((self.kin.n, 2))
+                    v[k] = (abs(want) - size) * vec / size
+                    at = np.array(r.at, float)
+                    pushes.append(ForceLoad(f"ΔR{by}{on}", on, "external", None, at, v))
+                if pushes:
+                    loads = loads.with_loads(*pushes)
+                    fs_ = solve_forces(self.mech, self.kin, loads)
+            couples: dict[str, tuple[str, float]] = {}
+            for _ in range(3):  # groups in order: a later group's Δ moves an earlier one's
+                moved = False
+                for name, want in tangential.items():
+                    got = self._tangential_vector(fs_, name, k)
+                    if got is None:
+                        continue
+                    link, rA, rB, t = got
+                    size = float(np.hypot(*t))
+                    if size <= 1e-9 * max(abs(want), 1.0) or abs(abs(want) - size) <= \
+                            1e-9 * size:
+                        continue
+                    delta = (abs(want) - size) * t / size
+                    c = -float((rA[0] - rB[0]) * delta[1] - (rA[1] - rB[1]) * delta[0])
+                    couples[name] = (link, couples.get(name, (link, 0.0))[1] + c)
+                    moved = True
+                if not moved:
+                    break
+                extra = []
+                for name, (link, c) in couples.items():
+                    mo = np.zeros(self.kin.n)
+                    mo[k] = c
+                    extra.append(MomentLoad(f"Δ{name}", link, "external", mo))
+                fs_ = solve_forces(self.mech, self.kin, loads.with_loads(*extra))
+        except (GraphplanError, ValueError, TypeError, np.linalg.LinAlgError):
+            self._plans[key] = None
+            return None
+        self._plans[key] = (loads, fs_)
+        return loads, fs_
+
+    def _tangential_vector(self, fs: Forces, name: str, k: int):
+        """(link, r_A, r_B, Rτ) of ``Rτ12``: the reaction's part across its link, at its
+        pair A, the link's other joint B (the point its moment equation is about)."""
+        import re as _re
+
+        m = _re.fullmatch(r"R[τt]?(\d)(\d)", fold(name).replace("τ", "t"))
+        if m is None:
+            return None
+        i, j = m.groups()
+        vec, r = self._reaction(fs, i, j, k)
+        if vec is None or r.pair != "R":
+            return None
+        link = next((ln for ln in (r.on, r.by) if ln != self.mech.frame_link and
+                     ln != self.mech.crank.link), None)
+        if link is None:
+            return None
+        centres = {lp.centre for lp in self.mech.links.values()}
+        others = [p for p in self.mech.points_of(link) if p != r.point and p not in centres]
+        if not others:
+            return None
+        P = self.kin.pos.points
+        rA, rB = np.asarray(P[r.point][k], float), np.asarray(P[others[0]][k], float)
+        d = rB - rA
+        u = d / float(np.hypot(*d))
+        t = vec - float(np.dot(vec, u)) * u
+        return link, rA, rB, t
+
+    def own_value(self, key: Key, k: int, own: tuple[Loads, Forces]) -> float | None:
+        """:meth:`value` of ``key`` at position k in the student's own force analysis
+        (:meth:`own_forces`)."""
+        loads, fs = own
+        return self._value(key, k, self.kin, {"full": loads}, {"rule": fs}, "rule")
+
     # --- plans at the student's scales ------------------------------------------------
 
     def reading_mm(self, name: str, k: int, kl: float, kv: float | None,
@@ -342,26 +482,69 @@ class Reference:
         return None
 
     def reading_mm_coriolis(self, name: str, k: int, kl: float, kv: float, ka: float,
-                            factor: float) -> float | None:
+                            factor: float, normals: tuple[tuple[str, float], ...] = (),
+                            each: tuple[tuple[str, float], ...] = ()) -> float | None:
         """The length (mm) of a segment of the acceleration plan built with every Coriolis
         component ``factor`` times its size (0: left out of the vector equations; 0.5:
         without its factor 2; s/e: the student's own) — the plan a student draws from
-        their own Coriolis acceleration."""
+        their own Coriolis acceleration — and the normal components of the links of
+        ``normals`` (link, factor) that many times theirs (``aⁿ = ω²·l`` with the
+        student's own ω²: every point of the link follows from it by similarity). ``each``
+        gives single Coriolis components (``("k_C43", 0.5)``) their own factor."""
         from dataclasses import replace as _replace
 
         from ..plans import acceleration_plan
         from ..units import Scale
 
-        key = ("coriolis", k, kl, kv, ka, factor)
+        key = ("coriolis", k, kl, kv, ka, factor, normals, each)
         if key not in self._plans:
             self.reading_mm(name, k, kl, kv, ka)
             vp, _ap = self._plans[(k, kl, kv, ka)]
-            vp2 = _replace(vp, sliding={s: v * factor for s, v in vp.sliding.items()})
+            sliding = {s: v * factor for s, v in vp.sliding.items()}
+            pairs = self.coriolis_pairs(k)
+            for cname, f in each:
+                if cname in pairs:
+                    sliding[pairs[cname]] = vp.sliding[pairs[cname]] * f
+            rates = dict(vp.rates)
+            for link, f in normals:
+                if link in rates:
+                    rates[link] = rates[link] * math.sqrt(max(f, 0.0))
+            vp2 = _replace(vp, sliding=sliding, rates=rates)
             self._plans[key] = acceleration_plan(self.mech, self.kin, k,
                                                  Scale("Kl", kl, "m/mm"),
                                                  Scale("Ka", ka, "(m/s²)/mm"), vp2)
         ap = self._plans[key]
         return ap.readings[name].exact_mm if name in ap.readings else None
+
+    def coriolis_pairs(self, k: int) -> dict[str, str]:
+        """Each Coriolis segment of position k (``k_C43``) → the sliding pair whose
+        relative velocity it is made of (``"4/3"``)."""
+        from dataclasses import replace as _replace
+
+        from ..plans import acceleration_plan
+        from ..units import Scale
+
+        key = ("coriolis-pairs", k)
+        if key not in self._plans:
+            names = self.coriolis_names(k)
+            vp, _ap = self._plans[(k, 1e-3, 0.01, 0.05)]
+            out: dict[str, str] = {}
+            for s in vp.sliding:
+                if len(out) == len(names):
+                    break
+                vp2 = _replace(vp, sliding={**vp.sliding, s: 0.0})
+                ap = acceleration_plan(self.mech, self.kin, k, Scale("Kl", 1e-3, "m/mm"),
+                                       Scale("Ka", 0.05, "(m/s²)/mm"), vp2)
+                for n in names:
+                    if n not in out and (n not in ap.readings or abs(
+                            ap.readings[n].value) < 1e-9 * abs(_ap.readings[n].value)):
+                        out[n] = s
+            self._plans[key] = out
+        return self._plans[key]
+
+    def normal_link(self, p: str, q: str) -> str | None:
+        """The link whose normal acceleration ``aⁿ_pq`` is (the link of both points)."""
+        return self._common_link(p, q)
 
     def coriolis_names(self, k: int) -> list[str]:
         """The Coriolis segments (``k_A3``) of the acceleration plan of position k that are

@@ -31,7 +31,7 @@ def num(x: float | None, lang: str = "en", digits: int = 5) -> str:
 
 def qty(x: float | None, unit: str, lang: str = "en", digits: int = 5) -> str:
     """``"4456.1 N"`` / ``"4456,1 Н"``."""
-    u = unit_text(unit, lang)
+    u = "" if unit == "1" else unit_text(unit, lang)  # a ratio (K) has no unit
     return f"{num(x, lang, digits)} {u}".strip()
 
 
