@@ -290,7 +290,17 @@ def test_command_line(sheets, tmp_path, capsys):
     text = capsys.readouterr().out
     assert "sheet1.dxf" in text and "not checked" in text
     assert (out / "sheet1" / "report.html").read_text(encoding="utf-8").count("<svg") >= 1
-    assert (out / "summary.csv").is_file()
+    # the class summary as the calculation checker's: HTML with a link to each report,
+    # CSV in its columns, JSON with the rows and the class's totals
+    page = (out / "summary.html").read_text(encoding="utf-8")
+    assert "sheet1/report.html" in page and "blank.dxf" in page
+    assert (out / "summary.csv").read_text(encoding="utf-8").startswith("file,student,group")
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    assert summary["totals"] == {"drawings": 2, "ok": 1, "faults": 0, "error": 1,
+                                 "faults_by_kind": {}}
+    rows = {r["file"]: r for r in summary["drawings"]}
+    assert rows["sheet1.dxf"]["status"] == "ok" and rows["sheet1.dxf"]["ok"] > 50
+    assert "no plan found" in rows["blank.dxf"]["error"]
     assert main(["check", "--drawing", str(sheet)]) == 2  # no --variant: one line
     assert "--variant" in capsys.readouterr().err
 
@@ -355,3 +365,34 @@ def test_force_plans_of_every_example_are_read(tmp_path, ex):
     assert plans and all(j.position in ref.labels for j in plans)
     figs = [f for f in dc.report.figures if f.quantity.endswith("_mm")]
     assert sum(f.verdict == "ok" for f in figs) >= 0.6 * len(figs) > 0
+
+
+def test_overlay_shows_force_findings(tmp_path):
+    """A force plan's Kp written twice the scale it is drawn at: every force of it is
+    wrong, and the overlay draws graphplan's forces from the student's starts (green,
+    dashed) and the student's in red, measured ≠ expected, with a close-up of the plan."""
+    import re
+
+    import ezdxf
+
+    from graphplan.checking.drawing.overlay import drawing_overlay
+
+    assert main(["sheets", str(EX / "press.toml"), "--format", "dxf", "-o",
+                 str(tmp_path)]) == 0
+    doc = ezdxf.readfile(tmp_path / "sheet2.dxf")
+    done = False
+    for t in doc.modelspace().query("TEXT"):
+        m = re.match(r"(План сил .*Kp = )(\d+)( Н/мм)", t.dxf.text)
+        if m and not done:
+            t.dxf.text = f"{m[1]}{2 * int(m[2])}{m[3]}"
+            done = True
+    assert done
+    doc.saveas(tmp_path / "planted.dxf")
+    dc = check_drawing(tmp_path / "planted.dxf", EX / "press.toml", lang="en")
+    bad = [x for x in dc.report.wrong if x.quantity.endswith("_mm") and "force plan" in x.where]
+    assert len(bad) >= 2
+    sheets = drawing_overlay(dc, "en")
+    svg = "".join(sheets)
+    name = bad[0].quantity[:-3]
+    assert f"{name}: " in svg and " ≠ " in svg and "stroke-dasharray" in svg
+    assert any("force plan" in s.split("<title>")[1] for s in sheets[1:])

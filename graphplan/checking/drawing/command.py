@@ -5,16 +5,16 @@
 
 A folder: every ``*.dxf``, ``*.svg`` and ``*.pdf`` in it is checked (one line each; with
 ``-o`` each drawing's ``report.html``/``report.json``/``overlay*.svg`` go to
-``OUT/<name>/`` and ``OUT/summary.csv`` lists them); a drawing that cannot be read or has
+``OUT/<name>/`` and ``OUT/summary.html``, ``summary.csv`` and ``summary.json`` list them
+in the calculation checker's class columns); a drawing that cannot be read or has
 no plan is a line with its error, the others are still checked.
 """
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 import sys
+from collections import Counter
 from pathlib import Path
 
 from ...i18n import tr
@@ -91,33 +91,38 @@ def _one(path: Path, variant: Path, args, tol: dict, lang: str) -> int:
 
 
 def _many(files: list[Path], variant: Path, args, tol: dict, lang: str) -> int:
+    """A class folder: one line each, and with ``-o`` each drawing's report and the class
+    summary (``summary.html``, ``summary.csv``, ``summary.json``) in the calculation
+    checker's columns (:data:`graphplan.checking.batch.COLUMNS`)."""
     from ...errors import GraphplanError
     from ...files import write_atomic
+    from ..batch import Batch, Row, report_names
     from .check import check_drawing
 
-    rows = []
-    status = 0
+    rows: list[Row] = []
     width = max(len(f.name) for f in files)
-    for f in files:
+    stems = Counter(f.stem.lower() for f in files)
+    names = report_names([Path(f.stem if stems[f.stem.lower()] == 1 else f.name)
+                          for f in files])
+    for f, name in zip(files, names, strict=True):
         try:
             dc = check_drawing(f, variant, tol, lang)
-        except (GraphplanError, ValueError) as exc:
+        except (GraphplanError, ValueError, OSError) as exc:
             msg = " ".join(str(exc).split())
             print(tr(f"{f.name.ljust(width)}  error   {msg}"))
-            rows.append((f.name, "error", "", "", "", msg))
-            status = 1
+            rows.append(Row(f.name, variant=str(variant), status="error", error=msg))
             continue
         rep = dc.report
         c = rep.counts()
         st = "ok" if rep.ok else "faults"
-        kinds = ", ".join(sorted({x.kind for x in rep.wrong if x.primary}))
+        prim = [x for x in rep.wrong if x.primary]
+        kinds = ", ".join(sorted({x.kind for x in prim}))
         print(tr(f"{f.name.ljust(width)}  {st:<6}  {len(rep.figures)} figures, {c['wrong']} "
                  f"wrong, {c['primary']} faults{': ' + kinds if kinds else ''}"))
-        rows.append((f.name, st, len(rep.figures), c["wrong"], c["primary"], kinds))
-        status = max(status, 0 if rep.ok else 1)
+        link = ""
         if args.output:
             sheets, page = _outputs(dc, lang)
-            out = Path(args.output) / f.stem
+            out = Path(args.output) / name
             write_atomic(out / "report.html", page, protect=(f, variant))
             write_atomic(out / "report.json", json.dumps(rep.to_json(), ensure_ascii=False,
                                                          indent=1, allow_nan=False) + "\n",
@@ -125,17 +130,44 @@ def _many(files: list[Path], variant: Path, args, tol: dict, lang: str) -> int:
             for i, s in enumerate(sheets, start=1):
                 write_atomic(out / ("overlay.svg" if i == 1 else f"overlay-{i}.svg"), s,
                              protect=(f, variant))
+            link = f"{name}/report.html"
+        by_kind = Counter(x.kind for x in prim)
+        rows.append(Row(f.name, rep.student, rep.group, str(variant), st,
+                        c["ok"] + c["inaccurate"] + c["wrong"], c["ok"], c["inaccurate"],
+                        c["wrong"], 0, c["findings"], len(prim),
+                        "; ".join(f"{k}: {n}" for k, n in sorted(by_kind.items())), "",
+                        "; ".join(rep.notes), link,
+                        tuple((x.position, x.quantity, x.kind) for x in prim)))
+    batch = Batch(tuple(rows), class_variant=str(variant))
     if args.output:
-        buf = io.StringIO()
-        w = csv.writer(buf)
-        w.writerow(["file", "status", "figures", "wrong", "faults", "kinds_or_error"])
-        w.writerows(rows)
-        write_atomic(Path(args.output) / "summary.csv", buf.getvalue(), protect=(variant,))
-    n_ok = sum(r[1] == "ok" for r in rows)
-    n_err = sum(r[1] == "error" for r in rows)
+        out = Path(args.output)
+        protect = (variant, *files)
+        write_atomic(out / "summary.csv", batch.csv(), protect=protect)
+        write_atomic(out / "summary.html", batch.html(f"graphplan check --drawing: "
+                                                      f"{', '.join(args.drawing)}"),
+                     protect=protect)
+        summary = {"variant": str(variant), "drawings": [r.to_json() for r in rows],
+                   "totals": _totals(rows)}
+        write_atomic(out / "summary.json", json.dumps(summary, ensure_ascii=False, indent=1,
+                                                      allow_nan=False) + "\n",
+                     protect=protect)
+    n_ok = sum(r.status == "ok" for r in rows)
+    n_err = sum(r.status == "error" for r in rows)
     print(tr(f"{len(rows)} drawings: {n_ok} without faults, {len(rows) - n_ok - n_err} "
              f"with faults, {n_err} not checked"))
-    return status
+    return 0 if batch.ok else 1
+
+
+def _totals(rows) -> dict:
+    """The class's counts: drawings by status, and the faults by kind."""
+    kinds: Counter = Counter()
+    for r in rows:
+        for _pos, _q, kind in r.found:
+            kinds[kind] += 1
+    return {"drawings": len(rows), "ok": sum(r.status == "ok" for r in rows),
+            "faults": sum(r.status == "faults" for r in rows),
+            "error": sum(r.status == "error" for r in rows),
+            "faults_by_kind": dict(sorted(kinds.items()))}
 
 
 __all__ = ["run_drawings"]

@@ -1,6 +1,7 @@
 """The overlay: graphplan's construction drawn over the student's plans.
 
-One SVG of the whole sheet and one close-up of every plan with a wrong finding: the
+One SVG of the whole sheet and one close-up of every plan with a wrong finding (force
+plans too: graphplan's force from the student's start, the wrong ones in red): the
 student's lines in their own colour, graphplan's construction of the plan's position at
 the student's scale (pole laid on the student's pole) in blue, and in red each segment
 whose length or direction is wrong, with the measured and the expected length
@@ -55,7 +56,7 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
     crops = []
     for j in dc.plans:
         L = j.laid
-        if L is None or L.plan is None:
+        if L is None or L.plan is None or j.found.kind == "force":
             continue
         p0 = np.asarray(L.pole_at)
         plan = L.plan
@@ -102,6 +103,9 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
             m = 12.0
             crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m,
                           j.key))
+    for j in dc.plans:
+        if j.found.kind == "force" and j.pos is not None and j.scale:
+            _force_overlay(dc, j, body, crops, H, lang)
     legend = ("graphplan's construction (green, dashed), wrong segments (red) with the measured ≠ "
               "expected length, rings where the construction puts the point" if lang != "ru"
               else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): "
@@ -111,6 +115,47 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
     for vx, vy, vw, vh, title in crops:
         out.append(_svg(vx, vy, vw, vh, content, title))
     return out
+
+
+def _force_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) -> None:
+    """A force plan: graphplan's force (green, dashed) from where the student's starts,
+    and in red each force with a wrong finding, measured ≠ expected."""
+    fp = j.found
+    ref = dc.ref
+    k = list(ref.labels).index(j.pos) if ref is not None and j.pos in ref.labels else None
+    bad = [f for f in dc.report.findings if f.verdict == "wrong" and j.key and
+           j.key in f.where]
+    expected = {f.quantity[:-3]: f.expected for f in bad
+                if f.quantity.endswith("_mm") and f.expected is not None}
+    names = {f.quantity.lstrip("∠").removesuffix("_mm") for f in bad}
+    unit = "мм" if lang == "ru" else "mm"
+    for name, f in fp.forces.items():
+        a = np.asarray(f.start, float)
+        b = np.asarray(f.end, float)
+        line = ref.force_line(name, k) if k is not None else None
+        if line is not None and float(np.hypot(*line[1])) > 0:
+            vec = np.asarray(line[1], float) / float(j.scale)
+            d = b - a
+            if not f.sense and float(np.dot(vec, d)) < 0:
+                vec = -vec  # the line's direction only: laid along the student's
+            e = a + vec
+            body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{e[0]:.2f}' "
+                        f"y2='{H - e[1]:.2f}' stroke='{BLUE}' stroke-width='0.3' "
+                        "stroke-opacity='0.75' stroke-dasharray='1.2,0.6'/>")
+        if name not in names:
+            continue
+        body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
+                    f"y2='{H - b[1]:.2f}' stroke='{RED}' stroke-width='0.45'/>")
+        mid = (a + b) / 2
+        text = f"{name}: {num(f.length, lang, 4)}"
+        if name in expected:
+            text += f" ≠ {num(expected[name], lang, 4)}"
+        body.append(f"<text x='{mid[0] + 1:.2f}' y='{H - mid[1] - 1:.2f}' font-size='2.2' "
+                    f"fill='{RED}' font-family='sans-serif'>{_e(text)} {unit}</text>")
+    if any(f.primary for f in bad):
+        bx0, by0, bx1, by1 = fp.bbox
+        m = 12.0
+        crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m, j.key))
 
 
 def _svg(x: float, y: float, w: float, h: float, content: str, title: str) -> str:
