@@ -98,6 +98,8 @@ KEYS: dict[str, tuple[str, str]] = {
     "max": ("масштаб значений диаграммы: нагрузка = значение·max, Н или Н·м",
             "the diagram's scale: load = value·max, N or N·m"),
     "value": ("постоянная нагрузка вместо диаграммы, Н или Н·м", "a constant load, N or N·m"),
+    "unit": ("единица max и value: \"N\" (по умолчанию), \"kN\"; у момента \"N·m\", \"kN·m\"",
+             "unit of max and value: \"N\" (default), \"kN\"; a moment's \"N·m\", \"kN·m\""),
     "diagram": ("диаграмма [[x, значение], …]: x — доля хода 0…1 (over = \"stroke\") или "
                 "угол кривошипа", "[[x, value], …]: x the travel fraction or the crank angle"),
     "sense": ("\"resists\" — сопротивление (против движения, по умолчанию), \"drives\" — "
@@ -193,8 +195,10 @@ HEADER = {
 #   graphplan sheets {name} -o листы   (листы 1–3, таблицы, отчёт)
 # Правила файла (TOML): десятичная ТОЧКА (0.08, не 0,08); текст в кавычках;
 # сохраните файл в кодировке UTF-8. Единицы: длины — в length_unit, массы — кг,
-# силы — Н, моменты — Н·м, углы — градусы (от оси x против часовой стрелки),
-# частота вращения — об/мин. Над каждым ключом — что он значит.
+# силы — Н, моменты — Н·м (у нагрузки можно unit = "kN" или "kN·m"), углы — градусы
+# (от оси x против часовой стрелки), частота вращения — об/мин (или omega, рад/с).
+# Над каждым ключом — что он значит; все ключи, правила знаков и разобранные
+# примеры семейств — в docs/variant-format.ru.md репозитория graphplan.
 """,
     "en": """# A graphplan variant — a start from the family "{family}".
 # Change the numbers to your variant's and check the mechanism:
@@ -202,7 +206,9 @@ HEADER = {
 #   graphplan sheets {name} -o sheets
 # TOML: a decimal POINT (0.08); text in quotes; save as UTF-8. Units: lengths in
 # length_unit, masses kg, forces N, moments N·m, angles degrees (from +x, counter-
-# clockwise), speed rev/min. Above each key: what it means.
+# clockwise), speed rev/min (or omega, rad/s); a load may give unit = "kN" or "kN·m".
+# Above each key: what it means; every key, the sign conventions and a worked example
+# of each family: docs/variant-format.md in the graphplan repository.
 """,
 }
 
