@@ -55,6 +55,7 @@ from .fonts import (
 )
 from .labels import LabelRequest, merge_coincident, place_labels
 from .mpl_items import MIN_WIDTH, decimal_comma, figure_items
+from .scheme import mechanism_scheme, scheme_links
 from .sheet import (
     DASHDOT,
     DASHDOTDOT,
@@ -235,6 +236,7 @@ __all__ = [
     "kinetostatics_sheet",
     "link_items",
     "load_font",
+    "mechanism_scheme",
     "merge_coincident",
     "missing_chars",
     "moment_figure",
@@ -245,6 +247,7 @@ __all__ = [
     "position_plan_items",
     "results_lines",
     "scales_items",
+    "scheme_links",
     "signatures",
     "slider_point",
     "spaced_labels",

@@ -82,7 +82,7 @@ from .constructions import (
 Vec2 = np.ndarray
 
 FORCE_ARROW_MM = 30.0
-"""Length of the largest force's arrow on the lever (the display scale Kf is fitted to it)."""
+"""Length of the largest force's arrow on the lever (the display scale Kp is fitted to it)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -346,7 +346,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
              f"⟂ {pa_}{pb_} в точках {pa_} и {pb_}.", [])
 
     biggest = max((float(np.hypot(*F)) for *_, F in applied), default=0.0)
-    kf = fit_scale("Kf", "N/mm", max(biggest, 1e-9), FORCE_ARROW_MM)
+    kf = fit_scale("Kp", "N/mm", max(biggest, 1e-9), FORCE_ARROW_MM)
     forces: list[LeverForce] = []
     readings: dict[str, Reading] = {pa_name: pa}
     total = 0.0

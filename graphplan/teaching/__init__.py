@@ -64,14 +64,30 @@ def lesson(analysis, plan: str = "velocity", position: str | None = None) -> Les
     if plan in ("velocity", "acceleration"):
         from .kinematic import plan_lesson
 
-        return plan_lesson(analysis, k, plan)
-    if plan == "forces":
+        les = plan_lesson(analysis, k, plan)
+    elif plan == "forces":
         from .forces import forces_lesson
 
-        return forces_lesson(analysis, k)
-    from .lever import lever_lesson
+        les = forces_lesson(analysis, k)
+    else:
+        from .lever import lever_lesson
 
-    return lever_lesson(analysis, k)
+        les = lever_lesson(analysis, k)
+    return _with_scheme(analysis, k, les)
+
+
+def _with_scheme(analysis, k: int, les: Lesson) -> Lesson:
+    """``les`` with the mechanism at position k beside its plan, each step's links in colour."""
+    import dataclasses
+
+    from ..drawing import mechanism_scheme
+    from .scheme import step_links
+
+    mech = analysis.mech
+    steps = tuple(dataclasses.replace(s, links=step_links(
+        mech, s.equation, s.text.get("en", ""), les.panels[s.panel].title.get("en", "")))
+        for s in les.steps)
+    return dataclasses.replace(les, steps=steps, scheme=mechanism_scheme(analysis, k))
 
 
 def page_name(plan: str, position: str | None) -> str:

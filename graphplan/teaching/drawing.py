@@ -264,6 +264,51 @@ def frame_svg(lesson: Lesson, number: int, *, lang: str = "ru", standalone: bool
     return ('<?xml version="1.0" encoding="utf-8"?>\n' + text + "\n") if standalone else text
 
 
+SCHEME_COLOUR = "#c8102e"  #: the links a step is about, on the scheme beside the plan
+SCHEME_GREY = "#555555"
+
+
+def scheme_svg(lesson: Lesson, number: int) -> str:
+    """The mechanism at the lesson's position, small, with step ``number``'s links in
+    colour (empty when the lesson has no scheme: the flywheel's)."""
+    if not lesson.scheme:
+        return ""
+    from ..drawing import scheme_links
+
+    step = lesson.steps[number - 1]
+    lit = set(step.links)
+    xs, ys = [], []
+    for it in lesson.scheme:
+        x0, y0, x1, y1 = item_geometry(it).bounds if not isinstance(it, Text) else (
+            *it.pos, *it.pos)
+        xs += [x0, x1]
+        ys += [y0, y1]
+    vb = (min(xs) - 3.0, min(ys) - 5.0, max(xs) - min(xs) + 8.0, max(ys) - min(ys) + 8.0)
+    dwg = svgwrite.Drawing(size=(f"{svg_render.num(vb[2])}mm", f"{svg_render.num(vb[3])}mm"),
+                           viewBox=" ".join(svg_render.num(v) for v in vb), profile="full",
+                           debug=False)
+    dwg.attribs["class"] = "scheme"
+    dwg.attribs["data-links"] = " ".join(step.links)
+    rest, lit_g = dwg.g(**{"class": "links"}), dwg.g(**{"class": "lit"})
+    for it in lesson.scheme:
+        link = scheme_links(it)
+        on = link is not None and link in lit
+        colour = SCHEME_COLOUR if on else SCHEME_GREY if link is not None else "#000000"
+        if isinstance(it, Text):
+            el = svg_render._element(dwg, it)
+            el["fill"] = "black"
+        else:  # white fills (joints, blocks) stay white: only the lines take the colour
+            st = it.style
+            fill = st.fill if st.fill in ("white", "#ffffff", "#fff") else (
+                colour if st.fill else None)
+            st = replace(st, colour=colour, fill=fill, width=st.width * (1.6 if on else 1.0))
+            el = svg_render._element(dwg, replace(it, style=st))
+        (lit_g if on else rest).add(el)
+    dwg.add(rest)
+    dwg.add(lit_g)
+    return dwg.tostring()
+
+
 def bar_mm(zoom: float) -> float:
     """Length of a frame's scale bar: 10 mm, or 20, 50 mm on a large panel."""
     return 10.0 if zoom < 1.5 else 20.0 if zoom < 2.5 else 50.0
@@ -277,6 +322,7 @@ def frame_texts(lesson: Lesson, lang: str = "ru") -> str:
         out += [d.item.text for d in drawn if isinstance(d.item, Text)]
     out += [localise(s.equation, lang) for s in lesson.steps]
     out += [pn.title[lang] for pn in lesson.panels]
+    out += [it.text for it in lesson.scheme if isinstance(it, Text)]
     return "".join(out) + "0123456789/— "
 
 

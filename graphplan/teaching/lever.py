@@ -7,7 +7,7 @@ replaced by two forces, each force applied at the image of its point with its ar
 ``M_p = F·h``, N·mm of the lever), and the balancing force ``F_ур = |Σ M_p|/pa`` with
 ``M_ур(Ж) = F_ур·l_OA``, compared with the force plans' Mур. The lever is drawn at the
 Kv of sheet 2's lever (:meth:`graphplan.project.scales.Sheet2Scales.lever_kv`), so its arms are
-the sheet's and the tables'; the force arrows are at the display scale Kf (nothing is
+the sheet's and the tables'; the force arrows are at the display scale Kp (nothing is
 read at it).
 """
 

@@ -114,6 +114,7 @@ class LessonStep:
     results: tuple[Result, ...] = ()
     marks: tuple[Mark, ...] = ()
     notes: tuple[dict[str, str], ...] = ()
+    links: tuple[str, ...] = ()  #: the links the step is about, drawn in colour on the scheme
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,6 +135,10 @@ class Lesson:
     steps : tuple[LessonStep, ...]
     scales : tuple[str, ...]
         The scales as written on the sheet (``Kv = vA/pa = 0.4608/46.08 = 0.01 (m/s)/mm``).
+    scheme : tuple
+        The mechanism at the lesson's position (drawing items in mm,
+        :func:`graphplan.drawing.mechanism_scheme`), shown beside the plan with each step's
+        ``links`` in colour; empty for the flywheel (a lesson of the whole cycle).
     """
 
     plan: str
@@ -144,6 +149,7 @@ class Lesson:
     panels: tuple[Panel, ...]
     steps: tuple[LessonStep, ...]
     scales: tuple[str, ...] = ()
+    scheme: tuple = ()
 
     def __post_init__(self) -> None:
         for n, s in enumerate(self.steps, start=1):

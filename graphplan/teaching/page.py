@@ -30,7 +30,7 @@ from .captions import (
     scale_text,
     unit,
 )
-from .drawing import frame_svg, frame_texts
+from .drawing import frame_svg, frame_texts, scheme_svg
 from .model import Lesson, LessonStep
 from .questions import questions
 from .webfonts import font_face_css
@@ -86,6 +86,9 @@ body.js:not(.all) section.step:not(.current) { display: none; }
 body.js:not(.all) section.step { border-bottom: 0; }
 .fig { min-width: 0; }
 .fig svg { display: block; width: 100%; height: auto; max-height: 74vh; }
+figure.mech { margin: .8rem 0 0; }
+figure.mech svg { display: block; width: 100%; max-width: 22rem; height: auto; max-height: 30vh; }
+figure.mech figcaption { color: var(--muted); font-size: .85rem; }
 .cap h2 { font-size: 1.1rem; margin: .2rem 0 .6rem; font-weight: normal; color: var(--accent); }
 .where { color: var(--muted); margin: 0; font-size: .9rem; }
 .eq { font-size: 1.2rem; margin: .4rem 0 .8rem; }
@@ -292,10 +295,21 @@ def _step_html(lesson: Lesson, step: LessonStep, lang: str, svg: str) -> str:
         notes = "".join(f"<li>{nowrap_values(math_html(nt[lang]))}</li>"
                         for nt in step.notes)
         parts.append(f'<ul class="notes answer">{notes}</ul>')
+    scheme = scheme_svg(lesson, step.number)
+    if scheme:
+        links = ", ".join(step.links)
+        many = len(step.links) > 1
+        said = ((f"звенья {links} выделены" if many else f"звено {links} выделено")
+                if lang == "ru" else f"{'links' if many else 'link'} {links} in colour")
+        head = (f"Механизм в положении {lesson.position}" if lang == "ru"
+                else f"The mechanism in position {lesson.position}")
+        scheme = (f'<figure class="mech">{scheme}<figcaption>{html.escape(head)}'
+                  f'{"; " + html.escape(said) if step.links else ""}</figcaption></figure>')
     return (f'<section class="step" id="step-{step.number}" data-step="{step.number}" '
             f'data-panel="{step.panel}" data-kind="{step.kind}" '
             f'data-results="{len(step.results)}">'
-            f'<div class="fig">{svg}</div><div class="cap">{"".join(parts)}</div></section>')
+            f'<div class="fig">{svg}</div><div class="cap">{"".join(parts)}{scheme}</div>'
+            f'</section>')
 
 
 def _command(lesson: Lesson, lang: str) -> str:

@@ -1,0 +1,85 @@
+"""Which links a step of a lesson is about: the ones its scheme draws in colour.
+
+Read off the step's equation and sentence, and its panel's title:
+
+* a quantity of two points (``v_BA``, ``aⁿ_AO3``, ``l_OA``): the link holding both, else the
+  link its digit names (``v_A3O3``: A on link 3), else the moving link of its second point
+  (``aⁿ_AO3``: link 3, turning about O3);
+* a point on a named link (``v_A3``, ``aᵏ_A3``) and a rate (``ω3``, ``ε2``): that link;
+* a step that names its link (``similarity on link 3``, ``ΣM_B(link 2)``): that link alone;
+* a force or a reaction (``G2``, ``Pи3``, ``Mи3``, ``R12``) and a group (``links 2–3``): its
+  links.
+
+Only moving links count; a step that names none (the pole) colours nothing.
+"""
+
+from __future__ import annotations
+
+import re
+
+_SUB = re.compile(r"[_]([A-Za-z0-9]+)")
+_RATE = re.compile(r"[ωε](\d+)")
+_FORCE = re.compile(r"(?<![A-Za-z])(?:G|Pи|Mи|Fи|Ф)(\d+)|(?<![A-Za-z])R(\d)(\d)(?!\d)")
+_GROUP = re.compile(r"links? (\d+)\s*[–-]\s*(\d+)")
+_NAMED = re.compile(r"(?:on |\()link (\d+(?:\+\d+)*)")
+
+
+def _points(mech, sub: str) -> list[tuple[str, str | None]]:
+    """``A3O3`` → [(A, 3), (O3, None)]: the points of a subscript, each with the link its
+    digits name when they are not part of a point's own name."""
+    names = sorted(_all_points(mech), key=len, reverse=True)
+    out: list[tuple[str, str | None]] = []
+    i = 0
+    while i < len(sub):
+        for n in names:
+            if sub.startswith(n, i):
+                i += len(n)
+                m = re.match(r"\d+", sub[i:])
+                hint = None
+                if m and m.group() in mech.moving_links:
+                    hint = m.group()
+                    i += len(m.group())
+                out.append((n, hint))
+                break
+        else:
+            i += 1
+    return out
+
+
+def _all_points(mech) -> set[str]:
+    pts = set(mech.frame_points)
+    for ln in mech.moving_links:
+        pts.update(mech.points_of(ln))
+    return pts
+
+
+def step_links(mech, equation: str, text: str, panel_title: str = "") -> tuple[str, ...]:
+    """The moving links a step is about, in the mechanism's order (module docstring)."""
+    moving = list(mech.moving_links)
+    source = f"{equation} {text}"
+    named = {ln for m in _NAMED.findall(equation or text) for ln in m.split("+")}
+    if named & set(moving):  # "similarity on link 3", "ΣM_B(link 2)": the step says which
+        return tuple(ln for ln in moving if ln in named)
+    found: set[str] = set()
+    for sub in _SUB.findall(source):
+        pts = _points(mech, sub)
+        hints = {h for _, h in pts if h}
+        found |= hints
+        names = [p for p, _ in pts]
+        if len(names) >= 2 and names[0] != names[1]:
+            both = [ln for ln in moving if names[0] in mech.points_of(ln)
+                    and names[1] in mech.points_of(ln)]
+            if both:
+                found.update(both)
+            elif not hints:
+                found.update(ln for ln in moving if names[1] in mech.points_of(ln)
+                             and ln != mech.crank.link)
+    found.update(m for m in _RATE.findall(source) if m in moving)
+    for m in _FORCE.finditer(source):
+        found.update(g for g in m.groups() if g and g in moving)
+    for m in _GROUP.finditer(panel_title):
+        found.update(g for g in m.groups() if g in moving)
+    return tuple(ln for ln in moving if ln in found)
+
+
+__all__ = ["step_links"]
