@@ -49,39 +49,8 @@ def unit_of_angle(theta) -> Vec:
     return np.stack((np.cos(theta), np.sin(theta)), axis=-1)
 
 
-def angle_of(v: Vec) -> NDArray[np.float64]:
-    """Angle of each vector in (−π, π], CCW from +x."""
-    v = np.asarray(v, float)
-    return np.arctan2(v[..., 1], v[..., 0])
-
-
 def scale(v: Vec, s) -> Vec:
     """Multiply each vector of ``v`` by the matching scalar of ``s``."""
     return np.asarray(v, float) * np.asarray(s, float)[..., None]
 
 
-def solve2(c1: Vec, c2: Vec, rhs: Vec) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Solve ``x1·c1 + x2·c2 = rhs`` for each row by Cramer's rule.
-
-    This is the algebra of every vector equation of a plan: two known directions
-    ``c1``, ``c2`` and a known closing vector ``rhs`` give the two unknown
-    magnitudes. The caller guarantees ``cross(c1, c2) ≠ 0`` (it checks the
-    conditioning of each dyad first).
-    """
-    det = cross(c1, c2)
-    return cross(rhs, c2) / det, cross(c1, rhs) / det
-
-
-def sine_between(a: Vec, b: Vec) -> NDArray[np.float64]:
-    """|sin| of the angle between the lines of ``a`` and ``b`` (0 for a zero vector)."""
-    na = norm(a)
-    nb = norm(b)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        s = np.abs(cross(a, b)) / (na * nb)
-    return np.where((na > 0) & (nb > 0), s, 0.0)
-
-
-def wrap_deg(angle_deg):
-    """Wrap degrees to [0, 360)."""
-    w = np.mod(angle_deg, 360.0)
-    return np.where(np.isclose(w, 360.0, atol=1e-9), 0.0, w)

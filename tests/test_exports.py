@@ -36,7 +36,6 @@ from graphplan.drawing.sheet import (  # noqa: E402
     Arc,
     Arrow,
     Circle,
-    Figure,
     Group,
     Hatch,
     Line,
@@ -47,16 +46,12 @@ from graphplan.drawing.sheet import (  # noqa: E402
     Text,
     TitleBlock,
 )
-from graphplan.errors import GraphplanError, InputError, LayoutError  # noqa: E402
+from graphplan.errors import GraphplanError, InputError  # noqa: E402
+from graphplan.render import dxf as dxf_mod  # noqa: E402
 from graphplan.render import (  # noqa: E402
-    TOLERANCE,
     extra,
-    figure_paths,
-    parse_transform,
-    path_subpaths,
     pdf_bytes,
 )
-from graphplan.render import dxf as dxf_mod  # noqa: E402
 from graphplan.render import formats as exports  # noqa: E402
 from graphplan.render.png import png_bytes, png_size, svg_to_png_bytes  # noqa: E402
 from graphplan.render.svg import render_svg  # noqa: E402
@@ -143,7 +138,6 @@ class SvgLayer:
     circles: list  # (cx, cy, r, fill)
     arcs: list  # (start, end, r)
     texts: list  # (text, x, y, rotation, family)
-    figures: list  # (id, x, y, w, h)
     dashes: Counter  # (DXF entity type, dash pattern) of the dashed elements
 
 
@@ -162,7 +156,7 @@ def svg_layers(name: str) -> dict[str, SvgLayer]:
     out = {}
     for g in root.findall(f"{SVG}g"):
         layer = g.get("id").removeprefix("layer-")
-        data = SvgLayer([], [], [], [], 0, [], [], [], [], Counter())
+        data = SvgLayer([], [], [], [], 0, [], [], [], Counter())
 
         def walk(el, in_arrow=False, data=data):
             for ch in el:
@@ -175,11 +169,7 @@ def svg_layers(name: str) -> dict[str, SvgLayer]:
                         kind = "ARC" if "A" in ch.get("d") else "LINE"
                     data.dashes[(kind, dash)] += (ch.get("d").count("M") if kind == "LINE"
                                                   and tag == "path" else 1)
-                if tag == "g" and ch.get("class") == "figure":
-                    nested = ch.find(f"{SVG}svg")
-                    data.figures.append((ch.get("id"), *(_f(nested, k) for k in
-                                                         ("x", "y", "width", "height"))))
-                elif tag == "g":
+                if tag == "g":
                     arrow = ch.get("class") == "arrow"
                     if arrow and ch.find(f"{SVG}line") is not None \
                             and ch.find(f"{SVG}polygon") is not None:
@@ -263,9 +253,6 @@ def test_dxf_layers_are_the_sheets_layers_and_hold_their_content(name):
         drawn = (data.lines or data.hatch_segments or data.polys or data.heads or data.circles
                  or data.arcs or data.texts)
         assert bool(entities(doc, layer)) == bool(drawn), layer
-        for fid, *_ in data.figures:
-            assert entities(doc, f"figure-{fid}", "LWPOLYLINE"), fid
-            assert entities(doc, f"figure-{fid}", "HATCH"), fid  # the glyphs
     assert not entities(doc, "0")
     used = {e.dxf.layer for e in doc.modelspace()}
     expected = {k for k, d in svg.items() if d.lines or d.polys or d.texts or d.circles}
@@ -460,80 +447,6 @@ def test_other_formats_keep_their_true_size():
 def test_dxf_is_deterministic():
     s = sheet("press-2")
     assert dxf_mod.dxf_bytes(s) == dxf_mod.dxf_bytes(s)
-
-
-# ---------------------------------------------------------------- svg_paths
-
-def test_transform_lists_apply_right_to_left():
-    m = parse_transform("translate(10 20) scale(2)")
-    # (1, 1) scaled to (2, 2), then moved by (10, 20)
-    assert tuple(m @ [1, 1, 1])[:2] == (12.0, 22.0)
-    r = parse_transform("rotate(90 5 5)")
-    # (10, 5) turned 90° about (5, 5) (SVG: clockwise as seen, y down) → (5, 10)
-    assert tuple(np.round(r @ [10, 5, 1], 12))[:2] == (5.0, 10.0)
-    with pytest.raises(LayoutError):
-        parse_transform("matrix(1 2 3)")
-
-
-def test_path_commands_absolute_and_relative():
-    (pts, closed), = path_subpaths("m 1 1 h 2 v 3 z", np.eye(3))
-    assert closed and pts.tolist() == [[1, 1], [3, 1], [3, 4]]
-    subs = path_subpaths("M 0 0 L 10 0 M 0 5 10 5", np.eye(3))  # implicit line-to after M
-    assert [(p.tolist(), c) for p, c in subs] == [([[0, 0], [10, 0]], False),
-                                                  ([[0, 5], [10, 5]], False)]
-    with pytest.raises(LayoutError):
-        path_subpaths("M 0 0 A 5 5 0 0 0 10 0", np.eye(3))
-
-
-@pytest.mark.parametrize("d, curve", [
-    # quadratic: x = 100t, y = 2·t(1−t)·100 = 200t(1−t)
-    ("M 0 0 Q 50 100 100 0", lambda t: (100 * t, 200 * t * (1 - t))),
-    # cubic with controls (0,100), (100,100): x = 300t²(1−t)+100t³, y = 300t(1−t)
-    ("M 0 0 C 0 100 100 100 100 0",
-     lambda t: (300 * t**2 * (1 - t) + 100 * t**3, 300 * t * (1 - t))),
-])
-def test_bezier_flattening_stays_within_the_tolerance(d, curve):
-    (pts, _), = path_subpaths(d, np.eye(3))
-    t = np.linspace(0, 1, 20001)
-    exact = np.column_stack(curve(t))
-    assert pts[0].tolist() == [0, 0] and pts[-1].tolist() == [100, 0]
-    # every point of the exact curve is within TOLERANCE of the chords
-    from shapely import LineString, points
-
-    dist = LineString(pts).distance(points(exact))
-    assert dist.max() <= TOLERANCE
-    assert len(pts) < 200  # and not absurdly many chords
-
-
-def test_figure_paths_map_the_viewbox_onto_the_box():
-    svg = (
-        '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" '
-        'viewBox="0 0 100 50">'
-        '<defs><path id="g" d="M 0 0 L 4 0 L 4 4 L 0 4 z M 1 1 L 1 3 L 3 3 L 3 1 z"/>'
-        '<clipPath id="c"><rect x="0" y="0" width="50" height="50"/></clipPath></defs>'
-        '<path d="M 0 0 L 100 50" style="fill: none; stroke: #000000; stroke-width: 1"/>'
-        '<path d="M 0 25 L 100 25" clip-path="url(#c)" style="fill: none; stroke: #737373"/>'
-        '<path d="M 0 0 L 100 0 L 100 50 z" style="fill: #ffffff"/>'
-        '<g transform="translate(10 10) scale(1 -1)"><use xlink:href="#g"/></g>'
-        '</svg>')
-    fig = Figure((10, 20), 200, 100, svg, layer="diagrams", id="f")
-    strokes, fills = figure_paths(fig)
-    # scale 2 both ways: (0,0)-(100,50) → (10,20)-(210,120), 1 unit wide → 2 mm
-    assert strokes[0].points == ((10.0, 20.0), (210.0, 120.0)) and strokes[0].width == 2.0
-    # the clip keeps x ≤ 50 of the grey line: (10, 70)-(110, 70)
-    assert strokes[1].points == ((10.0, 70.0), (110.0, 70.0))
-    assert strokes[1].colour == pytest.approx((0x73 / 255,) * 3)
-    # the white triangle is not a fill; the "glyph" is: a square with a square hole;
-    # its corner (4, 4) → translate(10 10) scale(1 −1) → (14, 6) → sheet (10 + 2·14, 20 + 2·6)
-    assert len(fills) == 1 and len(fills[0].loops) == 2
-    assert (38.0, 32.0) in fills[0].loops[0]
-    assert (32.0, 38.0) in fills[0].loops[1]  # hole corner (1, 1) → (11, 9) → (32, 38)
-
-
-def test_figure_paths_refuse_what_has_no_outline():
-    svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10"><text>x</text></svg>'
-    with pytest.raises(LayoutError, match="text"):
-        figure_paths(Figure((0, 0), 10, 10, svg, layer="diagrams", id="t"))
 
 
 # ----------------------------------------------------------------------- PDF

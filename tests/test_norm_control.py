@@ -31,7 +31,6 @@ import shapely
 
 from graphplan.drawing import (
     Arrow,
-    Figure,
     Hatch,
     Text,
     item_geometry,
@@ -154,13 +153,10 @@ def overlaps(sh) -> list[str]:
     for it in leaves:
         if isinstance(it, (Text, Hatch)):
             continue
-        if isinstance(it, Figure):
-            g = it.rect.polygon()
-        else:
-            g = item_geometry(it)
-            if g is None or g.is_empty:
-                continue
-            g = g.boundary if g.geom_type == "Polygon" else g
+        g = item_geometry(it)
+        if g is None or g.is_empty:
+            continue
+        g = g.boundary if g.geom_type == "Polygon" else g
         lines.append((it, g))
     if lines:
         tree = shapely.STRtree([g for _, g in lines])
@@ -168,8 +164,6 @@ def overlaps(sh) -> list[str]:
             inner = b.buffer(-0.15)
             for j in tree.query(inner, predicate="intersects").tolist():
                 it, g = lines[j]
-                if isinstance(it, Figure) and t.layer in ("frame", "title"):
-                    continue
                 out.append(f"text {t.text!r} ({t.id}) crossed by {type(it).__name__} "
                            f"{it.id} [{it.layer}]")
     return out

@@ -331,42 +331,9 @@ class Group:
         _check_common(self)
 
 
-@dataclass(frozen=True, slots=True)
-class Figure:
-    """A vector picture made by another program (a matplotlib SVG) placed in a box.
-
-    ``origin`` is the box's top-left corner, ``width``×``height`` its size in mm;
-    ``svg`` is the picture's whole SVG text, scaled by the renderer to fill the box.
-    The box is the item's footprint for the layout checks.
-    """
-
-    origin: Pt
-    width: float
-    height: float
-    svg: str
-    _: KW_ONLY
-    layer: str
-    id: str
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "origin", _pt(self.origin, "Figure.origin"))
-        object.__setattr__(self, "width", _positive(self.width, "Figure.width"))
-        object.__setattr__(self, "height", _positive(self.height, "Figure.height"))
-        if not isinstance(self.svg, str) or "<svg" not in self.svg:
-            raise InputError("a figure needs the SVG text of its picture")
-        _check_common(self)
-        if self.id is None:
-            raise InputError("a figure needs an id (its picture's ids are prefixed with it)")
-
-    @property
-    def rect(self) -> Rect:
-        x, y = self.origin
-        return Rect(x, y, x + self.width, y + self.height)
-
-
-Item = Line | Polyline | Circle | Arc | Arrow | Text | Hatch | Figure | Group
-ITEM_TYPES = (Line, Polyline, Circle, Arc, Arrow, Text, Hatch, Figure, Group)
-Leaf = Line | Polyline | Circle | Arc | Arrow | Text | Hatch | Figure
+Item = Line | Polyline | Circle | Arc | Arrow | Text | Hatch | Group
+ITEM_TYPES = (Line, Polyline, Circle, Arc, Arrow, Text, Hatch, Group)
+Leaf = Line | Polyline | Circle | Arc | Arrow | Text | Hatch
 
 
 def iter_leaves(items: Iterable[Item]) -> Iterator[Leaf]:
@@ -516,8 +483,6 @@ def item_geometry(item: Leaf) -> BaseGeometry | None:
     if isinstance(item, Hatch):
         segs = hatch_segments(item)
         return MultiLineString(segs) if segs else None
-    if isinstance(item, Figure):
-        return item.rect.polygon().exterior
     return None
 
 

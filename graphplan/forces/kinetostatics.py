@@ -199,16 +199,6 @@ class Forces:
                 return -r.vector
         raise KeyError(name)
 
-    def on_link(self, link: str) -> list[tuple[str, Array, Array, Array]]:
-        """The reactions acting on ``link``: (name, force, point of application X, couple)."""
-        out = []
-        for r in self.reactions.values():
-            if r.on == link:
-                out.append((r.name, r.vector, r.ref, r.couple))
-            elif r.by == link:
-                out.append((reaction_name(r.on, r.by), -r.vector, r.ref, -r.couple))
-        return out
-
     def crank_arms(self) -> dict[str, Array]:
         """Arm h (m) about the crank's pivot of each reaction of a group on the crank (h21)."""
         pivot_xy = self.reactions[next(reversed(self.reactions))].ref

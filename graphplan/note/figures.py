@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import re
 
-from ..drawing import Figure as SheetFigure
 from ..drawing import Group, Item, Sheet, item_geometry, iter_leaves
 
 MARGIN_MM = 4.0
@@ -31,10 +30,6 @@ def _selected(items: tuple[Item, ...], prefixes: tuple[str, ...]) -> list[Item]:
 def _bounds(items: list[Item]) -> tuple[float, float, float, float] | None:
     boxes = []
     for leaf in iter_leaves(items):
-        if isinstance(leaf, SheetFigure):
-            r = leaf.rect
-            boxes.append((r.x0, r.y0, r.x1, r.y1))
-            continue
         g = item_geometry(leaf)
         if g is not None and not g.is_empty:
             boxes.append(g.bounds)

@@ -257,7 +257,7 @@ def _bounds(run, precision: float, kind=lambda key: None):
     return f0, drawn, bounds, same_path
 
 
-def _plan_figures(plan, scale_unit: str) -> dict:
+def _plan_figures(plan) -> dict:
     """A velocity or acceleration plan's figures: readings, rates, sliding, point vectors."""
     out = {}
     for name, r in plan.readings.items():
@@ -313,7 +313,7 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
         last[:] = (vp, ap)
         out = {}
         for plan in (vp, ap):
-            for key, v in _plan_figures(plan, "").items():
+            for key, v in _plan_figures(plan).items():
                 out[(plan.kind, key)] = v
         return out
 

@@ -9,8 +9,7 @@ arcs and text rotations keep their values.
 Layers
     one per layer of the sheet (:data:`graphplan.drawing.sheet.LAYERS`, same names: frame,
     title, construction, position_plan, velocity_plan, acceleration_plan,
-    force_plan, diagrams, dimensions, tables, text), each with a description, plus one
-    ``figure-<id>`` layer per picture (:class:`~graphplan.drawing.sheet.Figure`). Every layer
+    force_plan, diagrams, dimensions, tables, text), each with a description. Every layer
     is colour 7 (black on paper, white on a dark screen) and continuous; the entities
     carry their own line type and weight.
 Lines (GOST 2.303)
@@ -25,9 +24,7 @@ Items
     hatch line; Text → TEXT (capital height = DXF text height, GOST slant as an
     oblique angle of 15°, anchor start/middle/end on the baseline); a fill other than
     white (a dot, a filled polygon) → a solid HATCH under the outline. White fills are
-    not exported: they only mask the paper. Figures → their vector paths as
-    LWPOLYLINEs and solid HATCHes (their lettering is glyph outlines), see
-    :mod:`graphplan.render.svg_paths`. Nothing is raster.
+    not exported: they only mask the paper. Nothing is raster.
 Text styles
     ``GOST_B`` names the font of the sheets, osifont (``osifont.ttf``, an ISO 3098 /
     GOST 2.304-like CAD font); texts that osifont cannot letter (Ё, Э, −, ₁ …; see
@@ -44,7 +41,6 @@ from __future__ import annotations
 
 import io
 import math
-import re
 from contextlib import contextmanager
 from dataclasses import replace
 from functools import lru_cache
@@ -57,7 +53,6 @@ from ..drawing.sheet import (
     Arc,
     Arrow,
     Circle,
-    Figure,
     Group,
     Hatch,
     Item,
@@ -73,7 +68,6 @@ from ..drawing.sheet import (
 from ..files import write_atomic
 from ..units import decimal_comma
 from .extra import require
-from .svg_paths import figure_paths
 
 APPID = "GRAPHPLAN"  #: XDATA application name that carries the items' ids
 
@@ -91,7 +85,6 @@ LAYER_DESCRIPTIONS: dict[str, str] = {
     "tables": "tables / таблицы",
     "text": "captions and notes / надписи",
 }
-FIGURE_LAYER_PREFIX = "figure-"
 
 #: Dash patterns of the sheets (mm) → GOST 2.303 line types written into the DXF.
 GOST_LINETYPES: dict[tuple[float, ...], tuple[str, str]] = {
@@ -108,8 +101,6 @@ TEXT_STYLES: dict[str, tuple[str, str]] = {
     "DejaVu Sans Mono": ("DEJAVU_SANS_MONO", "DejaVuSansMono.ttf"),
 }
 DEFAULT_TEXT_STYLE = "GOST_B"
-
-_BAD_NAME = re.compile(r'[<>/\\":;?*|=`,\s]')
 
 
 @lru_cache(maxsize=64)
@@ -128,11 +119,6 @@ def lineweight(width_mm: float) -> int:
 
     return min((w for w in VALID_DXF_LINEWEIGHTS if w > 0),
                key=lambda w: (abs(w - width_mm * 100.0), w))
-
-
-def figure_layer(fig: Figure) -> str:
-    """DXF layer of a figure's paths: ``figure-<id>`` (characters DXF forbids → _)."""
-    return FIGURE_LAYER_PREFIX + _BAD_NAME.sub("_", fig.id)
 
 
 class _Writer:
@@ -329,8 +315,6 @@ class _Writer:
                 self.tag(msp.add_line(self.p(a), self.p(b), dxfattribs=attribs), item.id)
         elif isinstance(item, Text):
             self.add_text(item)
-        elif isinstance(item, Figure):
-            self.add_figure(item)
         else:
             raise TypeError(f"cannot export {type(item).__name__} to DXF")
 
@@ -353,23 +337,6 @@ class _Writer:
                                    dxfattribs=attribs)
         entity.set_placement(self.p(t.pos), align=align)
         self.tag(entity, t.id)
-
-    def add_figure(self, fig: Figure) -> None:
-        layer = figure_layer(fig)
-        if layer not in self.doc.layers:
-            self._layer(layer, f"figure {fig.id} (vector paths) / рисунок {fig.id}")
-        strokes, fills = figure_paths(fig)
-        for f in fills:
-            self.solid(f.loops, layer, f.colour)
-        for s in strokes:
-            pts = [self.p(q) for q in s.points]
-            closed = s.closed
-            if closed and len(pts) > 2 and pts[0] == pts[-1]:
-                pts = pts[:-1]
-            self.msp.add_lwpolyline(pts, close=closed,
-                                    dxfattribs=self.attribs(layer, s.width, s.colour,
-                                                            s.dasharray))
-
 
 @contextmanager
 def _fixed_metadata(ezdxf):
@@ -419,4 +386,4 @@ def write_dxf(sheet: Sheet, path: str | Path, protect: tuple[Path, ...] = ()) ->
 
 
 __all__ = ["APPID", "GOST_LINETYPES", "LAYER_DESCRIPTIONS", "TEXT_STYLES", "dxf_bytes",
-           "dxf_document", "dxf_text", "figure_layer", "lineweight", "write_dxf"]
+           "dxf_document", "dxf_text", "lineweight", "write_dxf"]

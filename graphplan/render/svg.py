@@ -14,7 +14,6 @@ The output has no timestamps: the same sheet always gives the same bytes.
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
@@ -27,7 +26,6 @@ from ..drawing import (
     Arc,
     Arrow,
     Circle,
-    Figure,
     Group,
     Hatch,
     Item,
@@ -40,7 +38,6 @@ from ..drawing import (
     arrow_parts,
     fonts,
     hatch_segments,
-    iter_leaves,
 )
 from ..errors import LayoutError
 from ..files import write_atomic
@@ -194,8 +191,6 @@ def _element(dwg: svgwrite.Drawing, item: Item, lang: str | None = None):
         return dwg.path(**_with_id({"d": d or "M0,0", **_stroke(item.style)}, item.id))
     if isinstance(item, Text):
         return _text(dwg, item, lang)
-    if isinstance(item, Figure):  # an empty placeholder; render_svg puts the picture in
-        return dwg.g(id=item.id, **{"class": "figure"})
     raise TypeError(f"cannot draw {type(item).__name__}")
 
 
@@ -243,41 +238,7 @@ def render_svg(sheet: Sheet) -> str:
     for it in items:
         groups[it.layer].add(_element(dwg, it, sheet.lang))
     text = dwg.tostring()
-    for fig in (it for it in iter_leaves(items) if isinstance(it, Figure)):
-        placeholder = f'<g class="figure" id="{fig.id}" />'
-        if text.count(placeholder) != 1:
-            raise LayoutError(f"figure {fig.id!r}: its placeholder is not unique in the SVG")
-        text = text.replace(placeholder, f'<g class="figure" id="{fig.id}">'
-                            f"{embedded_svg(fig)}</g>")
     return text + "\n"
-
-
-_XML_PROLOGUE = re.compile(r"<\?xml[^>]*\?>|<!DOCTYPE[^>]*>|<!--.*?-->", re.S)
-_ROOT = re.compile(r"<svg\b([^>]*)>(.*)</svg>\s*$", re.S)
-
-
-def embedded_svg(fig: Figure) -> str:
-    """The picture of ``fig`` as a nested ``<svg>`` filling its box (x, y, w, h in mm).
-
-    The picture keeps its own viewBox and is stretched to the box; every id in it is
-    prefixed with the figure's id (and references follow), so pictures never clash.
-    """
-    body = _XML_PROLOGUE.sub("", fig.svg).strip()
-    m = _ROOT.search(body)
-    if not m:
-        raise LayoutError(f"figure {fig.id!r}: its picture is not an <svg> document")
-    vb = re.search(r'viewBox="([^"]+)"', m.group(1))
-    if not vb:
-        raise LayoutError(f"figure {fig.id!r}: its picture has no viewBox")
-    inner = m.group(2)
-    pre = fig.id + "-"
-    inner = re.sub(r'\bid="([^"]+)"', lambda g: f'id="{pre}{g.group(1)}"', inner)
-    inner = re.sub(r'(href=")#([^"]+)"', lambda g: f'{g.group(1)}#{pre}{g.group(2)}"', inner)
-    inner = re.sub(r"url\(#([^)]+)\)", lambda g: f"url(#{pre}{g.group(1)})", inner)
-    x, y = fig.origin
-    return (f'<svg x="{num(x)}" y="{num(y)}" width="{num(fig.width)}" '
-            f'height="{num(fig.height)}" viewBox="{vb.group(1)}" '
-            f'preserveAspectRatio="none">{inner}</svg>')
 
 
 def write_svg(sheet: Sheet, path: str | Path, protect: tuple[Path, ...] = ()) -> Path:
