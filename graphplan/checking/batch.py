@@ -150,16 +150,14 @@ class Rules:
 def class_rules(path: str | Path) -> tuple[Path | None, dict[str, float]]:
     """A teacher's class file: ``[class] variant = "press.toml"`` (relative to the class
     file) and ``[tolerances]`` as in a student file. Returns (variant, tolerances)."""
+    from ..model import parse_toml
     from .errors import StudentFileError
     from .student import TOLERANCE_KEYS
 
     path = Path(path)
     raw = read_input(path, error=StudentFileError)
-    try:
-        data = tomllib.loads(decode_text(raw, str(path), StudentFileError))
-    except (tomllib.TOMLDecodeError, ValueError, RecursionError) as exc:
-        raise StudentFileError(f"{path}: not a valid class file "
-                               f"({' '.join(str(exc).split())})") from None
+    data = parse_toml(decode_text(raw, str(path), StudentFileError), str(path),
+                      StudentFileError)
     for k in data:
         if k not in ("class", "tolerances"):
             raise StudentFileError(f"{path}: {k}: unknown key (expected class, tolerances)")
@@ -704,8 +702,8 @@ def _finish(files: list[Path], rows: dict[int, Row | None], rules: Rules,
             out.append(Row(str(p), status="error",
                            error="not checked: the run was interrupted (run again with "
                            "--resume to check the rest)"))
-        elif rows[i] is not None:
-            out.append(rows[i])
+        elif (row := rows[i]) is not None:
+            out.append(row)
     shas = Counter(r.variant_sha for r in out if r.variant_sha)
     class_sha, class_name = "", ""
     if rules.variant is not None:

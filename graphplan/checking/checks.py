@@ -111,7 +111,8 @@ class Checker:
         cands: list[dict[str, float]] = [base]
         if q.on_paper and q.scale:
             cands = []
-            for k in self.w.scale_candidates(q, o.position, occs) or [None]:
+            ks: list[float | None] = [*(self.w.scale_candidates(q, o.position, occs) or [])]
+            for k in ks or [None]:
                 sc = dict(base)
                 if k is not None:
                     sc[q.scale] = k
@@ -530,7 +531,7 @@ class Checker:
     # --- rows of the report -----------------------------------------------------------
 
     def _figure_rows(self, figs: dict[tuple, Fig]):
-        self._compared = set()
+        self._compared: set = set()
         for f in figs.values():
             o = f.occs[0]
             d = f.diag

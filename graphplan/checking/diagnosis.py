@@ -112,7 +112,7 @@ class Diagnoser:
         self.w = checker.w
         self.ref = checker.ref
         self.figs = figs
-        self._left_out: dict[str, str] = {}  # position → the first segment without aᵏ
+        self._left_out: dict[str | None, str] = {}  # position → the first segment without aᵏ
 
     # --- helpers ----------------------------------------------------------------------
 
@@ -204,6 +204,7 @@ class Diagnoser:
             ru = (f"записанные числа дают {num(a.value, 'ru')}; у результата {b.text} "
                   f"обратный знак (по расчёту {self._u(f, f.e, 'ru')}).")
             return Diag("sign", en, ru)
+        assert a.value is not None and b.value is not None  # the numbers the line wrote
         unit = self._unit_slip(f, float(a.value), float(b.value), b.text)
         if unit is not None:
             return unit
@@ -1091,7 +1092,7 @@ class Diagnoser:
         if v is not None and q.key[0] != "crank_arm":
             cands.append(("h21, the arm of R21 about the crank's pivot",
                           "h21, плечо R21 относительно оси кривошипа", v / kl))
-        arms = next((p.arms for p in self.w.work.positions if p.label == o.position), {})
+        arms: dict = next((p.arms for p in self.w.work.positions if p.label == o.position), {})
         for spec in arms.values():
             if ("arm", spec.force, spec.about) == q.key:
                 continue

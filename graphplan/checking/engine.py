@@ -27,6 +27,7 @@ import re
 from collections import Counter
 from dataclasses import dataclass, field, fields
 from itertools import pairwise
+from typing import overload
 
 from .errors import ExpressionError, UnreadableError
 from .expressions import Node, Sym, decimals, parse, show, split_chain, value
@@ -179,10 +180,16 @@ def _close(a: float, b: float, rel: float, abs_: float = 0.0) -> bool:
     return abs(a - b) <= max(rel * max(abs(a), abs(b)), abs_)
 
 
+def _number(m: Member) -> float:
+    """The value of a member read as a number (``value`` is set on those)."""
+    assert m.value is not None, m.text
+    return float(m.value)
+
+
 def arithmetic_agrees(computed: float, written: Member, rel: float) -> bool:
     """Whether a written number is the computed one, rounded as written."""
     half = 0.5 * 10.0 ** (-decimals(written.text)) * 1.01
-    return _close(computed, float(written.value), rel, half)
+    return _close(computed, _number(written), rel, half)
 
 
 class Work:
@@ -207,7 +214,7 @@ class Work:
         self.vocab = {p.label: ref.vocabulary(p.arms) for p in work.positions}
         self.lines: list[LineWork] = []
         self.occs: list[Occurrence] = []
-        self._formulas: dict[tuple, Node] = {}  # the last formula written alone, by its name
+        self._formulas: dict[tuple, Node | None] = {}  # the last formula written alone, by its name
         self.figures: dict[tuple[str, tuple], list[Occurrence]] = {}  # filled at the end
         # by (scope, key), in reading order; and the stated scales found so far: looked up
         # for every number of every line, so kept linear in the file's size
@@ -313,8 +320,8 @@ class Work:
             aq = lw.vocab.lookup(a.node.name)  # type: ignore[union-attr]
             if aq is not None and (q is None or aq.key != q.key):
                 targets.append((aq, a.node.name, "alias"))  # type: ignore[union-attr]
-        for tq, name, role in targets:
-            tq = self._by_unit(lw, tq, m.unit)
+        for q0, name, role in targets:
+            tq = self._by_unit(lw, q0, m.unit)
             if tq is None:
                 continue
             o = self._occurrence(lw, tq, name, role, float(m.value), m.unit, m.text)  # type: ignore[arg-type]
@@ -484,7 +491,7 @@ class Work:
 
     def kp_stated(self, scope: str) -> list[tuple[int, float]]:
         """The Kp stated at a position, in the order of the lines: (file line, value)."""
-        out = []
+        out: list[tuple[int, float]] = []
         for o in sorted(self._occs_of(scope, ("scale", "Kp")),
                         key=lambda x: x.line.file_line or 0):
             if o.role in ("result", "alias"):
@@ -492,6 +499,11 @@ class Work:
                 if not out or not _close(out[-1][1], v, 1e-9):
                     out.append((o.line.file_line or 0, v))
         return out
+
+    @overload
+    def kp_at(self, scope: str, line: Line, default: float) -> float: ...
+    @overload
+    def kp_at(self, scope: str, line: Line, default: float | None) -> float | None: ...
 
     def kp_at(self, scope: str, line: Line, default: float | None) -> float | None:
         """The Kp in force on a line (see :meth:`stated_scales`)."""
@@ -509,7 +521,7 @@ class Work:
         lw = o.work
         if lw is None or lw.arithmetic != "wrong" or lw.bad is None or o.role == "operand":
             return o.value
-        computed = float(lw.bad[0].value) * (o.value / o.raw if o.raw else 1.0)
+        computed = _number(lw.bad[0]) * (o.value / o.raw if o.raw else 1.0)
         used = [x.value for x in self._occs_of(o.scope, o.q.key)
                 if x.role == "operand" and x.work is not lw]
         if any(_close(u, computed, 0.005) for u in used):

@@ -375,7 +375,7 @@ class _Parser:
             parts = self.resolve(t.text) if self.resolve else None
             if not parts:
                 return Sym(t.text)
-            node: Node = Sym(parts[0])
+            node = Sym(parts[0])
             for p in parts[1:]:
                 node = Bin("*", node, Sym(p))
             return node

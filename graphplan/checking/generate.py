@@ -41,6 +41,7 @@ import random
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -360,9 +361,9 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
                 continue
             state_kp(fp)
             for eq in fp.equations:
-                gl = _tangential(eq, fp, written, arms, kl, measure)
-                if gl is not None:
-                    lines.append(gl)
+                tl = _tangential(eq, fp, written, arms, kl, measure)
+                if tl is not None:
+                    lines.append(tl)
             for q, r in fp.readings.items():
                 if not re.fullmatch(r"R\d\d", q) or q in written or f"R{q[2]}{q[1]}" in \
                         written:
@@ -584,11 +585,6 @@ class Fault:
     line: str  # the faulty line as written
     carried: tuple[str, ...] = ()  # later lines that use the wrong value, as written
     redrawn: tuple[str, ...] = ()  # plans drawn again from it: "acceleration", "forces"
-
-
-def _positions_with(gen: Generated, pred) -> list[tuple[int, int]]:
-    return [(i, j) for i, p in enumerate(gen.positions) for j, ln in enumerate(p.lines)
-            if pred(p, ln)]
 
 
 def inject(gen: Generated, kinds: tuple[str, ...], rng: random.Random,
@@ -885,7 +881,7 @@ def _segment_elsewhere(ln: GenLine, label: str, ref: Reference, gen: Generated):
     for other in ref.labels:
         if other == label:
             continue
-        v = ref.reading_mm(seg.name, ref.index(other), kl, kv, ka)
+        v = ref.reading_mm(seg.name, ref.labels.index(other), kl, kv, ka)
         if v is None or v < 5 or mine < 5:
             continue
         r = v / mine
@@ -1006,7 +1002,6 @@ def _segment_of_force(ln: GenLine, label: str, gen: Generated) -> tuple[str, str
 
 def _other_arms(ln: GenLine, label: str, ref: Reference, gen: Generated):
     kl = _scales(gen).get("Кl", 1e-3)
-    k = ref.index(label)
     out = []
     names = {p_[0]: (p_[1], p_[2]) for p in gen.positions if p.label == label for p_ in p.arms}
     for op in ln.operands:
@@ -1019,7 +1014,7 @@ def _other_arms(ln: GenLine, label: str, ref: Reference, gen: Generated):
         for pt in ref.kin.pos.points:
             if pt == about:
                 continue
-            v = ref.value(("arm", force, pt), k)
+            v = ref.value(("arm", force, pt), label)
             if v is None:
                 continue
             v /= kl
@@ -1037,7 +1032,8 @@ def _apply(kind: str, ln: GenLine, label: str, ref: Reference, gen: Generated,
         sc = _scales(gen)
         name = ln.operands[1].name
         other = "Ka" if name == "Kv" else "Kv"
-        ops = (ln.operands[0], replace(ln.operands[1], text=_fmt(sc[other], 6)))
+        ops: tuple[Operand, ...] = (ln.operands[0],
+                                    replace(ln.operands[1], text=_fmt(sc[other], 6)))
         return replace(ln, operands=ops), name
     if kind == "other":
         other, v = rng.choice(_segment_elsewhere(ln, label, ref, gen))
@@ -1122,7 +1118,7 @@ class Scores:
 def _plan_class(variants, works: int, rng: random.Random):
     """(variant, kinds) for each work: every fault kind alone in every variant where it
     fits, then combinations of 2–3 kinds, and one correct work in six."""
-    plan = []
+    plan: list[tuple[Any, tuple[str, ...]]] = []
     for v in variants:
         plan.append((v, ()))
         plan += [(v, (k,)) for k in FAULT_KINDS]
@@ -1161,7 +1157,7 @@ def score(variants, works: int = 200, *, seed: int = 0, noise_mm: float = 0.5,
                        drafting=Drafting(noise_mm, random.Random(seed * 7919 + n)),
                        student=f"student {n}")
         faults: tuple[Fault, ...] = ()
-        fits = []
+        fits: list[str] = []
         for k in kinds:
             try:
                 inject(gen, (*fits, k), random.Random(n), ref)

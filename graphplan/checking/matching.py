@@ -101,7 +101,9 @@ def match(t: Node, n: Node, cost: Cost) -> Match | None:
     best: Match | None = None
     orders = permutations(range(len(nt))) if len(nt) <= MAX_PERMUTED else [range(len(nt))]
     for order in orders:
-        binds, signs, c = [], [], 0.0
+        binds: list = []
+        signs: list = []
+        c = 0.0
         for i, j in enumerate(order):
             m = pairs[i][j]
             if m is None:
@@ -144,7 +146,9 @@ def _assign(ts: list[Node], ns: list[Node], cost: Cost) -> Match | None:
     best: Match | None = None
     orders = permutations(range(len(ns))) if len(ns) <= MAX_PERMUTED else [range(len(ns))]
     for order in orders:
-        binds, signs, c = [], [], 0.0
+        binds: list = []
+        signs: list = []
+        c = 0.0
         for i, j in enumerate(order):
             m = pairs[i][j]
             if m is None:

@@ -99,8 +99,9 @@ def note_student_toml(path: str | Path, data: bytes) -> str:
             continue
         ppr = p.find(W + "pPr")
         sid = ""
-        if ppr is not None and ppr.find(W + "pStyle") is not None:
-            sid = ppr.find(W + "pStyle").get(W + "val", "")
+        pstyle = ppr.find(W + "pStyle") if ppr is not None else None
+        if pstyle is not None:
+            sid = pstyle.get(W + "val", "")
         style = names.get(sid, sid)
         text = _text(p)
         if style.lower().startswith("heading"):

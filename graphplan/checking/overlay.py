@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from itertools import pairwise
+from typing import Any
 
 import numpy as np
 
@@ -170,7 +171,7 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
     mech, kin = ref.mech, ref.kin
     by_pos: dict[str, list] = {}
     for f in report.figures:
-        if f.position in ref.labels and f.expected is not None:
+        if f.position is not None and f.position in ref.labels and f.expected is not None:
             by_pos.setdefault(f.position, []).append(f)
     rows = [lab for lab in (p.label for p in work.work.positions) if lab in by_pos and any(
         f.verdict == "wrong" for f in by_pos[lab])]
@@ -215,6 +216,7 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
             try:
                 vp = velocity_plan(mech, kin, k, Scale("Kl", kl, "m/mm"),
                                    Scale("Kv", kv or 0.01, "(m/s)/mm"))
+                plan: Any
                 plan, what = vp, "План скоростей"
                 if ka:
                     plan = acceleration_plan(mech, kin, k, Scale("Kl", kl, "m/mm"),

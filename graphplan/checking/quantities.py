@@ -289,7 +289,7 @@ class Vocabulary:
     def _add(self, q: Quantity, *aliases: str) -> None:
         for n in (q.name, *aliases):
             self.names.setdefault(fold(n), q)
-        self._lower = None
+        self._lower: dict[str, list[tuple[str, Quantity]]] | None = None
 
     def lookup(self, name: str) -> Quantity | None:
         """The quantity a name stands for (``None`` if unknown); ``X@4`` names X."""
@@ -298,11 +298,13 @@ class Vocabulary:
         if q is not None:
             return q
         folded = fold(base)
-        if getattr(self, "_lower", None) is None:  # an index, not a scan per unknown name
-            self._lower: dict[str, list[tuple[str, Quantity]]] | None = {}
+        lower = getattr(self, "_lower", None)
+        if lower is None:  # an index, not a scan per unknown name
+            lower = {}
             for k, v in self.names.items():
-                self._lower.setdefault(k.lower(), []).append((k, v))
-        cands = self._lower.get(folded.lower(), [])  # type: ignore[union-attr]
+                lower.setdefault(k.lower(), []).append((k, v))
+            self._lower = lower
+        cands = lower.get(folded.lower(), [])
         hits = {id(v): v for _k, v in cands}
         if len(hits) > 1:  # "as2": prefer the names whose first letter has the same case
             hits = {id(v): v for k, v in cands if k[:1] == folded[:1]}
@@ -326,14 +328,16 @@ class Vocabulary:
         best: list[tuple[str, ...] | None] = [None] * (n + 1)
         best[0] = ()
         for i in range(n):
-            if best[i] is None:
+            done = best[i]
+            if done is None:
                 continue
             for j in range(i + 1, n + 1):
                 piece = name[i:j]
                 if self.lookup(piece) is None:
                     continue
-                cand = (*best[i], piece)
-                if best[j] is None or len(cand) < len(best[j]):
+                cand = (*done, piece)
+                have = best[j]
+                if have is None or len(cand) < len(have):
                     best[j] = cand
         return best[n]
 

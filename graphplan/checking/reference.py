@@ -165,8 +165,8 @@ class Reference:
         kin, loads, forces = self._max
         model = model if model in loads else "rule"
         vals = [self._value(key, k, kin, loads, forces, model) for k in range(kin.n)]
-        vals = [abs(v) for v in vals if v is not None]
-        return max(vals) if vals else None
+        sizes = [abs(v) for v in vals if v is not None]
+        return max(sizes) if sizes else None
 
     def _value(self, key: Key, k: int, kin, loads, forces, model: str) -> float | None:
         mech = self.mech

@@ -147,8 +147,9 @@ def html_report(report: Report, overlays: list[str] | None = None,
     phis = dict(report.positions)
     for pos, figs in groups.items():
         head = w["general"] if pos is None else f"{w['position']} {pos}"
-        if phis.get(pos) is not None:
-            head += f", φ = {num(phis[pos], lang, 4)}°"
+        phi = phis.get(pos) if pos is not None else None
+        if phi is not None:
+            head += f", φ = {num(phi, lang, 4)}°"
         out.append(f"<h3>{_e(head)}</h3><table><tr>" + "".join(
             f"<th>{_e(w[k])}</th>" for k in ("quantity", "stated", "expected", "delta",
                                              "verdict", "kind", "where")) + "</tr>")

@@ -28,12 +28,13 @@ from __future__ import annotations
 
 import bisect
 import math
-import tomllib
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..files import decode_text
+from ..model import parse_toml
 from ..safe_text import control_character
 from .errors import StudentFileError
 from .quantities import ArmSpec
@@ -139,7 +140,8 @@ class _Read:
             raise self.fail(key, f"expected a table (got {_typename(v)})")
         return v
 
-    def keys(self, t: dict, key: str, allowed: set[str], required: set[str] = frozenset()):
+    def keys(self, t: dict, key: str, allowed: AbstractSet[str],
+             required: AbstractSet[str] = frozenset()):
         for k in t:
             if k not in allowed:
                 raise self.fail(f"{key}.{k}" if key else k,
@@ -285,16 +287,7 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
     """Validate a student file given as text (see :func:`load_student`)."""
     path = Path(path)
     source = str(path)
-    try:
-        data = tomllib.loads(text)
-    except (tomllib.TOMLDecodeError, ValueError) as exc:
-        from ..model.mistakes import toml_hint
-
-        msg = " ".join(str(exc).split())
-        raise StudentFileError(f"{source}: not valid TOML ({msg})"
-                               + toml_hint(text, str(exc))) from None
-    except RecursionError:
-        raise StudentFileError(f"{source}: not valid TOML (nested too deeply)") from None
+    data = parse_toml(text, source, StudentFileError)
     r = _Read(source, text)
     r.keys(data, "", {"work", "general", "arms", "tolerances", "positions"},
            {"work", "positions"})
@@ -324,20 +317,20 @@ def loads_student(text: str, path: str | Path = "<string>") -> StudentWork:
             raise r.fail("work.neighbours", f"expected an array of variant files (got "
                          f"{_typename(nb)})")
         for i, n in enumerate(nb):
-            p = path.parent / r.string(n, f"work.neighbours[{i}]")
-            if not p.is_file():
-                raise r.fail(f"work.neighbours[{i}]", f"variant file {str(p)!r} not found")
-            neighbours.append(p)
+            fp = path.parent / r.string(n, f"work.neighbours[{i}]")
+            if not fp.is_file():
+                raise r.fail(f"work.neighbours[{i}]", f"variant file {str(fp)!r} not found")
+            neighbours.append(fp)
     drawings = []
     if "drawing" in work:  # the student's sheets, checked with the calculation
         dw = work["drawing"]
         for i, d in enumerate(dw if isinstance(dw, list) else [dw]):
             key = f"work.drawing[{i}]" if isinstance(dw, list) else "work.drawing"
-            p = path.parent / r.string(d, key)
-            if not p.is_file():
-                raise r.fail(key, f"drawing {str(p)!r} not found (a .dxf, .svg or .pdf "
+            fp = path.parent / r.string(d, key)
+            if not fp.is_file():
+                raise r.fail(key, f"drawing {str(fp)!r} not found (a .dxf, .svg or .pdf "
                              "relative to the student file)")
-            drawings.append(p)
+            drawings.append(fp)
     tolerances = {}
     if "tolerances" in data:
         t = r.table(data["tolerances"], "tolerances")

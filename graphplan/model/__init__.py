@@ -13,7 +13,6 @@ from .loader import (
     STROKE_SETS,
     load,
     loads,
-    one_line,
 )
 from .mechanism import (
     DYAD_KIND_NUMBER,
@@ -32,6 +31,7 @@ from .mechanism import (
     Resistance,
 )
 from .structure import AssurGroup, Pair, Structure, analyse, pairs_of
+from .toml_text import one_line, parse_toml
 
 __all__ = [
     "DYAD_KINDS",
@@ -66,4 +66,5 @@ __all__ = [
     "loads",
     "one_line",
     "pairs_of",
+    "parse_toml",
 ]

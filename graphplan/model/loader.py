@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from collections.abc import Set as AbstractSet
 from pathlib import Path
 from typing import Any
@@ -34,6 +33,7 @@ from .mechanism import (
     Positions,
     Resistance,
 )
+from .toml_text import _CONTROL, one_line, parse_toml
 
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
 MAX_LENGTH_M = 1000.0
@@ -208,13 +208,7 @@ class _Reader:
         return self.number(value, path, positive=True, hi=lim) * unit
 
 
-_CONTROL = re.compile(r"[\x00-\x1f\x7f\u2028\u2029\x85]")
 _MARKUP = re.compile(r"[<>&|`\\]")  # markup in Markdown, HTML and the CSV tables
-
-
-def one_line(text: str) -> str:
-    """Escape control characters (a quoted TOML key may hold a newline) to keep one line."""
-    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
 
 
 def _typename(value: Any) -> str:
@@ -255,15 +249,7 @@ def load(path: str | Path) -> Mechanism:
 
 def loads(text: str, source: str = "<string>") -> Mechanism:
     """Validate a variant given as TOML text (see :func:`load`)."""
-    try:
-        data = tomllib.loads(text)
-    except (tomllib.TOMLDecodeError, ValueError) as exc:  # ValueError: e.g. a 5000-digit integer
-        from .mistakes import toml_hint
-
-        raise InputError(one_line(f"{source}: not valid TOML ({exc})"
-                                  + toml_hint(text, str(exc)))) from None
-    except RecursionError:
-        raise InputError(f"{source}: not valid TOML (nested too deeply)") from None
+    data = parse_toml(text, source)
     mech = _build(data, _Reader(source))
     _refuse_control_characters(data, source)
     return mech

@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
+from typing import Any
 
 from ..errors import InputError
 from .blocks import Arm, Block, Figure, Formula, Heading, Note, Paragraph, Table
@@ -26,7 +27,7 @@ from .markdown import decimal_comma, markdown_blocks
 
 PAGE_TEXT_WIDTH_MM = 170.0  #: the widest a figure may be on an A4 page inside the frame
 
-WORDS = {
+WORDS: dict[str, dict[str, Any]] = {  # a heading or line, or a list of lines
     "ru": {
         "intro": "Введение", "structure": "Структурный анализ механизма",
         "kinematics": "Кинематический анализ механизма",
@@ -256,7 +257,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     for k, label in enumerate(labels):
         gp = by_label.get(label)
         lines = [ln for ln in gp.lines if _is_force_line(ln)] if gp is not None else []
-        if not lines:
+        if gp is None or not lines:
             continue
         phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
         blocks.append(Heading(decimal_comma(w["position"].format(label=label, phi=phi), lang),

@@ -111,7 +111,7 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     judged.sort(key=lambda j: (ref.index(j.position) if j.position in ref.labels else 99,
                                order.get(j.found.kind, 4)))
     # one plan of each kind per position: a second one is reported and left out
-    seen: dict[tuple[str, str], Judged] = {}
+    seen: dict[tuple[str, str, tuple[str, ...]], Judged] = {}
     for j in judged:
         if j.position is None:
             continue
@@ -149,9 +149,9 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
         rep = checker.run()
         by_key = {j.key: j for j in js}
         for f in rep.findings:
-            j = next((jj for key, jj in by_key.items() if key and key in f.where), None)
-            if j is not None and any(g.verdict == "wrong" and g.primary for g in j.findings):
-                cause = j.findings[0]
+            hit = next((jj for key, jj in by_key.items() if key and key in f.where), None)
+            if hit is not None and any(g.verdict == "wrong" and g.primary for g in hit.findings):
+                cause = hit.findings[0]
                 f = replace(f, follows_from=(f.follows_from or (cause.quantity,)))
             findings.append(f)
         figures += list(rep.figures)

@@ -155,9 +155,9 @@ class _Reader:
                 pass
             else:
                 sub = dpath.Path(start)
-                if cmd.type == dpath.Command.CURVE3_TO:
+                if isinstance(cmd, dpath.Curve3To):
                     sub.curve3_to(end, cmd.ctrl)
-                else:
+                elif isinstance(cmd, dpath.Curve4To):
                     sub.curve4_to(end, cmd.ctrl1, cmd.ctrl2)
                 pts = [(v.x * k, v.y * k) for v in sub.flattening(0.05 / k, segments=4)]
                 self.col.polyline(pts, False, colour, width, layer, True)

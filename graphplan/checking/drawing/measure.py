@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -66,7 +67,7 @@ class Laid:
     ratio: float
     rms_scaled: float
     size: float
-    plan: object = None
+    plan: Any = None  # the exact plan (plans.Plan) the match was made against
     segments: list[Segmenting] = field(default_factory=list)
     unknown: list[str] = field(default_factory=list)
     pole_at: tuple[float, float] = (0.0, 0.0)  # the student's pole on the sheet, mm

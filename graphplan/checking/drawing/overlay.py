@@ -49,7 +49,7 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
                     f"fill='{_e(t.colour)}' font-family='sans-serif' "
                     f"transform='rotate({-t.angle:.1f} {t.x:.2f} {H - t.y:.2f})'>"
                     f"{_e(t.text)}</text>")
-    wrong_fig = {}
+    wrong_fig: dict[str, list] = {}
     for f in dc.report.findings:
         if f.verdict == "wrong":
             wrong_fig.setdefault(f.where, []).append(f)

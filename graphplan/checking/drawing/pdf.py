@@ -119,6 +119,7 @@ class _Paths:
         sub: list[list[tuple[float, float]]] = []
         closed: list[bool] = []
         cur = None
+        op: bytes | str
         for operands, op in cs.operations:
             self.ops += 1
             if self.ops > MAX_OPERATIONS:
@@ -127,7 +128,7 @@ class _Paths:
             op = op.decode("latin-1") if isinstance(op, bytes) else op
             try:
                 v = [float(x) for x in operands] if op in (
-                    "cm", "m", "l", "c", "v", "y", "re", "w") else None
+                    "cm", "m", "l", "c", "v", "y", "re", "w") else []
             except (TypeError, ValueError):
                 continue
             if op == "q":

@@ -168,7 +168,7 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
     plans = []
     for g, letters in by_group.items():
         poles = [L for L in letters if pole_kind(L.name)]
-        kinds = {pole_kind(L.name) for L in poles}
+        kinds = {k for L in poles if (k := pole_kind(L.name))}
         if len(kinds) != 1:
             continue
         kind = kinds.pop()

@@ -268,10 +268,12 @@ def _pdf(plans, path: Path) -> None:
             pole = "p" if kind == "velocity" else "π"
             word = "скоростей" if kind == "velocity" else "ускорений"
             top = max(float(v[1]) for v in pts.values()) + 14.0
-            ax.text(*(c + np.array([-30.0, top])), f"План {word}, пол. {lab}",
+            x, y = c + np.array([-30.0, top])
+            ax.text(x, y, f"План {word}, пол. {lab}",
                     fontsize=3.5 * pt / 0.72)
             unit = "(м/с)/мм" if kind == "velocity" else "(м/с²)/мм"
-            ax.text(*(c + np.array([-30.0, top - 7.0])),
+            x, y = c + np.array([-30.0, top - 7.0])
+            ax.text(x, y,
                     f"{sym} = {written:.4g} {unit}".replace(".", ","), fontsize=2.5 * pt / 0.72)
             for a, b in lines:
                 ax.plot([c[0] + a[0], c[0] + b[0]], [c[1] + a[1], c[1] + b[1]], "-",
@@ -291,7 +293,8 @@ def _pdf(plans, path: Path) -> None:
                 else:
                     ax.plot([A[0], B[0]], [A[1], B[1]], "-", color="k", lw=0.5 * pt)
             for text, xy, out in _letters(pts):
-                ax.text(*(c + xy + 1.5 * out), text, fontsize=3.0 * pt / 0.72,
+                lx, ly = c + xy + 1.5 * out
+                ax.text(lx, ly, text, fontsize=3.0 * pt / 0.72,
                         ha="left" if out[0] >= 0 else "right",
                         va="bottom" if out[1] >= 0 else "top")
             del pole
