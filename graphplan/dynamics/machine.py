@@ -31,11 +31,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..paper import Page
 from ..units import nice_ceil
-from .motor import DEFAULT_SERIES, MotorChoice, choose_motor, required_power
+from .motor import MotorChoice, choose_motor, required_power
 from .reduction import (
-    STEEL,
     DynamicModel,
     Flywheel,
     FlywheelSize,
@@ -47,6 +45,7 @@ from .reduction import (
     simulate,
     work_diagrams,
 )
+from .settings import DynamicsSettings
 
 DIAGRAM_LENGTH = 288.0  #: abscissa L of the work diagrams on an A1 sheet 3, mm (48 × 6)
 DIAGRAM_HEIGHT = 120.0  #: drawn span of Mс and of Aс with Aд on A1, mm (fixes KM, H, KA)
@@ -133,12 +132,23 @@ def _extent_with_intercepts(dT, I_var, omega: float, delta: float) -> float:
     return float(np.max(dT)) - min(float(np.min(dT)), b_min)
 
 
-def diagram_size(page: Page) -> dict[str, float]:
-    """L and the height of the work diagrams for the page: A1's in proportion to the
-    frame's width, L a multiple of 48 mm (whole-mm intervals for 24 and 48 of them)."""
-    k = min(1.0, page.frame.width / 816.0)
-    return {"length_mm": 48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k),
-            "height_mm": float(math.floor(DIAGRAM_HEIGHT * k))}
+@dataclass(frozen=True, slots=True)
+class DiagramSize:
+    """The abscissa L of the work diagrams and the drawn span of Mс and of Aс with Aд, mm."""
+
+    length_mm: float = DIAGRAM_LENGTH
+    height_mm: float = DIAGRAM_HEIGHT
+
+    @classmethod
+    def for_frame(cls, frame_width_mm: float) -> DiagramSize:
+        """A1's in proportion to a sheet's frame width (A1's frame: 816 mm), L a multiple
+        of 48 mm (whole-mm intervals for 24 and 48 of them)."""
+        k = min(1.0, frame_width_mm / 816.0)
+        return cls(48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k),
+                   float(math.floor(DIAGRAM_HEIGHT * k)))
+
+
+SHEET3_DIAGRAMS = DiagramSize.for_frame(816.0)  #: sheet 3 is A1 whatever sheets 1 and 2 are
 
 
 @dataclass(frozen=True, slots=True)
@@ -247,8 +257,13 @@ class MachineUnit:
         }
 
 
-def machine_unit(analysis: Solved, *, model: DynamicModel | None = None) -> MachineUnit:
+def machine_unit(analysis: Solved, *, model: DynamicModel | None = None,
+                 diagrams: DiagramSize = SHEET3_DIAGRAMS) -> MachineUnit:
     """Motor, gear ratio, flywheel and its check for the variant of ``analysis``.
+
+    ``analysis`` gives the mechanism, its kinematics and its ``[dynamics]`` settings
+    (:class:`~graphplan.dynamics.settings.DynamicsSettings`); ``diagrams`` the size of the
+    work diagrams the graphical integration is drawn at (sheet 3's, A1).
 
     Raises
     ------
@@ -260,31 +275,27 @@ def machine_unit(analysis: Solved, *, model: DynamicModel | None = None) -> Mach
         The resistance does no work, or the motion is impossible.
     """
     mech = analysis.mech
-    dyn = mech.settings.get("dynamics", {})
+    s = DynamicsSettings.of(mech)
     m = model or dynamic_model(analysis)
     if m.delta is None:
         raise InputError(f"{mech.source}: dynamics.delta is missing (the coefficient of speed "
                          "non-uniformity δ, e.g. delta = 0.1): sheet 3 needs it")
-    opts = dyn.get("flywheel", {})
-    intervals = int(dyn.get("intervals", 24 * round(m.period / (2 * math.pi))))
-    size = diagram_size(Page("A1"))  # sheet 3 is A1 whatever the format of sheets 1, 2
-    eta = float(dyn.get("efficiency", 1.0))
+    intervals = s.intervals_for(m.period)
+    size = {"length_mm": diagrams.length_mm, "height_mm": diagrams.height_mm}
+    eta = s.eta
     # Mд = −Aс(2π)/2π does not depend on the flywheel: the motor is chosen before it
     M_const = work_diagrams(m, intervals, **size).M_d
     choice = None
     if M_const > 0:  # a motor drives the machine
         power = required_power(M_const, m.omega1, eta)
         n1 = mech.crank.n1  # as the variant gives it (ω1·30/π picked up round-off)
-        choice = choose_motor(power, n1, series=str(dyn.get("motor_series", DEFAULT_SERIES)),
-                              sync_rpm=dyn.get("motor_speed"))
+        choice = choose_motor(power, n1, series=s.motor_series, sync_rpm=s.motor_speed)
     else:  # the loads drive it (an engine): its mean effective power, no motor
         power = -M_const * m.omega1 * eta
     I_rotor = 0.0 if choice is None else (choice.J_reduced or 0.0)
-    shaft = str(opts.get("shaft", "crank"))
-    shape = str(opts.get("shape", "rim"))
-    b_ratio = float(opts.get("b_ratio", 0.2))
-    h_ratio = float(opts.get("h_ratio", 0.1))
-    density = float(opts.get("density", STEEL))
+    fws = s.flywheel
+    shaft, shape = fws.shaft, fws.shape
+    b_ratio, h_ratio, density = fws.b_ratio, fws.h_ratio, fws.density
     size, KT, KJ = _sheet3_scales(m, intervals, size)
     fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
                   density=density, I_rotor=I_rotor, KI=KJ, KT=KT, **size)
@@ -296,4 +307,4 @@ def machine_unit(analysis: Solved, *, model: DynamicModel | None = None) -> Mach
     return MachineUnit(m, fw, choice, power, mounted, shaft if choice else "crank", sim, eta)
 
 
-__all__ = ["MachineUnit", "machine_unit"]
+__all__ = ["SHEET3_DIAGRAMS", "DiagramSize", "MachineUnit", "machine_unit"]

@@ -66,13 +66,10 @@ from ..forces import compute_loads, cycle_travel, load_breaks, load_power, solve
 from ..kinematics import Cycle, Kinematics, solve
 from ..model import Mechanism
 from ..units import nice_ceil
+from .settings import GRID, STEEL, DynamicsSettings
 
 Array = NDArray[np.float64]
 
-GRID = 720
-"""Default intervals of the uniform grid over one turn (every 0.5°)."""
-STEEL = 7800.0
-"""Density of steel, kg/m³."""
 MAX_POLE_MM = 80.0
 """Largest pole distance H of the work diagrams, mm (the pole stays near the drawing)."""
 RIM_SPEED_LIMIT = 40.0
@@ -207,7 +204,7 @@ def _first(mech: Mechanism, analysis: Solved) -> tuple[float, float]:
 
 
 def _grid(mech: Mechanism, grid: int | None) -> int:
-    g = mech.settings.get("dynamics", {}).get("grid", GRID) if grid is None else grid
+    g = DynamicsSettings.of(mech).grid if grid is None else grid
     if isinstance(g, bool) or not isinstance(g, int) or g < 12:
         raise InputError(f"{mech.source}: dynamics.grid must be an integer ≥ 12 (got {g!r})")
     return g
@@ -314,7 +311,7 @@ def reduced_inertia(mech: Mechanism, kin: Kinematics) -> ReducedInertia:
     ratio is constant); the dyads' links form ``I_var``.
     """
     w1 = abs(mech.crank.omega)
-    I_const = float(mech.settings.get("dynamics", {}).get("crank_inertia", 0.0))
+    I_const = DynamicsSettings.of(mech).crank_inertia
     I_var, dI = np.zeros(kin.n), np.zeros(kin.n)
     crank = np.zeros(kin.n)
     for ln in mech.moving_links:
@@ -342,12 +339,9 @@ def dynamic_model(analysis: Solved, grid: int | None = None, *,
     mech = analysis.mech
     mom = reduced_moment(analysis, grid, neglect_below=neglect_below)
     inert = reduced_inertia(mech, solve(mech, mom.phi))
-    dyn = mech.settings.get("dynamics", {})
-    delta = dyn.get("delta")
-    eff = dyn.get("efficiency")
+    s = DynamicsSettings.of(mech)
     return DynamicModel(mom, inert, reduced_inertia(mech, analysis.kin), mech.source,
-                        None if delta is None else float(delta),
-                        None if eff is None else float(eff))
+                        s.delta, s.efficiency)
 
 
 def _model(obj: Solved | DynamicModel) -> DynamicModel:
