@@ -559,8 +559,8 @@ class Diagnoser:
             each: dict[str, tuple[float, Fig]] = {}
             for g in sorted(mine, key=lambda x: x.q.kind == "segment"):
                 cname = next((n for n in names if n in g.key), None)
-                if cname in pairs and g.verdict == "wrong":
-                    each[cname] = (g.s / g.e, g)
+                if cname is not None and cname in pairs and g.verdict == "wrong" and g.e:
+                    each[cname] = (g.s / g.e, g)  # (g.e is set: mine holds no other)
             if not each:
                 return None
             spec = tuple(sorted((n, round(x, 6)) for n, (x, _g) in each.items()))
@@ -574,6 +574,7 @@ class Diagnoser:
                 g = min(mine, key=lambda x: x.q.kind != "segment")
                 if g.verdict != "wrong":
                     return None
+                assert g.e  # mine holds only figures with an expected value
                 factor = g.s / g.e
             else:
                 g, factor = None, 0.0

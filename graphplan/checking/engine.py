@@ -99,16 +99,17 @@ def read_member(text: str, vocab: Vocabulary) -> Member:
     except ExpressionError as exc:
         # a name with a dotted index, as written for the lever's moment (Мур.ж), alone
         # or in a formula ((Мур.ж − Мур)/Мур.ж∙100)
-        node = None
+        found: Node | None = None
         for t in (text, body):
             undotted = re.sub(r"(?<=[^\W\d_])\.(?=[^\W\d_])", "_", t)
             try:
-                node = parse(undotted, names=True, resolve=vocab.split)
+                found = parse(undotted, names=True, resolve=vocab.split)
                 break
             except ExpressionError:
                 continue
-        if node is None:
+        if found is None:
             return Member(text, "text", error=str(exc))
+        node = found
     if isinstance(node, Sym):
         return Member(text, "name", node)
     unknown = [n for n in _sym_names(node) if vocab.lookup(n) is None]

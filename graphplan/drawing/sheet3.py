@@ -225,8 +225,9 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     w = WORDS[lang]
     ru = lang == "ru"
     if not u.flywheel_needed:
-        return [Text((box.x0, box.y0 + 5.0), w["no_flywheel"], 5.0, layer="text",
-                     id="s3-fw-title")] + [
+        none: list[Item] = [Text((box.x0, box.y0 + 5.0), w["no_flywheel"], 5.0, layer="text",
+                                 id="s3-fw-title")]
+        return none + [
             Text((box.x0, box.y0 + CAPTION + 5.0 + i * LINE), line, RESULT_H, layer="text",
                  id=f"s3-fw-none-{i}")
             for i, line in enumerate(_no_flywheel_lines(u, lang))]

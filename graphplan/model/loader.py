@@ -309,7 +309,7 @@ def _refuse_translating_driver(data: dict, r: _Reader) -> None:
                      "pin], length, rpm or omega, direction)")
     crank = data.get("crank")
     if isinstance(crank, dict):
-        k = _translating({x: v for x, v in crank.items() if x not in SECTIONS["crank"]})
+        k = _translating({x: v for x, v in crank.items() if x not in (SECTIONS["crank"] or ())})
         if k is not None:
             raise r.fail(f"crank.{k}", f"the driving link must turn, not slide: {why}")
 

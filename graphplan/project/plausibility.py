@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 
@@ -126,7 +127,7 @@ def _cylinder_head_warnings(mech: Mechanism, cycle: Cycle):
         if not res.gas or res.over != "stroke" or not _head_at_the_crank(mech, cycle, n):
             continue
         tl = res.travel_link or mech.output.link
-        fix = " / ".join(_fixes(mech, n, lambda m, c, n=n: _head_at_the_crank(m, c, n)))
+        fix = " / ".join(_fixes(mech, n, partial(_head_at_the_crank, n=n)))
         yield (f"{mech.source}: loads[{n}]: the indicator diagram starts (s = 0, ВМТ) "
                f"where piston {tl} is nearest the crank, so the gas would push it toward "
                f"the crank's side and it moves against the stated working direction; "
@@ -185,8 +186,7 @@ def _driving_resistance_warnings(mech: Mechanism, cycle: Cycle):
         work, scale = load_work(mech, cycle, n)
         if work <= WORK_MARGIN * scale:
             continue
-        fix = " / ".join(_fixes(mech, n,
-                                lambda m, c, n=n: _drives_in_the_working_stroke(m, c, n)))
+        fix = " / ".join(_fixes(mech, n, partial(_drives_in_the_working_stroke, n=n)))
         label = res.name or ("Q" if res.kind == "force" else "Mс")
         yield (f"{mech.source}: loads[{n}] ({label}): given on the working stroke, it does "
                f"positive work over it ({work:+.4g} J a cycle), so the output moves the way "

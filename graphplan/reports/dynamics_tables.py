@@ -13,13 +13,14 @@ from __future__ import annotations
 import csv
 import io
 import math
+from typing import Any
 
 import numpy as np
 
 from ..dynamics import MachineUnit
 from ..units import fmt
 
-T = {
+T: dict[str, dict[str, Any]] = {
     "ru": {"title": "Динамический анализ машинного агрегата", "data": "Исходные данные",
            "pos": "Значения в положениях", "int": "Графическое интегрирование Mс (метод хорд)",
            "fly": "Маховик по диаграмме энергомасс (Виттенбауэр)", "motor": "Двигатель",

@@ -197,7 +197,7 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
         lines = [near[0][1]] + [k for c, k in near[1:6]
                                 if c <= near[0][0] + 2.0 * t.height + 2.0 and
                                 scene.group_of[k] == g]
-        drawn = []
+        drawn: list = []
         for k in lines:
             f = _drawn(scene, k)
             if all(f.segments != o.segments for o in drawn):
@@ -256,8 +256,8 @@ def _captions(scene: Scene, plans: list[FoundForcePlan]) -> None:
     first. A plan's position is its caption's, else the one a caption on the same line
     names (the row's «Схема, пол. 4» above the row's force plans)."""
     scales = stated_scales(scene.drawing.texts)
-    caps = [(t, caption_kind(t.text)) for t in scene.drawing.texts]
-    caps = [(t, k) for t, k in caps if k in ("force", "scheme", "lever") and len(t.text) >= 6]
+    caps = [(t, k) for t in scene.drawing.texts if (k := caption_kind(t.text))
+            in ("force", "scheme", "lever") and len(t.text) >= 6]
     pairs = []
     for i, p in enumerate(plans):
         x0, y0, x1, y1 = p.bbox
