@@ -490,12 +490,13 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
                               group=f"{ident}-seg" if name not in rename else f"{ident}-{name}")
                  for name, e in named.items()]
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    cap = text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
+                         layer="text", id=f"{ident}-caption")
     keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),
-                     (cell.x0, cell.y1)]).exterior.buffer(0.5)]
+                     (cell.x0, cell.y1)]).exterior.buffer(0.5), text_box(cap).buffer(0.5)]
     items += place_labels(reqs, obstacles, layer=layer, id_prefix=f"{ident}-t", merge_mm=1.0,
                           keep_out=keep)
-    items.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
-                                layer="text", id=f"{ident}-caption"))
+    items.append(cap)
     return items
 
 

@@ -24,6 +24,7 @@ and «<2 мм» rather than left as a dot with a name.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 from shapely.geometry import Point
@@ -32,6 +33,7 @@ from ..forces import reaction_name
 from ..plans import force_plans, zhukovsky_lever
 from ..project import (
     CAPTION,
+    GROUP_EQ_ROOM,
     group_links,
     sheet2_positions,
     sheet2_scales,
@@ -144,7 +146,10 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     crank = links == (mech.crank.link,)
     names = [p for ln in links for p in mech.points_of(ln) if p in kin.pos.points]
     pivot = kin.pos.points[mech.crank.pivot][k]
-    P = _figure_paper(kin, k, names, cell, kl, pivot)
+    eqs = _wrapped(moment_lines(fp, lang), cell.width - 4.0)
+    P = _figure_paper(kin, k, names, Rect(cell.x0, cell.y0, cell.x1,
+                                          cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM)), kl,
+                                          pivot)
     L = "force_plan"
     pre = f"{ident}-{fig}"
     own = {f"{ident}-link-{ln}" for ln in links}
@@ -231,13 +236,78 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
                               f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
                        f"{pre}-caption" if not crank else f"{ident}-caption")
     obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    eq_items = _bottom_lines(eqs, cell, f"{pre}-eq", below=_lowest(obstacles))
     # the letters stay inside the figure's cell, clear of its caption
     keep = [cell.polygon().buffer(300.0).difference(cell.polygon().buffer(-0.5)),
-            text_box(caption).buffer(0.5)]
+            text_box(caption).buffer(0.5), *(text_box(t).buffer(0.5) for t in eq_items)]
     items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{pre}-t", keep_out=keep,
                           merge_mm=0.5)
     items.append(caption)
+    items += eq_items
     return items
+
+
+EQ_H = 2.5  #: lettering of the equations written under the figures, mm
+EQ_PITCH = 4.25  #: their line pitch (GOST 2.304: at least 1.7 h), mm
+
+
+def _step_text(st, lang: str) -> str:
+    return st.text_ru if lang == "ru" else st.text
+
+
+def moment_lines(fp, lang: str) -> list[str]:
+    """The moment equations of a group (of the crank) as written under its figure: the
+    equation with the arms read on it, the numbers, the result («→ Rτ12 = 86,9 Н»)."""
+    out = []
+    for st in fp.steps:
+        if not st.equation.startswith("ΣM"):
+            continue
+        text = _step_text(st, lang).split(" (")[0].rstrip(".")
+        head, arrow, tail = text.partition(" → ")
+        text = head + arrow + tail.split("; ")[0]
+        text = re.sub(r"\(link ([^)]*)\)", r"(\1)", text).replace("_", "")
+        out.append(text)
+    return out
+
+
+def vector_line(fp) -> str:
+    """The vector equation a force plan draws, in the order of its polygon."""
+    chain = [q for q, _, _ in fp.polygons.get("group", ())]
+    return " + ".join(chain) + " = 0" if chain else ""
+
+
+def _wrapped(lines: list[str], width: float) -> list[str]:
+    """Lines broken at their spaces to ``width`` at EQ_H lettering."""
+    out = []
+    for line in lines:
+        cur = ""
+        for word in line.split(" "):
+            trial = f"{cur} {word}" if cur else word
+            if cur and text_width(Text((0, 0), trial, EQ_H, layer="text")) > width:
+                out.append(cur)
+                cur = "  " + word
+            else:
+                cur = trial
+        if cur.strip():
+            out.append(cur)
+    return out
+
+
+def _lowest(geoms) -> float:
+    """The lowest paper y (y down) of some geometries."""
+    return max((g.bounds[3] for g in geoms if not g.is_empty), default=-math.inf)
+
+
+def _bottom_lines(lines: list[str], cell: Rect, ident: str, below: float) -> list[Text]:
+    """``lines`` at the bottom of ``cell``, under the figure (whose lowest point is
+    ``below``): the last lines that fit there (the results last, so kept first)."""
+    room = len(lines) if below == -math.inf else int((cell.y1 - 1.0 - (below + 1.5)) // EQ_PITCH)
+    keep = lines[-room:] if room > 0 else []
+    out = []
+    for n, line in enumerate(keep):
+        y = cell.y1 - 1.5 - EQ_PITCH * (len(keep) - 1 - n)
+        out.append(Text((cell.x0 + 2.0, y), line, EQ_H, layer="text", id=f"{ident}{n + 1}"))
+    return out
 
 
 def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
@@ -338,8 +408,11 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
             cap = f"{title}, {_kp(fp.scale, lang)}"
             cell = cells[2 * i + 1]
             notes = _note_items(_short_notes(fp, lang), cell, f"{ident}-fp{i}", lang)
-            # the plan above its footnote
-            room = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - 4.25 * len(notes))
+            vec = _wrapped([vector_line(fp)], cell.width - 4.0)
+            under = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - EQ_PITCH * len(notes))
+            notes += _bottom_lines(vec, under, f"{ident}-fp{i}-eq", below=-math.inf)
+            # the plan above its equation and footnote
+            room = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - EQ_PITCH * len(notes))
             items += _plan_items(fp, room, (cap, cap.split(", ")[0].split()[-1] + ", "
                                             + cap.split(", ")[-1]), f"{ident}-fp{i}",
                                  {q: f"{q}*" for q in _short_notes(fp, lang)})

@@ -33,6 +33,7 @@ from .layout import (
 )
 from .plausibility import K_MARGIN, machine_warnings
 from .scales import (
+    GROUP_EQ_ROOM,
     GROUP_ROOM,
     PLAN_MARGIN,
     SHEET2_MAX_ROWS,
@@ -61,6 +62,7 @@ __all__ = [
     "DIAGRAM_MAX_H",
     "DIAGRAM_MIN",
     "GAP",
+    "GROUP_EQ_ROOM",
     "GROUP_ROOM",
     "K_MARGIN",
     "LABEL_ROOM",

@@ -344,6 +344,7 @@ class Sheet2Scales:
 
 
 GROUP_ROOM = 18.0  #: kept on each side of a group drawn on sheet 2 for its loads' arrows, mm
+GROUP_EQ_ROOM = 9.0  #: kept under a group for its moment equations (two lines), mm
 
 
 def group_links(mech: Mechanism) -> list[tuple[str, ...]]:
@@ -370,7 +371,7 @@ def _group_kl(mech: Mechanism, kin, positions, rows, crank: bool = False) -> Sca
                 continue
             w, h = np.ptp(pts, axis=0)
             rw = max(cell.width - 2 * GROUP_ROOM, 10.0)
-            rh = max(cell.height - CAPTION - 2 * GROUP_ROOM, 10.0)
+            rh = max(cell.height - CAPTION - 2 * GROUP_ROOM - GROUP_EQ_ROOM, 10.0)
             need = max(need, float(w) / rw, float(h) / rh)
     return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
 
