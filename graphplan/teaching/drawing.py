@@ -279,8 +279,12 @@ def scheme_svg(lesson: Lesson, number: int) -> str:
     lit = set(step.links)
     xs, ys = [], []
     for it in lesson.scheme:
-        x0, y0, x1, y1 = item_geometry(it).bounds if not isinstance(it, Text) else (
-            *it.pos, *it.pos)
+        if isinstance(it, Text):
+            x0, y0, x1, y1 = (*it.pos, *it.pos)
+        else:
+            g = item_geometry(it)
+            assert g is not None  # the scheme's strokes all have one
+            x0, y0, x1, y1 = g.bounds
         xs += [x0, x1]
         ys += [y0, y1]
     vb = (min(xs) - 3.0, min(ys) - 5.0, max(xs) - min(xs) + 8.0, max(ys) - min(ys) + 8.0)
