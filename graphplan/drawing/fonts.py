@@ -155,9 +155,14 @@ def bundled_font_file(family: str) -> Path | None:
     name = _MATPLOTLIB_FILES.get(family)
     if name is None:
         return None
-    import matplotlib
+    # matplotlib's data folder without importing matplotlib (a third of a second): its
+    # get_data_path() is the package's own mpl-data folder
+    import importlib.util
 
-    return Path(matplotlib.get_data_path()) / "fonts" / "ttf" / name
+    spec = importlib.util.find_spec("matplotlib")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    return Path(next(iter(spec.submodule_search_locations))) / "mpl-data" / "fonts" / "ttf" / name
 
 
 def font_dirs() -> tuple[Path, ...] | None:

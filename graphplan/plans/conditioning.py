@@ -388,8 +388,11 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
 
     last_plans: list = []  # the force plans of the last run
 
+    scales: dict = {}  # the probes build at the Kp of the unshifted plans (run first)
+
     def run_plans(reader):
-        plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra)
+        shared = {"scales": scales} if isinstance(reader, _Probe) else {}
+        plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra, **shared)
         last_plans[:] = plans
         out = {}
         for p in plans:

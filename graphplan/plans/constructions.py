@@ -178,7 +178,7 @@ def as_xy(v) -> tuple[float, float]:
 
 
 def unit_vector(v: Vec2) -> Vec2:
-    n = float(np.hypot(*v))
+    n = math.hypot(float(v[0]), float(v[1]))  # a 2-vector: math is 3× numpy's hypot
     return v / n if n > 0 else np.zeros(2)
 
 

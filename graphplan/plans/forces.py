@@ -39,7 +39,7 @@ RPP (A on the block i, D the reference point of the yoke j)
     ``R32 + F_i + R12 = 0`` gives R12 as the closing vector; block ``ΣM_A`` places R23,
     yoke ``ΣM_D`` places R43.
 
-Crank: ``ΣM_O = 0: Mур/Kl + Σ±F·h = 0`` with ``R21 = −R12`` at A, h21 from O (shapely),
+Crank: ``ΣM_O = 0: Mур/Kl + Σ±F·h = 0`` with ``R21 = −R12`` at A, h21 from O,
 so ``Mур = R21·h21·Kl`` with its sign (CCW positive); ``R41 = −(R21 + G1 + Pи1)`` closes
 its polygon.
 
@@ -191,13 +191,14 @@ class _F:
 
 
 def _arm(c: Vec2, x: Vec2, d: Vec2) -> float:
-    """Perpendicular distance (mm) from c to the line through x along d (shapely)."""
-    from shapely.geometry import LineString, Point  # a geometry library: only when drawing
+    """Perpendicular distance (mm) from c to the line through x along d: ``|(c − x) × u|``.
 
+    (A shapely distance to the line drawn past the foot of the perpendicular gave the
+    same to round-off at five times the cost; the error bounds rebuild every force plan
+    once per reading, so the arm is measured by the cross product.)
+    """
     u = unit_vector(d)
-    ext = float(np.hypot(*(c - x))) + 10.0  # the line drawn past the foot of the perpendicular
-    line = LineString([as_xy(x - ext * u), as_xy(x + ext * u)])
-    return float(Point(as_xy(c)).distance(line))
+    return abs(float((c[0] - x[0]) * u[1] - (c[1] - x[1]) * u[0]))
 
 
 def _letter(n: int) -> str:
@@ -601,7 +602,7 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
 
     ``Mур/Kl + Σ±F·h = 0`` about the pivot O, the forces being the groups' reactions on
     the crank (``R21 = −R12`` at A) and its own loads, the arms (``h21``) measured on the
-    position plan in mm with shapely; so ``Mур = −Σ±F·h·Kl`` (N·m, CCW positive) —
+    position plan in mm; so ``Mур = −Σ±F·h·Kl`` (N·m, CCW positive) —
     ``Mур = R21·h21·Kl`` with its sign when R21 is the only moment. The polygon
     ``R21 + G1 + Pи1 + R41 = 0`` is closed by the frame's reaction R41.
 
@@ -645,21 +646,29 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
 
 
 def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int, kl: Scale,
-                reader: Reader = EXACT, room_mm: float = ROOM_MM) -> tuple[ForcePlan, ...]:
+                reader: Reader = EXACT, room_mm: float = ROOM_MM, *,
+                scales: dict[int, Scale] | None = None) -> tuple[ForcePlan, ...]:
     """All force plans of position k: the groups from the last to the first, then the crank.
 
     Each group takes the reactions of the groups drawn before it as read off their plans
     (so a drafting reader's errors propagate), each plan with its own Kp of the series.
+    ``scales`` (plan number → Kp), when given, keeps the Kp of each plan: one chosen (by a
+    trial build) is stored there, one found there is used — the error bounds build the
+    plans again with one reading shifted, at the scales of the unshifted plans.
     """
     known: dict[str, PlanReaction] = {}
-    plans = []
+    plans: list[ForcePlan] = []
+    kps = scales if scales is not None else {}
     for gi in reversed(range(len(mech.dyads))):
-        p = force_plan(mech, kin, forces, loads, k, gi, kl=kl, reader=reader, known=known,
-                       room_mm=room_mm)
+        p = force_plan(mech, kin, forces, loads, k, gi, kps.get(len(plans)), kl=kl,
+                       reader=reader, known=known, room_mm=room_mm)
+        kps.setdefault(len(plans), p.scale)
         known.update(p.reactions)
         plans.append(p)
-    plans.append(crank_plan(mech, kin, forces, loads, k, kl=kl, reader=reader, known=known,
-                            room_mm=room_mm))
+    p = crank_plan(mech, kin, forces, loads, k, kps.get(len(plans)), kl=kl, reader=reader,
+                   known=known, room_mm=room_mm)
+    kps.setdefault(len(plans), p.scale)
+    plans.append(p)
     return tuple(plans)
 
 
