@@ -297,12 +297,21 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
 
     last: list = []  # the plans of the last run
 
+    unshifted: list = []  # the unshifted probe's velocity plan and its readings
+
     def run(reader):
         if isinstance(reader, _Probe):
-            rv, ra = reader, _Probe(precision)
-            # the shift counts over both plans: v readings first, then a readings
-            vp = velocity_plan(mech, kin, k, kl, kv, rv)
-            nv = len(rv.calls)
+            ra = _Probe(precision)
+            # the shift counts over both plans: v readings first, then a readings; a
+            # shifted acceleration reading leaves the velocity plan the unshifted one
+            if unshifted and 0 <= unshifted[1] <= reader.shift:
+                vp, nv = unshifted
+                reader.calls.extend(range(nv))
+            else:
+                vp = velocity_plan(mech, kin, k, kl, kv, reader)
+                nv = len(reader.calls)
+                if reader.shift < 0:
+                    unshifted[:] = (vp, nv)
             if reader.shift >= nv and reader.shift >= 0:
                 ra = _Probe(precision, reader.shift - nv, reader.h)
             ap = acceleration_plan(mech, kin, k, kl, ka, vp, ra)
@@ -389,10 +398,44 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
     last_plans: list = []  # the force plans of the last run
 
     scales: dict = {}  # the probes build at the Kp of the unshifted plans (run first)
+    base: list = []  # the unshifted probe's plans, each with the readings it took
+
+    def probe_plans(reader: _Probe) -> tuple:
+        """:func:`force_plans` (the same order: the groups from the last, then the crank)
+        for a probe: the plans before the one whose reading is shifted are the unshifted
+        plans themselves, not built again."""
+        from .forces import crank_plan, force_plan
+
+        known: dict = {}
+        plans: list = []
+        end = 0  # readings taken by the plans so far
+        steps = [*reversed(range(len(mech.dyads))), None]
+        for m, gi in enumerate(steps):
+            if base and reader.shift >= 0 and m < len(base) and reader.shift >= end + base[m][1]:
+                p, used = base[m]
+                reader.calls.extend(range(used))
+            else:
+                before = len(reader.calls)
+                if gi is None:
+                    p = crank_plan(mech, kin, forces, loads, k, scales.get(m), kl=kl,
+                                   reader=reader, known=known, **extra)
+                else:
+                    p = force_plan(mech, kin, forces, loads, k, gi, scales.get(m), kl=kl,
+                                   reader=reader, known=known, **extra)
+                scales.setdefault(m, p.scale)
+                used = len(reader.calls) - before
+                if reader.shift < 0:
+                    base.append((p, used))
+            end += used
+            known.update(p.reactions)
+            plans.append(p)
+        return tuple(plans)
 
     def run_plans(reader):
-        shared = {"scales": scales} if isinstance(reader, _Probe) else {}
-        plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra, **shared)
+        if isinstance(reader, _Probe):
+            plans = probe_plans(reader)
+        else:
+            plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra)
         last_plans[:] = plans
         out = {}
         for p in plans:
