@@ -32,6 +32,11 @@ from graphplan.files import bundled_example
 
 EXAMPLES = Path(bundled_example("press")).parent
 OWN = Path(__file__).parent / "data" / "crank_rocker.toml"
+# variants nobody here wrote the checker (or its generator) for: a two-stroke engine, an
+# in-line compressor, a twin engine over 720°, a crank-angle pump, a crusher with a force on
+# its jaw, a clockwise four-bar, a four-bar with a fixed-direction force, a shaper cutting
+# part of its stroke (tests/data/variants/)
+UNSEEN = sorted((Path(__file__).parent / "data" / "variants").glob("*.toml"))
 # every example with a drawn force analysis, and variants nobody wrote the checker for
 VARIANTS = [*sorted(p for p in EXAMPLES.glob("*.toml")), OWN]
 
@@ -57,3 +62,14 @@ def test_a_class_of_240_generated_students(seed):
     assert s.cause_accuracy >= 0.9, _report(s)
     assert s.clean_works >= 25 and s.planted >= 150
     assert s.redrawn >= 40  # faults the student drew plans on from, followed
+
+
+def test_a_class_over_variants_nobody_tuned_the_checker_for():
+    s = score(UNSEEN, 130, seed=0)
+    print("\n" + _report(s))
+    assert s.variants >= 8
+    assert s.false_alarms == 0, _report(s)
+    assert s.recall >= 0.95, _report(s)
+    assert s.root_attribution >= 0.95, _report(s)
+    assert s.cause_accuracy >= 0.9, _report(s)
+    assert s.clean_works >= 15 and s.redrawn >= 20

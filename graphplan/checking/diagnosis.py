@@ -387,10 +387,18 @@ class Diagnoser:
         stated = self.w.stated_scales(lw.position, lw.line)
         env: dict[str, float] = {}
         offs: list[str] = []
-        for name, _node in lw.matched.bindings:
+        for name, node in lw.matched.bindings:
             o = next((x for x in lw.occs if x.name == name and x.role == "operand"), None)
             if o is None:
-                return None, []
+                # a name the variant does not know (lO3A, a length measured on the
+                # drawing): the student's own number, taken as written
+                if lw.vocab.lookup(name) is not None:
+                    return None, []
+                try:
+                    env[name] = value(node)
+                except ExpressionError:
+                    return None, []
+                continue
             q = o.q
             if q.kind == "scale":
                 right = scales.get(q.name, o.value)
@@ -506,6 +514,9 @@ class Diagnoser:
                 ru = (f"слагаемое формулы взято с неверным знаком: если {show(term)} взять с "
                       f"обратным знаком, получится точное {self._u(f, f.e, 'ru')}{why[1]}.")
                 return Diag("sign", en, ru)
+        swapped = self._swapped_scale(f, lw, o, env)
+        if swapped is not None:
+            return swapped
         if F is None:
             return None
         en = (f"the formula does not hold: with graphplan's values it gives {self._u(f, F)}, "
@@ -513,6 +524,32 @@ class Diagnoser:
         ru = (f"формула неверна: с точными значениями она даёт {self._u(f, F, 'ru')}, а точное "
               f"значение {self._u(f, f.e, 'ru')}.")
         return Diag("formula", en, ru)
+
+    def _swapped_scale(self, f: Fig, lw: LineWork, o: Occurrence, env: dict[str, float]
+                       ) -> Diag | None:
+        """The formula names one plan's scale where another's belongs (``VS2 = ps2∙μa``):
+        with the right scale's value in its place it gives graphplan's value."""
+        stated = self.w.stated_scales(o.position, o.line)
+        for name, _node in lw.matched.bindings if lw.matched else ():
+            x = next((y for y in lw.occs if y.name == name and y.role == "operand"), None)
+            if x is None or x.q.kind != "scale":
+                continue
+            for other, k2 in stated.items():
+                if other == x.q.name or not k2 or other == "Kp":
+                    continue
+                try:
+                    F2 = self._canonical(lw, o, value(lw.template, {**env, name: k2}))
+                except ExpressionError:
+                    continue
+                if F2 is not None and self.near(f, F2, f.e):
+                    en = (f"{x.name} = {num(x.value)} is the scale {x.q.name}, but this value "
+                          f"is read at {other} = {num(k2)}: with it the line gives "
+                          f"graphplan's {self._u(f, f.e)} — a scale used in place of another.")
+                    ru = (f"{x.name} = {num(x.value, 'ru')} — масштаб {x.q.name}, а эту величину "
+                          f"читают в масштабе {other} = {num(k2, 'ru')}: с ним получается "
+                          f"точное {self._u(f, f.e, 'ru')} — перепутан масштаб.")
+                    return Diag("scale", en, ru)
+        return None
 
     @staticmethod
     def is_coriolis(f: Fig) -> bool:

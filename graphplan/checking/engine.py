@@ -113,7 +113,10 @@ def read_member(text: str, vocab: Vocabulary) -> Member:
     if isinstance(node, Sym):
         return Member(text, "name", node)
     unknown = [n for n in _sym_names(node) if vocab.lookup(n) is None]
-    if unknown and _has_number(node):  # "9,81e": numbers with a stray letter
+    # "9,81e": numbers with a stray letter (not a formula naming a length of its own,
+    # VA3^2/lO3A)
+    unknown = [n for n in unknown if re.search(r"[\d,.]\s*" + re.escape(n), text)]
+    if unknown and _has_number(node):
         return Member(text, "text", error=f"{unknown[0]!r} among the numbers is no known "
                       "name")
     return Member(text, "formula", node)
@@ -417,6 +420,13 @@ class Work:
             pos = name.split("@", 1)[1] if "@" in name else lw.position
             ref = self.reference_value(q, self.scope_of(q, pos), pos,
                                        lw.line if pos == lw.position else None)
+            if pos == lw.position and "@" not in name:
+                # the student's own value written before in this position names the
+                # number better than graphplan's (Мур and Мур.ж, both ≈ graphplan's Мур)
+                prior = next((o for o in self._occ_index.get((self.scope_of(q, pos), q.key), ())
+                              if o.role == "result" and o.line is not lw.line), None)
+                if prior is not None and prior.value:
+                    ref = prior.value
             if ref is None:
                 return 0.5
             if ref == 0 or v == 0:
