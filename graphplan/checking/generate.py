@@ -227,11 +227,9 @@ def generate(variant: str | Path, *, positions: tuple[str, ...] | None = None,
     measure = drafting
     dg = drafting.digits
     from ..plans import force_plans
-    from ..project import sheet_scales
-
     ref = ref or Reference.of(variant)
     mech, kin = ref.mech, ref.kin
-    sc = ref.analysis.sheet1 if kin is ref.analysis.kin else sheet_scales(mech, kin)
+    sc = ref.sheet1
     kl, kv, ka = sc.kl.per_mm, sc.kv.per_mm, sc.ka.per_mm
     cr = mech.crank
     piv, A = cr.pivot, cr.pin

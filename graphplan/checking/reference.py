@@ -35,7 +35,7 @@ import numpy as np
 from ..forces import Forces, Loads, compute_loads, reaction_name, solve_forces
 from ..kinematics import solve
 from ..model import Mechanism, load
-from ..project import analyze
+from ..project import Sheet1Scales, analyze, sheet_scales
 from .quantities import Key, Quantity, Vocabulary
 from .units import fold
 
@@ -83,6 +83,14 @@ class Reference:
         return cls(mech, extra)
 
     # --- the models -------------------------------------------------------------------
+
+    @cached_property
+    def sheet1(self) -> Sheet1Scales:
+        """Sheet 1's scales for these positions (the project's, or with the student's
+        extra positions), solved once per reference."""
+        if self.kin is self.analysis.kin:
+            return self.analysis.sheet1
+        return sheet_scales(self.mech, self.kin)
 
     @cached_property
     def loads(self) -> dict[str, Loads]:

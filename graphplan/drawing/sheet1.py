@@ -24,7 +24,6 @@ from ..project import (
     SLOT_OVER,
     STRUCTURE_LINE,
     Sheet1Scales,
-    sheet_scales,
     titled_table,
 )
 from .labels import LabelRequest, place_labels
@@ -633,7 +632,7 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
         A1 by default, or the variant's ``drawing.format``.
     """
     mech, kin = analysis.mech, analysis.kin
-    sc = analysis.sheet1 if page is None else sheet_scales(mech, kin, page)
+    sc = analysis.sheet1 if page is None else analysis.sheet1_on(page)
     w = WORDS[lang]
     items: list[Item] = []
     items += position_plan_items(analysis, sc, lang)

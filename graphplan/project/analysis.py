@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, TypeVar
 
 from ..kinematics import Cycle, Kinematics, analyse_cycle, sweep
 from ..model import Mechanism, Structure, analyse
+from ..paper import Page
 from ..plans import acceleration_plan, velocity_plan
 
 if TYPE_CHECKING:
@@ -78,6 +79,16 @@ class Project:
         from .scales import sheet_scales
 
         return sheet_scales(self.mech, self.kin, cycle=self.cycle, forces=self.forces)
+
+    def sheet1_on(self, page: Page) -> Sheet1Scales:
+        """Sheet 1's layout and scales on another format than the variant's (solved once
+        per format, like every stage)."""
+        from .scales import sheet_scales
+
+        if page.format == self.mech.settings.get("drawing", {}).get("format", "A1"):
+            return self.sheet1
+        return self.stage(("sheet1", page.format), lambda: sheet_scales(
+            self.mech, self.kin, page, cycle=self.cycle, forces=self.forces))
 
     @cached_property
     def sheet2(self) -> Sheet2Scales:

@@ -188,9 +188,6 @@ def acceleration_positions(mech: Mechanism, kin, cycle=None, forces=None) -> tup
     return default_positions(mech, kin, forces, cycle)
 
 
-_CACHE: list = []  # (mech, kin, format, scales) of the last calls: sheet_scales is pure
-
-
 def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
                  forces=None) -> Sheet1Scales:
     """Choose Kl, Kv, Ka for sheet 1: Kl from the usual series (1, 2, 2.5, 4, 5 × 10^k),
@@ -206,12 +203,7 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
     the force analysis (solved here when not given).
     """
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    for m, kn, fmt_, res in _CACHE:
-        if m is mech and kn is kin and fmt_ == page.format:
-            return res
-    res = _sheet_scales(mech, kin, page, cycle, forces)
-    _CACHE[:] = [*_CACHE[-3:], (mech, kin, page.format, res)]
-    return res
+    return _sheet_scales(mech, kin, page, cycle, forces)
 
 
 def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> Sheet1Scales:

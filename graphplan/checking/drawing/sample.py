@@ -23,7 +23,6 @@ from pathlib import Path
 import numpy as np
 
 from ...plans import acceleration_plan, velocity_plan
-from ...project import sheet_scales
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,8 +91,7 @@ def _without_normal(plan, normal: str):
 def _layout(ref, labels, plant: Plant | None):
     """Each plan to draw: (kind, caption label, scale symbol, scale written, points,
     segments, letters) in plan mm."""
-    sc = (ref.analysis.sheet1 if ref.kin is ref.analysis.kin
-          else sheet_scales(ref.mech, ref.kin))  # with the student's extra positions
+    sc = ref.sheet1  # with the student's extra positions
     kl, kv, ka = sc.kl, sc.kv, sc.ka
     out = []
     for lab in labels:
