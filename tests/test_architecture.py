@@ -221,3 +221,19 @@ def test_the_layer_test_sees_an_upward_import():
     hooks = [(m, t) for m, t, _, hook in ALL_EDGES if hook]
     assert ("graphplan.drawing.sheet", "graphplan.render.svg") in hooks  # Sheet._repr_svg_
     assert _cycles({("a", "b"), ("b", "c"), ("c", "a"), ("c", "d")}) == [["a", "b", "c"]]
+
+
+def test_the_readme_module_map_names_every_package_in_layer_order():
+    """README's module map is the tree of the package: a line for every stage package
+    (``model/`` …) and every base module, in the order of :data:`LAYERS`."""
+    text = (ROOT.parent / "README.md").read_text(encoding="utf-8")
+    tree = text.split("Module map", 1)[1].split("```", 2)[1]
+    heads = [ln.split()[0] for ln in tree.splitlines()
+             if ln.startswith("    ") and not ln.startswith("     ")]
+    packages = sorted(p.name for p in ROOT.iterdir()
+                      if p.is_dir() and (p / "__init__.py").is_file())
+    assert sorted(h.rstrip("/") for h in heads if h.endswith("/")) == packages
+    assert set(LAYERS[0]) <= set(tree.split("\n    ", 2)[1].split("\n")[0].split())
+    order = [h.rstrip("/") for h in heads if h.endswith("/")]
+    rank = {name: k for k, names in enumerate(LAYERS) for name in names}
+    assert [rank[p] for p in order] == sorted(rank[p] for p in order)
