@@ -91,6 +91,21 @@ def subscript_runs(text: str) -> list[tuple[str, bool]]:
     return [r for r in runs if r[0]]
 
 
+def finite(x: float, where: str) -> float:
+    """``x`` as a float, or ValueError: no NaN or infinity may reach ``where`` (a table, a
+    report)."""
+    x = float(x)
+    if not math.isfinite(x):
+        raise ValueError(f"a non-finite number ({x!r}) reached {where}")
+    return x
+
+
+def csv_number(x: float | None, where: str) -> str:
+    """A number for scripts (a CSV cell): repr precision, a dot decimal, never ``-0.0``;
+    empty for None."""
+    return "" if x is None else repr(finite(x, where) + 0.0)  # + 0.0: no "-0.0"
+
+
 def fmt(x: float, digits: int = 6) -> str:
     """A number as a student writes it: no trailing zeros, up to ``digits`` significant."""
     if x == 0:

@@ -33,8 +33,9 @@ Values are in the figure's unit: SI (N, N·m, m/s …) or mm for lengths on pape
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
+
+from ..units import finite
 
 VERDICTS = ("ok", "inaccurate", "wrong", "not compared")
 KINDS = ("arithmetic", "consistency", "unit", "scale", "sign", "other-variant", "lever-arm",
@@ -243,10 +244,7 @@ class Report:
 def _num(x: float | None) -> float | None:
     if x is None:
         return None
-    x = float(x)
-    if not math.isfinite(x):
-        raise ValueError(f"a non-finite number ({x!r}) reached a report")
-    return x + 0.0
+    return finite(x, "a report") + 0.0
 
 
 __all__ = ["KINDS", "VERDICTS", "FigureCheck", "Finding", "LineCheck", "Report"]

@@ -49,7 +49,7 @@ from ..plans import (
 )
 from ..project import Analysis
 from ..safe_text import markdown_cell
-from ..units import Scale, fmt
+from ..units import Scale, csv_number, finite, fmt
 
 TINY = 1e-9
 """Relative size below which a value is zero (solver noise) in the tables."""
@@ -290,10 +290,7 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
 
 
 def _finite(x: float) -> float:
-    x = float(x)
-    if not math.isfinite(x):
-        raise ValueError(f"a non-finite number ({x!r}) reached a force table")
-    return x
+    return finite(x, "a force table")
 
 
 def _m_bal(crank_plan) -> float:
@@ -550,7 +547,7 @@ conditioned."""
 
 
 def _r(x: float | None) -> str:
-    return "" if x is None else repr(_finite(x) + 0.0)
+    return csv_number(x, "a force table")
 
 
 def forces_csv(analysis: Analysis, precision: float | None = 0.5) -> str:

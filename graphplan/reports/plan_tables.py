@@ -40,7 +40,7 @@ from ..plans import (
 )
 from ..project import Analysis
 from ..safe_text import markdown_cell
-from ..units import Scale, fmt
+from ..units import Scale, csv_number, finite, fmt
 
 TINY_MM = 1e-6
 """A segment shorter than this (mm) is zero: solver noise, with no relative error."""
@@ -187,10 +187,7 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
 
 
 def _finite(x: float) -> float:
-    x = float(x)
-    if not math.isfinite(x):
-        raise ValueError(f"a non-finite number ({x!r}) reached a plan table")
-    return x
+    return finite(x, "a plan table")
 
 
 def _n(x: float, digits: int = 4) -> str:
@@ -536,8 +533,7 @@ CSV_COLUMNS = ("position", "phi_deg", "plan", "kind", "name", "mm", "scale", "sc
 
 
 def _r(x: float | None) -> str:
-    """A machine-friendly number: repr precision, dot decimal; empty for None."""
-    return "" if x is None else repr(_finite(x) + 0.0)  # + 0.0: no "-0.0"
+    return csv_number(x, "a plan table")
 
 
 def plans_csv(analysis: Analysis, lang: str = "en", precision: float = 0.0) -> str:
