@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from graphplan.dynamics import reduction as dyn
+from graphplan import dynamics as dyn
 from graphplan.errors import GraphplanError, InputError
 from graphplan.files import bundled_example
 from graphplan.forces import compute_loads, load_power

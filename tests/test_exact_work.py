@@ -19,7 +19,7 @@ import math
 import numpy as np
 import pytest
 
-from graphplan.dynamics import reduction as dyn
+from graphplan import dynamics as dyn
 from graphplan.model import loads
 from graphplan.project import analyze
 

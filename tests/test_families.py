@@ -22,8 +22,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from graphplan import dynamics as dyn
 from graphplan.cli import main
-from graphplan.dynamics import reduction as dyn
 from graphplan.forces import compute_loads, load_power, point_velocity, solve_forces
 from graphplan.kinematics import solve
 from graphplan.model import load, loads

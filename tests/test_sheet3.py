@@ -6,6 +6,7 @@ import re
 import numpy as np
 import pytest
 
+from graphplan import dynamics as dyn
 from graphplan.drawing import (
     Arc,
     Arrow,
@@ -20,7 +21,6 @@ from graphplan.drawing import (
     text_box,
 )
 from graphplan.dynamics import load_catalogue, machine_unit
-from graphplan.dynamics import reduction as dyn
 from graphplan.errors import InputError
 from graphplan.files import bundled_example
 from graphplan.model import load

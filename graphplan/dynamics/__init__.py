@@ -1,5 +1,6 @@
 """Dynamics of the machine unit: reduction to the crank, works, flywheel, simulation, motor."""
 
+from .flywheel import Flywheel, FlywheelSize, flywheel, flywheel_size
 from .machine import (
     DIAGRAM_HEIGHT,
     DIAGRAM_LENGTH,
@@ -30,30 +31,21 @@ from .motor import (
     series_names,
 )
 from .reduction import (
-    GRID,
     MAX_POLE_MM,
     RIM_SPEED_LIMIT,
-    STEEL,
     DynamicModel,
     DynamicsError,
-    Flywheel,
-    FlywheelSize,
     ReducedInertia,
     ReducedMoment,
-    Simulation,
-    WorkDiagrams,
     dynamic_model,
     exact_work,
-    flywheel,
-    flywheel_size,
     reduced_inertia,
     reduced_moment,
     resistance_breaks,
-    simulate,
-    steady_omega,
-    work_diagrams,
 )
-from .settings import DynamicsSettings, FlywheelSettings
+from .settings import GRID, STEEL, DynamicsSettings, FlywheelSettings
+from .simulation import Simulation, simulate, steady_omega
+from .work import WorkDiagrams, work_diagrams
 
 __all__ = [
     "DEFAULT_SERIES",

@@ -32,20 +32,12 @@ import numpy as np
 
 from ..errors import InputError
 from ..units import nice_ceil
+from .flywheel import Flywheel, FlywheelSize, flywheel, flywheel_size
 from .motor import MotorChoice, choose_motor, required_power
-from .reduction import (
-    DynamicModel,
-    Flywheel,
-    FlywheelSize,
-    Simulation,
-    Solved,
-    dynamic_model,
-    flywheel,
-    flywheel_size,
-    simulate,
-    work_diagrams,
-)
+from .reduction import DynamicModel, Solved, dynamic_model
 from .settings import DynamicsSettings
+from .simulation import Simulation, simulate
+from .work import work_diagrams
 
 DIAGRAM_LENGTH = 288.0  #: abscissa L of the work diagrams on an A1 sheet 3, mm (48 × 6)
 DIAGRAM_HEIGHT = 120.0  #: drawn span of Mс and of Aс with Aд on A1, mm (fixes KM, H, KA)

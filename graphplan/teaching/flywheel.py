@@ -1,5 +1,5 @@
 """The lesson of the flywheel: work diagrams by graphical integration, then the
-energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics.reduction`).
+energy–mass (Wittenbauer) diagram and its two tangents (:mod:`graphplan.dynamics.flywheel`).
 
 The lesson draws the machine unit of sheet 3 (:func:`graphplan.dynamics.machine.machine_unit`,
 the project's ``analysis.unit``): the same L, Kφ, KM, H, KA, KT, KJ, the same motor (its
@@ -64,7 +64,7 @@ def flywheel_lesson(analysis) -> Lesson:
     Raises
     ------
     InputError, DynamicsError, LayoutError
-        As :func:`graphplan.dynamics.reduction.flywheel` (no δ in the variant, no work of the
+        As :func:`graphplan.dynamics.flywheel.flywheel` (no δ in the variant, no work of the
         resistance, a pole distance under 1 mm).
     """
     mech = analysis.mech
