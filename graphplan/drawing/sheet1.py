@@ -36,6 +36,7 @@ from .sheet import (
     Arc,
     Arrow,
     Circle,
+    Group,
     Hatch,
     Item,
     Line,
@@ -137,6 +138,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     centres = {lp.centre for lp in mech.links.values() if lp.centre}
     styles = _position_styles(analysis)
     paths = sc.paths
+    assert paths is not None  # sheet_scales keeps the trajectories it measured
     out_point = output_coordinate(mech, kin.pos)[3]
 
     # trajectories of the centres of mass (closed curves) and of the crank pin
@@ -318,8 +320,8 @@ def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
     du = np.array([u[0], -u[1]])  # paper direction (y flipped)
     dn = np.array([-du[1], du[0]])
     hl, hw = SLIDER[0] / 2, SLIDER[1] / 2
-    return tuple(tuple(map(float, c + sx * hl * du + sy * hw * dn))
-                 for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1)))
+    corners = [c + sx * hl * du + sy * hw * dn for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    return tuple((float(q[0]), float(q[1])) for q in corners)
 
 
 
@@ -488,7 +490,8 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
                               rename.get(name, _label(name)), 3.5,
                               group=f"{ident}-seg" if name not in rename else f"{ident}-{name}")
                  for name, e in named.items()]
-    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    obstacles = [g for it in items
+                 if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     cap = text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
                          layer="text", id=f"{ident}-caption")
     keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),

@@ -47,6 +47,7 @@ from .sheet import (
     THIN,
     Arrow,
     Circle,
+    Group,
     Item,
     Line,
     Page,
@@ -173,8 +174,8 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     if crank:
         joints = {mech.crank.pivot, mech.crank.pin}
     else:
-        d = next(d for d in mech.dyads if set(d.links) == set(links))
-        joints = {p for p, kind in zip(_pair_points(d), d.kind, strict=False)
+        dyad = next(dy for dy in mech.dyads if set(dy.links) == set(links))
+        joints = {p for p, kind in zip(_pair_points(dyad), dyad.kind, strict=False)
                   if p and kind == "R"}
     for j in sorted(joints):
         items.append(Circle(P(kin.pos.points[j][k]), JOINT_R, WHITE_FILL, layer=L,
@@ -222,10 +223,10 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     for n, (name, ln, m) in enumerate(couples):
         c_name = centres.get(ln)
         pts = [kin.pos.points[p][k] for p in mech.points_of(ln) if p in kin.pos.points]
-        c = P(kin.pos.points[c_name][k] if c_name in kin.pos.points else np.mean(pts, axis=0))
+        mc = P(kin.pos.points[c_name][k] if c_name in kin.pos.points else np.mean(pts, axis=0))
         a0 = 30.0 + 90.0 * n
-        items += turning_arrow(c, 7.0, a0, 120.0, m >= 0, 30.0, layer=L, ident=f"{pre}-m{n}")
-        reqs.append(LabelRequest(arc_point(c, 9.0, a0 + 60.0), name, 3.5, group=pre))
+        items += turning_arrow(mc, 7.0, a0, 120.0, m >= 0, 30.0, layer=L, ident=f"{pre}-m{n}")
+        reqs.append(LabelRequest(arc_point(mc, 9.0, a0 + 60.0), name, 3.5, group=pre))
     if crank:
         items += _crank_marks(analysis, k, P, pre, ident, reqs)
     w = WORDS[lang]
@@ -235,7 +236,8 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     caption = _caption(cell, (f"{what}, {pos}, {scale}", f"{what.split()[0]}, {pos}, {scale}",
                               f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
                        f"{pre}-caption" if not crank else f"{ident}-caption")
-    obstacles = [g for it in items if (g := item_geometry(it)) is not None]
+    obstacles = [g for it in items
+                 if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     eq_items = _bottom_lines(eqs, cell, f"{pre}-eq", below=_lowest(obstacles))
     # the letters stay inside the figure's cell, clear of its caption
     keep = [cell.polygon().buffer(300.0).difference(cell.polygon().buffer(-0.5)),
@@ -373,7 +375,7 @@ def _note_items(notes: dict[str, str], cell: Rect, ident: str, lang: str) -> lis
             lines[-1] = trial
         else:
             lines.append(trial if not lines else p)
-    out = []
+    out: list[Item] = []
     for n, line in enumerate(reversed(lines)):
         out.append(text_at_centre(((cell.x0 + cell.x1) / 2, cell.y1 - 2.0 - 4.25 * n), line, 2.5,
                                   layer="text", id=f"{ident}-short{len(lines) - n}"))
@@ -388,6 +390,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     own_page = page.format != mech.settings.get("drawing", {}).get("format", "A1")
     s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page) if own_page else analysis.sheet2
     kl = s2.kl
+    assert kl is not None and s2.kl_crank is not None and s2.layout is not None  # all set
     w = WORDS[lang]
     n_groups = len(mech.dyads)
     items: list[Item] = []
@@ -427,6 +430,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
                              f"{ident}-lever", {})
         items += ill_mark_items(lever, cells[-1], f"{ident}-lever", lang)
         crank = plans[-1]
+        assert crank.M_bal is not None  # the crank's plan has Mур
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
         summary.append([kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.1f}",
                         fmt(plans[0].scale.per_mm)]
@@ -621,10 +625,9 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
 
     from .figures import MM, _font, spaced_labels
 
-    rc = {"axes.unicode_minus": False}
     title = WORDS[lang]["curve"]
     unit = "Н·м" if lang == "ru" else "N·m"
-    with matplotlib.rc_context(rc):
+    with matplotlib.rc_context({"axes.unicode_minus": False}):
         fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
         ax = fig.add_axes((22 / width_mm, 14 / height_mm, 1 - 28 / width_mm,
                            1 - 24 / height_mm))
