@@ -529,6 +529,7 @@ class Diagnoser:
                        ) -> Diag | None:
         """The formula names one plan's scale where another's belongs (``VS2 = ps2∙μa``):
         with the right scale's value in its place it gives graphplan's value."""
+        assert lw.template is not None  # _formula asks only about a line with a formula
         stated = self.w.stated_scales(o.position, o.line)
         for name, _node in lw.matched.bindings if lw.matched else ():
             x = next((y for y in lw.occs if y.name == name and y.role == "operand"), None)
