@@ -20,9 +20,6 @@ from graphplan.drawing import (
     kinematics_sheet,
     kinetostatics_sheet,
 )
-from graphplan.files import bundled_example
-from graphplan.model import load
-from graphplan.project import analyze
 from graphplan.render.svg import render_svg
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
@@ -31,17 +28,21 @@ DIAGRAMS = {"sheet1": "kin-diagrams", "sheet2": "s2-moment-curve", "sheet3": "s3
 SVG = "{http://www.w3.org/2000/svg}"
 SHEAR = re.compile(r"matrix\(1 0 -0\.26795 1 [-\d.]+ 0\)")  # tan 15° = 0.26795
 NUMBER = re.compile(r"\d\.\d")
-_cache: dict = {}
 
 
-def sheets(name, lang="ru"):
-    key = (name, lang)
-    if key not in _cache:
-        a = analyze(load(bundled_example(name)))
-        _cache[key] = {"sheet1": kinematics_sheet(a, lang=lang),
-                       "sheet2": kinetostatics_sheet(a, lang=lang),
-                       "sheet3": dynamics_sheet(a, lang=lang)}
-    return _cache[key]
+@pytest.fixture
+def sheets(solved):
+    """``sheets(name, lang)`` → the three sheets of an example's project (the session's,
+    tests/conftest.py), drawn once per language."""
+
+    def get(name, lang="ru"):
+        a = solved(name)
+        return a.stage(("sheets 1-3", lang), lambda: {
+            "sheet1": kinematics_sheet(a, lang=lang),
+            "sheet2": kinetostatics_sheet(a, lang=lang),
+            "sheet3": dynamics_sheet(a, lang=lang)})
+
+    return get
 
 
 def _group(sheet, ident):
@@ -58,7 +59,7 @@ def iter_leaves_groups(items):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_diagrams_are_lettered_like_the_sheet(name):
+def test_diagrams_are_lettered_like_the_sheet(sheets, name):
     """Every matplotlib diagram is the sheet's items: its letters are slanted texts of GOST
     sizes in a font that draws every character (osifont, or the slanted fallback), on a
     Russian sheet with the decimal comma; no picture is pasted in."""
@@ -73,7 +74,7 @@ def test_diagrams_are_lettered_like_the_sheet(name):
 
 
 @pytest.mark.parametrize("name", ["press", "shaper"])
-def test_diagram_text_is_text_in_the_svg(name):
+def test_diagram_text_is_text_in_the_svg(sheets, name):
     for key, sheet in sheets(name).items():
         svg = render_svg(sheet)
         root = ET.fromstring(svg.encode("utf-8"))
@@ -98,7 +99,7 @@ def test_russian_letters_osifont_cannot_draw_are_slanted_too():
     assert el.get("font-family").startswith("'DejaVu Sans'")
 
 
-def test_diagram_text_is_text_in_the_dxf():
+def test_diagram_text_is_text_in_the_dxf(sheets):
     ezdxf = pytest.importorskip("ezdxf")
     from graphplan.render import dxf_bytes
 
@@ -115,7 +116,7 @@ def test_diagram_text_is_text_in_the_dxf():
                 e.dxf.oblique == pytest.approx(15.0)
 
 
-def test_decimal_comma_on_russian_point_on_english_sheets():
+def test_decimal_comma_on_russian_point_on_english_sheets(sheets):
     assert decimal_comma("Kφ = 0.02182 рад/мм, 1:2.5, pos. 10") == \
         "Kφ = 0,02182 рад/мм, 1:2,5, pos. 10"
     ru = [t.text for t in iter_leaves(sheets("shaper")["sheet3"].items)

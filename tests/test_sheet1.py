@@ -29,25 +29,29 @@ from graphplan.render.svg import render_svg
 SVG = "{http://www.w3.org/2000/svg}"
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]
-_cache: dict = {}
 
 
-def built(name):
-    if name not in _cache:
-        a = analyze(load(bundled_example(name)))
-        sheet = kinematics_sheet(a)
-        _cache[name] = (a, sheet, render_svg(sheet))
-    return _cache[name]
+@pytest.fixture
+def built(solved):
+    """``built(name)`` → (project, sheet 1, its SVG) of an example, from the session's
+    solved projects (tests/conftest.py), drawn once."""
+
+    def get(name):
+        a = solved(name)
+        sheet = a.stage(("sheet 1", "ru"), lambda: kinematics_sheet(a))
+        return a, sheet, a.stage(("sheet 1 svg", "ru"), lambda: render_svg(sheet))
+
+    return get
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_layout_has_no_problems(name):
+def test_layout_has_no_problems(built, name):
     _, sheet, _ = built(name)
     assert check_layout(sheet) == []
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_plans_stay_in_their_cells_and_cells_do_not_overlap(name):
+def test_plans_stay_in_their_cells_and_cells_do_not_overlap(built, name):
     a, sheet, _ = built(name)
     sc = sheet_scales(a.mech, a.kin)
     cells = sc.layout.cells
@@ -83,7 +87,7 @@ def _arrow_length(root, ident):
 
 
 @pytest.mark.parametrize("name", ["press", "shaper", "shaper_prp", "scotch_yoke", "fourbar"])
-def test_vectors_read_off_the_svg_give_the_exact_kinematics(name):
+def test_vectors_read_off_the_svg_give_the_exact_kinematics(built, name):
     """pb (mm, measured between the SVG's coordinates) · Kv = |v_B| of the solver.
 
     The SVG rounds coordinates to 0.01 mm, so a length is good to about 0.015 mm:
@@ -115,7 +119,7 @@ def test_vectors_read_off_the_svg_give_the_exact_kinematics(name):
     assert checked >= kin.n + len(sc.acc_plans)
 
 
-def test_svg_is_a1_in_millimetres_with_the_title_block_in_place():
+def test_svg_is_a1_in_millimetres_with_the_title_block_in_place(built):
     _, _sheet, svg = built("press")
     root = ET.fromstring(svg)
     assert root.get("width") == "841mm" and root.get("height") == "594mm"
@@ -131,7 +135,7 @@ def test_svg_is_a1_in_millimetres_with_the_title_block_in_place():
     assert "Кривошипный пресс" in " ".join(v for k, v in texts.items() if k.startswith("tb-title"))
 
 
-def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed():
+def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed(built):
     a, sheet, _svg = built("press")
     texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
     # Kl is the seed's: the crank, 0.08 m, drawn 80 mm
@@ -149,7 +153,7 @@ def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed():
         assert any(lab in s.split(", ") for s in pp), lab
 
 
-def test_first_position_is_drawn_in_main_line_and_dead_centres_dash_dot_dot():
+def test_first_position_is_drawn_in_main_line_and_dead_centres_dash_dot_dot(built):
     a, sheet, _ = built("press")
     leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
     assert leaves["pp-0-link-1"].style.width == 0.7  # position 1, main line S = 0.7
@@ -160,7 +164,7 @@ def test_first_position_is_drawn_in_main_line_and_dead_centres_dash_dot_dot():
     assert leaves[f"pp-{k3}-link-1"].style.width == 0.25
 
 
-def test_plan_of_positions_is_at_scale():
+def test_plan_of_positions_is_at_scale(built):
     """The crank drawn on the sheet is l_OA/Kl = 0.08/0.001 = 80 mm long in every position."""
     a, sheet, _ = built("press")
     leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
@@ -169,7 +173,7 @@ def test_plan_of_positions_is_at_scale():
         assert math.dist(ln.p0, ln.p1) == pytest.approx(80.0, abs=1e-9)
 
 
-def test_diagrams_are_the_sheets_own_vector_items():
+def test_diagrams_are_the_sheets_own_vector_items(built):
     """The kinematic diagrams are polylines and slanted texts of the sheet (issue 18), not a
     picture pasted in: no nested SVG, no glyph outlines, nothing raster."""
     _, _, svg = built("press")
@@ -182,7 +186,7 @@ def test_diagrams_are_the_sheets_own_vector_items():
     assert len(ids) == len(set(ids))
 
 
-def test_english_lettering():
+def test_english_lettering(built):
     a, _, _ = built("fourbar")
     sheet = kinematics_sheet(a, lang="en", diagrams=False)
     texts = [t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)]
@@ -229,7 +233,7 @@ def test_unknown_position_to_draw_is_a_one_line_error(tmp_path):
         kinematics_sheet(a, diagrams=False)
 
 
-def test_a_plan_of_positions_too_large_for_the_format_is_a_layout_error():
+def test_a_plan_of_positions_too_large_for_the_format_is_a_layout_error(built):
     from graphplan.drawing import Page
     from graphplan.errors import LayoutError
 
@@ -239,7 +243,7 @@ def test_a_plan_of_positions_too_large_for_the_format_is_a_layout_error():
 
 
 @pytest.mark.parametrize("name, ccw", [("press", True), ("offset_slider", False)])
-def test_sense_of_rotation_is_drawn_at_the_crank(name, ccw):
+def test_sense_of_rotation_is_drawn_at_the_crank(built, name, ccw):
     """The arrowhead of ω1 points counter-clockwise for a ccw crank, clockwise for cw."""
     _, sheet, _ = built(name)
     leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}

@@ -29,17 +29,21 @@ from graphplan.reports import dynamics_markdown, position_rows
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]
-_cache: dict = {}
 
 
-def unit(name):
-    if name not in _cache:
-        a = analyze(load(bundled_example(name)))
-        _cache[name] = (a, machine_unit(a))
-    return _cache[name]
+@pytest.fixture
+def unit(solved):
+    """``unit(name)`` → (project, its machine unit) of an example, from the session's
+    solved projects (tests/conftest.py)."""
+
+    def get(name):
+        a = solved(name)
+        return a, a.unit
+
+    return get
 
 
-def test_json_keys_are_the_promised_ones_in_si():
+def test_json_keys_are_the_promised_ones_in_si(unit):
     a, u = unit("press")
     d = a.to_json()["dynamics"]
     for key in ("delta_target", "delta_simulated", "I_flywheel", "I_flywheel_approx", "dT_max",
@@ -55,7 +59,7 @@ def test_json_keys_are_the_promised_ones_in_si():
     assert d["motor"]["power_W"] >= d["power_W"]
 
 
-def test_press_flywheel_meets_its_delta_with_the_rotor_counted():
+def test_press_flywheel_meets_its_delta_with_the_rotor_counted(unit):
     _, u = unit("press")
     mo = u.motor.motor
     assert mo.inertia_kg_m2 is not None  # the default catalogue gives J_рот
@@ -77,7 +81,7 @@ def _delta(m, I_total):
 
 
 @pytest.mark.parametrize("name", ["press", "shaper", "fourbar"])
-def test_wittenbauer_against_the_brute_force_flywheel(name):
+def test_wittenbauer_against_the_brute_force_flywheel(unit, name):
     """The smallest Iм whose simulated δ does not exceed the target (bisection on the
     steady motion), against Wittenbauer's Iм: within 2 %."""
     _, u = unit(name)
@@ -95,7 +99,7 @@ def test_wittenbauer_against_the_brute_force_flywheel(name):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_sheet_has_no_layout_problems_and_its_diagrams_are_items(name):
+def test_sheet_has_no_layout_problems_and_its_diagrams_are_items(unit, name):
     a, u = unit(name)
     sheet = dynamics_sheet(a, unit=u)
     assert check_layout(sheet) == []
@@ -104,7 +108,7 @@ def test_sheet_has_no_layout_problems_and_its_diagrams_are_items(name):
     assert any(isinstance(t, Text) and t.text.startswith("ω") for t in omega[0].items)
 
 
-def test_sheet_texts_are_the_calculation():
+def test_sheet_texts_are_the_calculation(unit):
     a, u = unit("press")
     sheet = dynamics_sheet(a, unit=u)
     texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
@@ -116,7 +120,7 @@ def test_sheet_texts_are_the_calculation():
         assert [texts[f"s3-table-r{i}c{j}"] for j in range(1, len(row) + 1)] == row
 
 
-def test_round_off_is_written_as_zero():
+def test_round_off_is_written_as_zero(unit):
     """The shaper's crank has no inertia of its own and the dyads stand still at the dead
     centres 0 and 0': Iп there is round-off (~1e-31 kg·m²), written 0 as in the moments."""
     _, u = unit("shaper")
@@ -125,7 +129,7 @@ def test_round_off_is_written_as_zero():
     assert all("·10" not in c for r in rows.values() for c in r)  # fmt writes 1.9·10^-31
 
 
-def test_report_arithmetic_can_be_followed():
+def test_report_arithmetic_can_be_followed(unit):
     """Every 'a·b·c = d' of the scales in the report multiplies out."""
     _, u = unit("press")
     md = dynamics_markdown(u, "en")
@@ -140,7 +144,7 @@ def test_report_arithmetic_can_be_followed():
     assert "Delphi" in md and "nan" not in md.lower() and "inf" not in md
 
 
-def test_nodes_at_the_breaks_of_the_resistance():
+def test_nodes_at_the_breaks_of_the_resistance(unit):
     """The press's Q ramps from travel 0.88513 to 0.98938 of the stroke: both kinks are
     nodes of the graphical integration."""
     _, u = unit("press")
@@ -170,7 +174,7 @@ def test_bad_dynamics_settings_are_one_line_errors(tmp_path, text, key, expected
     assert "\n" not in msg and "v.toml" in msg and key in msg and expected in msg
 
 
-def test_motor_shaft_flywheel_is_u_squared_lighter(tmp_path):
+def test_motor_shaft_flywheel_is_u_squared_lighter(unit, tmp_path):
     src = bundled_example("press").read_text(encoding="utf-8").replace(
         "[dynamics]\n", '[dynamics]\nflywheel = { shaft = "motor", shape = "disc" }\n')
     p = tmp_path / "v.toml"
@@ -190,7 +194,7 @@ def _texts(sheet):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_tangents_stand_at_tens_of_degrees(name):
+def test_tangents_stand_at_tens_of_degrees(unit, name):
     """KT and KJ are chosen for ψ (tg ψ = KJ·ω²(1 ± δ)/(2KT)): 20° ≤ ψmin < ψmax ≤ 70°, not
     the 0.2–4° of fixed scales; the angles drawn as arcs are those ψ; the energy–mass
     diagram is tall (kl ≥ 100 mm)."""
@@ -238,13 +242,13 @@ def _empty_share(sheet) -> float:
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_sheet_is_filled(name):
+def test_sheet_is_filled(unit, name):
     a, u = unit(name)
     assert _empty_share(dynamics_sheet(a, unit=u)) <= 0.40
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_no_letter_over_a_line_or_a_letter_anywhere(name):
+def test_no_letter_over_a_line_or_a_letter_anywhere(unit, name):
     """Stricter than check_layout: a diagram's own letters may not cross its own lines
     either (position numbers, k, l, ψ, the scales), nor each other."""
     import shapely
@@ -272,7 +276,7 @@ def test_no_letter_over_a_line_or_a_letter_anywhere(name):
     assert bad == []
 
 
-def test_notation_is_the_methods():
+def test_notation_is_the_methods(unit):
     """One notation, J for moments of inertia; Pс is the resistance's power and the motor's
     required power is Pдв.тр = Pс/η; Jм subtracts Jрот·u², as computed."""
     a, u = unit("press")
@@ -295,7 +299,7 @@ def fmt_ru(x, digits):
     return fmt(x, digits).replace(".", ",")
 
 
-def test_decimal_comma_on_the_russian_sheet_point_on_the_english():
+def test_decimal_comma_on_the_russian_sheet_point_on_the_english(unit):
     a, u = unit("shaper")
     number = re.compile(r"\d\.\d")
     ru = [t for t in _texts(dynamics_sheet(a, unit=u, lang="ru")) if t.layer != "title"]
@@ -306,7 +310,7 @@ def test_decimal_comma_on_the_russian_sheet_point_on_the_english():
 
 
 @pytest.mark.parametrize("name", ["press", "shaper"])
-def test_flywheel_dimensioned_after_gost_2_307(name):
+def test_flywheel_dimensioned_after_gost_2_307(unit, name):
     """⌀ outer and ⌀ inner of the rim and its width b in whole mm; each arrow's tip on an
     extension line that starts on the section's outline; the axis of rotation drawn."""
     a, u = unit(name)
