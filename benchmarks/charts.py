@@ -162,6 +162,16 @@ SWEEP_STYLE = {
 }
 
 
+def _sweep_axes(ax, ylabel: str, title: str, legend: str) -> None:
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("positions per turn N")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=7, loc=legend)
+
+
 def sweep_chart(results: dict, folder: Path) -> Path:
     """Time per turn against the number of positions N, every method (left); the full
     cycle's time over each other method's (right: below 1 graphplan is faster)."""
@@ -177,13 +187,8 @@ def sweep_chart(results: dict, folder: Path) -> Path:
         colour, ls, mk = SWEEP_STYLE.get(name, ("#7f7f7f", "-", "o"))
         ax.plot(*zip(*[(n, t * 1e3) for n, t in pts], strict=True), ls=ls, marker=mk,
                 color=colour, lw=1.2, ms=4, label=name)
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("positions per turn N")
-    ax.set_ylabel("time of one turn, ms (median)")
-    ax.set_title("Every method at every N (solid: with the forces)")
-    ax.grid(True, which="major", alpha=0.3)
-    ax.legend(fontsize=7, loc="upper left")
+    _sweep_axes(ax, "time of one turn, ms (median)",
+                "Every method at every N (solid: with the forces)", "upper left")
     ax = axes[1]
     full = sw["median_s"]["graphplan full cycle"]
     for name in ("closed form: full cycle", "pylinkage numba (kinematics)",
@@ -203,13 +208,8 @@ def sweep_chart(results: dict, folder: Path) -> Path:
     ax.axhline(4.0, color="#2ca02c", ls=":", lw=0.8)
     ax.text(sizes[0], 4.0 * 1.15, "target against the closed form at N = 360: 4", fontsize=7,
             color="#2ca02c")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("positions per turn N")
-    ax.set_ylabel("time ratio (below 1: graphplan faster)")
-    ax.set_title("graphplan's full cycle against the others")
-    ax.grid(True, which="major", alpha=0.3)
-    ax.legend(fontsize=7, loc="upper right")
+    _sweep_axes(ax, "time ratio (below 1: graphplan faster)",
+                "graphplan's full cycle against the others", "best")
     env = results.get("environment", {})
     fig.suptitle(f"The N sweep on the press ({env.get('cpus', '?')} CPUs, "
                  f"{env.get('machine', '')}; same process, methods in turns)", fontsize=10)

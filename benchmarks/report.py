@@ -36,7 +36,12 @@ def tables(results: dict) -> str:
     out = [f"Run of {results.get('grid', '')}, {env['repetitions']} repetitions, "
            f"Python {env['python']}, numpy {env['numpy']}, pylinkage {env['pylinkage']}, "
            f"numba {env['numba']}, {env['cpus']} CPUs ({env['machine']}); the whole run took "
-           f"{results.get('total_run_s', 0):.0f} s.", ""]
+           f"{results.get('total_run_s', 0):.0f} s."
+           + (f" Load average of the machine (1/5/15 min) at the start "
+              f"{'/'.join(map(str, env['load_average_at_start']))}, at the end "
+              f"{'/'.join(map(str, env.get('load_average_at_end') or []))}: with other jobs "
+              f"on its {env['cpus']} CPUs every figure is slower and more spread than on a "
+              "quiet machine." if env.get("load_average_at_start") else ""), ""]
     if results.get("note"):
         out += [f"*{results['note']}.*", ""]
     for name, m in results["mechanisms"].items():
