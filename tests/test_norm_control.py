@@ -54,7 +54,6 @@ LONGEST_MIN, MEDIAN_MIN = 40.0, 50.0
 #: until it is removed from this list).
 TODO = {
     *((n, s, "filled") for n in EXAMPLES for s in (1, 2)),
-    *((n, 2, "overlaps") for n in ("fourbar", "sixbar_press")),
 }
 
 

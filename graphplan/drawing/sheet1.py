@@ -442,15 +442,16 @@ PLAN_LAYERS = {"velocity": "velocity_plan", "acceleration": "acceleration_plan",
 
 
 def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
-               segment_labels: bool = False, rename: dict[str, str] | None = None
-               ) -> list[Item]:
+               segment_labels: bool = False, rename: dict[str, str] | None = None,
+               leaders: float = 0.0, keep_out=()) -> list[Item]:
     """A plan centred in its cell, with its caption and letters.
 
     Any construction with ``kind``, ``points`` and ``steps`` is drawn: velocity and
     acceleration plans, force plans, Zhukovsky's lever. With ``segment_labels`` every
     vector is also named at its middle (a force plan names its forces, not only its
     vertices); ``rename`` writes some of them otherwise (a force too short to see with its
-    value, sheet 2).
+    value, sheet 2); ``leaders`` as in :func:`graphplan.drawing.labels.place_labels`;
+    ``keep_out``: more areas its letters must not enter.
     """
     layer = PLAN_LAYERS[getattr(plan, "kind", "lever")]
     pts = np.array(list(plan.points.values()))
@@ -495,9 +496,10 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     cap = text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
                          layer="text", id=f"{ident}-caption")
     keep = [Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),
-                     (cell.x0, cell.y1)]).exterior.buffer(0.5), text_box(cap).buffer(0.5)]
+                     (cell.x0, cell.y1)]).exterior.buffer(0.5), text_box(cap).buffer(0.5),
+            *keep_out]
     items += place_labels(reqs, obstacles, layer=layer, id_prefix=f"{ident}-t", merge_mm=1.0,
-                          keep_out=keep)
+                          keep_out=keep, leaders=leaders)
     items.append(cap)
     return items
 

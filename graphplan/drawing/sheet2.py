@@ -27,6 +27,7 @@ import math
 import re
 
 import numpy as np
+import shapely
 from shapely.geometry import Point
 
 from ..forces import reaction_name
@@ -78,6 +79,7 @@ from .sheet1 import (
 )
 
 ARROW_MM = 16.0  #: length of a load's or reaction's arrow on a group (direction only), mm
+LEADERS = 30.0  #: a letter with no clear spot by its point is written up to this far, on a leader
 SHORT_MM = 2.0  #: a force's vector on a plan shorter than this is written with its value
 
 WORDS = {
@@ -154,23 +156,36 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     L = "force_plan"
     pre = f"{ident}-{fig}"
     own = {f"{ident}-link-{ln}" for ln in links}
-    items: list[Item] = [it for it in link_items(mech, kin, k, P, MAIN, ident, L, slots)
-                         if it.id and (it.id in own or any(it.id.startswith(o + "-")
-                                                           for o in own))]
-    for key, (G, u) in kin.pos.guides.items():
-        slider, carrier = key.split("/")
-        if slider not in links:
-            continue
-        corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
-        if corners:
-            items.append(Polyline(corners, Style(0.5, fill="white"), True, layer=L,
-                                  id=f"{ident}-slider-{slider}-{carrier}"))
-        if carrier not in links:  # the guide of the link taken away: its axis
-            d = np.array([u[k][0], -u[k][1]])
-            at = kin.pos.points[slider_point(mech, kin, k, slider, G[k], u[k])][k]
-            c = np.asarray(P(G[k] + np.dot(at - G[k], u[k]) * u[k]))
-            items.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
-                              layer=L, id=f"{pre}-guide-{slider}"))
+
+    def drawn_links(P) -> list[Item]:
+        out = [it for it in link_items(mech, kin, k, P, MAIN, ident, L, slots)
+               if it.id and (it.id in own or any(it.id.startswith(o + "-") for o in own))]
+        for key, (G, u) in kin.pos.guides.items():
+            slider, carrier = key.split("/")
+            if slider not in links:
+                continue
+            corners = _slider_block(mech, kin, k, slider, G[k], u[k], P)
+            if corners:
+                out.append(Polyline(corners, Style(0.5, fill="white"), True, layer=L,
+                                      id=f"{ident}-slider-{slider}-{carrier}"))
+            if carrier not in links:  # the guide of the link taken away: its axis
+                d = np.array([u[k][0], -u[k][1]])
+                at = kin.pos.points[slider_point(mech, kin, k, slider, G[k], u[k])][k]
+                c = np.asarray(P(G[k] + np.dot(at - G[k], u[k]) * u[k]))
+                out.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
+                                  layer=L, id=f"{pre}-guide-{slider}"))
+        return out
+
+    # centred on what is drawn (a slot runs past the points over its block's travel)
+    area = Rect(cell.x0, cell.y0 + CAPTION, cell.x1,
+                cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM))
+    geo = [g for it in drawn_links(P) if (g := item_geometry(it)) is not None]
+    if geo:
+        x0, y0, x1, y1 = shapely.union_all(geo).bounds
+        dx = (area.x0 + area.x1) / 2 - (x0 + x1) / 2
+        dy = (area.y0 + area.y1) / 2 - (y0 + y1) / 2
+        P = _Paper((P.ox + dx, P.oy + dy), P.kl, P.pivot)
+    items: list[Item] = drawn_links(P)
     if crank:
         joints = {mech.crank.pivot, mech.crank.pin}
     else:
@@ -212,12 +227,17 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     for n, (name, at, vec, reaction) in enumerate(arrows):
         tip = np.asarray(P(at))
         d = np.array([vec[0], -vec[1]]) / float(np.hypot(*vec))
-        # a load starts at its point; a reaction ends at the joint it acts on
-        p0, p1 = (tip - ARROW_MM * d, tip) if reaction else (tip, tip + ARROW_MM * d)
+        # a load starts at its point; a reaction ends at the joint it acts on — or the other
+        # way round where that arrow would leave the figure's place (the caption above)
+        back = reaction
+        if not area.polygon().buffer(-1.0).contains(
+                Point(*(tip - ARROW_MM * d if back else tip + ARROW_MM * d))):
+            back = not back
+        p0, p1 = (tip - ARROW_MM * d, tip) if back else (tip, tip + ARROW_MM * d)
         items.append(Arrow(tuple(p0), tuple(p1), Style(0.35), 3.0, 1.0, layer=L,
                            id=f"{pre}-f{n}"))
-        free = p0 if reaction else p1  # the letter at the arrow's free end, off the joint
-        reqs.append(LabelRequest(tuple(free + 1.0 * d * (1 if not reaction else -1)), name, 3.5,
+        free = p0 if back else p1  # the letter at the arrow's free end, off the joint
+        reqs.append(LabelRequest(tuple(free + 1.0 * d * (1 if not back else -1)), name, 3.5,
                                  group=pre))
     centres = {ln: getattr(mech.links.get(ln), "centre", None) for ln in links}
     for n, (name, ln, m) in enumerate(couples):
@@ -240,10 +260,10 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
                  if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     eq_items = _bottom_lines(eqs, cell, f"{pre}-eq", below=_lowest(obstacles))
     # the letters stay inside the figure's cell, clear of its caption
-    keep = [cell.polygon().buffer(300.0).difference(cell.polygon().buffer(-0.5)),
+    keep = [_outside(cell),
             text_box(caption).buffer(0.5), *(text_box(t).buffer(0.5) for t in eq_items)]
     items += place_labels(reqs, obstacles, layer=L, id_prefix=f"{pre}-t", keep_out=keep,
-                          merge_mm=0.5)
+                          merge_mm=0.5, leaders=LEADERS)
     items.append(caption)
     items += eq_items
     return items
@@ -344,10 +364,16 @@ def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
     return items
 
 
+def _outside(cell: Rect):
+    """Everything around a cell: its figure's letters stay in it."""
+    return cell.polygon().buffer(400.0).difference(cell.polygon().buffer(-0.5))
+
+
 def _plan_items(plan, cell: Rect, captions, ident: str, rename) -> list[Item]:
     """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named),
     its caption the first of ``captions`` that fits the cell."""
-    items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename)
+    items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename,
+                       leaders=LEADERS, keep_out=[_outside(cell)])
     return [it for it in items if it.id != f"{ident}-caption"] + [
         _caption(cell, captions, f"{ident}-caption")]
 
@@ -463,8 +489,10 @@ def q_curves(analysis, n: int = 361):
     """The technological loads over the cycle, for the diagram Q(s): per load its name, the
     travel s of the link it acts on from the start dead centre of its stroke (m; a rocker's
     in degrees; a load over the crank angle: the crank's travel, degrees), its size (N, N·m)
-    and whether the crank is in the working stroke there. Returns (curves, unit of s)."""
-    from ..forces import resistance_loads
+    and whether its link is in its working stroke there (x from 0 to 1: the even strokes of
+    :func:`graphplan.forces.stroke_index`; over the crank angle, the crank's working arc;
+    a four-stroke cycle: every stroke solid). Returns (curves, unit of s)."""
+    from ..forces import cycle_travel, resistance_loads, stroke_index
     from ..kinematics import in_working_stroke, link_coordinate, solve
 
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
@@ -490,7 +518,12 @@ def q_curves(analysis, n: int = 361):
             x = lt.fraction(q) * abs(lt.q_end - lt.q_start)
             if lt.kind == "rocker":
                 x, unit = np.degrees(x), "deg"
-        out.append((load.name, x, size, work, kin.phi[0] + 0.0))
+        own = work
+        if cycle.period > 2 * math.pi + 1e-9:
+            own = np.ones_like(work)
+        elif res.over != "crank":
+            own = stroke_index(res, mech, cycle, cycle_travel(mech, cycle, phi)) % 2 == 0
+        out.append((load.name, x, size, own, kin.phi[0] + 0.0))
     return out, unit
 
 
@@ -576,8 +609,9 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
         ax.set_xlabel(s_words, **_font(s_words, 3.5))
         ax.set_ylabel(f"Q, {f_unit}", **_font(f"Q, {f_unit}", 3.5))
         leg = f"— {w['work']}   - - {w['idle']}"
-        fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
-                 **_font(leg, 2.5))
+        if analysis.cycle.period <= 2 * math.pi + 1e-9:
+            fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
+                     **_font(leg, 2.5))
         fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
     return fig
 
