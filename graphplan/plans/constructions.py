@@ -711,9 +711,14 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         return name
 
     def coriolis_from(frm: str, name: str, omega_k: float, v_r: float, u: Vec2, link: str,
-                      rel: str, sign=1.0) -> str:
+                      rel: str, sign=1.0, reverse: tuple[str, str] = ("", "")) -> str:
         """Lay the Coriolis acceleration ``aᵏ = 2·ω_link·v_rel``: the relative velocity
-        ``rel`` turned by 90° in the sense of ω of the guiding ``link``."""
+        ``rel`` turned by 90° in the sense of ω of the guiding ``link``.
+
+        ``reverse`` (the sheet's name of the opposite vector, the segment of ``rel`` on the
+        velocity plan) where the sheet reads that one: a slotted link's v_AA3 is the
+        segment a3→a, the rule turns v_A3A = −v_AA3, the segment a→a3 (laid from a,
+        ``sign`` −1)."""
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
@@ -725,6 +730,10 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         sense = ("counter-clockwise", "против часовой стрелки") if w > 0 else (
             "clockwise", "по часовой стрелке")
         what = f"aᵏ = 2·|ω{link}|·{rel} = 2·{plain(abs(w), 4)}·{plain(vr, 4)} = {plain(ak, 4)}"
+        rev_en = rev_ru = ""
+        if reverse[0]:
+            rev_en = f" ({rel} = −{reverse[0]}: the vector {reverse[1]} of the velocity plan)"
+            rev_ru = f" ({rel} = −{reverse[0]}: вектор {reverse[1]} плана скоростей)"
         if w == 0:
             return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
                         f"Coriolis acceleration {what} m/s²: ω{link} = 0, no Coriolis "
@@ -733,11 +742,11 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
                         "в этом положении нет")
         return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
                     f"Coriolis acceleration {what} m/s² (ω{link} {sense[0]}); its direction: "
-                    f"the relative velocity {rel} turned by 90° in the sense of ω{link}, "
-                    f"i.e. {sense[0]}",
+                    f"the relative velocity {rel} turned by 90° in the sense of ω{link}"
+                    f"{rev_en}, i.e. {sense[0]}",
                     f"Ускорение Кориолиса {what} м/с² (ω{link} {sense[1]}); направление — "
                     f"правило: вектор относительной скорости {rel}, повёрнутый на 90° в "
-                    f"сторону вращения ω{link}, то есть {sense[1]}")
+                    f"сторону вращения ω{link}{rev_ru}, то есть {sense[1]}")
 
     S = vplan.sliding
     for dy in mech.dyads:
@@ -785,7 +794,8 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             u = _guide_dir(kin, k, sk)
             a3 = pa + j
             n1 = normal(pc, A, C, j, length_m(C, A))
-            kk = coriolis_from(pa, f"k_{A}{j}", W[j], S[sk], u, j, f"v_{A}{A}{j}", sign=-1.0)
+            kk = coriolis_from(pa, f"k_{A}{j}", W[j], S[sk], u, j, f"v_{A}{j}{A}", sign=-1.0,
+                               reverse=(f"v_{A}{A}{j}", f"{pa.lower()}→{pa.lower()}{j}"))
             eq = f"a_{A}{j} = a_{C} + aⁿ_{A}{C} + aτ_{A}{C} = a_{A} + aᵏ_{A}{j}{A} + aʳ_{A}{j}{A}"
             _close_two_lines(b, eq, a3, b.points[n1], perp(P[A] - P[C]), f"⟂{C}{A} through {n1}",
                              b.points[kk], u, f"∥ slot through {kk}")
@@ -830,7 +840,8 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             ak = _coincident(b, img, g.link, A, P, rate_map)
             cs = coriolis_from(ak, f"k_{A}{j}{g.link}", W[g.link], S[kj], u, g.link,
                                f"v_{A}{j}{A}{g.link}")
-            cr_ = coriolis_from(pa, f"k_{A}{i}{j}", W[j], S[ki], w, j, f"v_{A}{A}{j}", sign=-1.0)
+            cr_ = coriolis_from(pa, f"k_{A}{i}{j}", W[j], S[ki], w, j, f"v_{A}{j}{A}", sign=-1.0,
+                                reverse=(f"v_{A}{A}{j}", f"{pa.lower()}→{pa.lower()}{j}"))
             aj = pa + j
             eq = f"a_{A} = a_{A}{g.link} + aᵏ + aʳ_{A}{j}{A}{g.link} + aᵏ + aʳ_{A}{A}{j}"
             _close_two_lines(b, eq, aj, b.points[cs], u, f"∥ guide through {cs}",
