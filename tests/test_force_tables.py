@@ -23,13 +23,8 @@ import graphplan as g
 from graphplan.files import bundled_example
 from graphplan.forces import compute_loads, solve_forces
 from graphplan.project import analyze
-from graphplan.reports.force_tables import (
-    CSV_COLUMNS,
-    force_readings,
-    forces_csv,
-    forces_markdown,
-    seed_comparison_markdown,
-)
+from graphplan.reports import force_readings, forces_csv, forces_markdown, seed_comparison_markdown
+from graphplan.reports.force_tables import CSV_COLUMNS
 
 REL = 1e-9
 PRESS_MD = Path(__file__).resolve().parents[1] / "examples" / "press.md"

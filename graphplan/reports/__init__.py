@@ -1,18 +1,8 @@
 """Reports of a solved variant: text, Markdown and CSV tables of the plans, forces and dynamics."""
 
 from .dynamics_tables import T, dynamics_csv, dynamics_markdown, position_rows
-from .force_tables import (
-    SEED,
-    SEED_NAME,
-    TINY,
-    LoadRow,
-    PositionForces,
-    curve_markdown,
-    force_readings,
-    forces_csv,
-    forces_markdown,
-    seed_comparison_markdown,
-)
+from .force_readings import TINY, LoadRow, PositionForces, force_readings
+from .force_tables import curve_markdown, forces_csv, forces_markdown
 from .plan_tables import (
     SUMMARY_CELL,
     TINY_MM,
@@ -24,6 +14,7 @@ from .plan_tables import (
     rate_table_rows,
     summary_rows,
 )
+from .seed_comparison import SEED, SEED_NAME, seed_comparison_markdown
 from .tables import TEXT, analysis_text, cycle_text, format_table, kinematics_text, structure_text
 
 __all__ = [
