@@ -179,7 +179,8 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     # centred on what is drawn (a slot runs past the points over its block's travel)
     area = Rect(cell.x0, cell.y0 + CAPTION, cell.x1,
                 cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM))
-    geo = [g for it in drawn_links(P) if (g := item_geometry(it)) is not None]
+    geo = [g for it in drawn_links(P)
+           if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     if geo:
         x0, y0, x1, y1 = shapely.union_all(geo).bounds
         dx = (area.x0 + area.x1) / 2 - (x0 + x1) / 2
