@@ -1,7 +1,6 @@
 """Tables of the plans: every reading checked against the exact kinematics."""
 
 import csv
-import functools
 import io
 import math
 import re
@@ -9,10 +8,7 @@ import re
 import numpy as np
 import pytest
 
-from graphplan.files import bundled_example
 from graphplan.geometry import norm
-from graphplan.model import load
-from graphplan.project import analyze
 from graphplan.reports.plan_tables import (
     CSV_COLUMNS,
     SUMMARY_CELL,
@@ -28,21 +24,35 @@ EXAMPLES = ("press", "fourbar", "shaper")
 NAN_INF = re.compile(r"\b(nan|inf)\b", re.IGNORECASE)
 
 
-@functools.cache
-def analysis(name):
-    return analyze(load(bundled_example(name)))
+@pytest.fixture
+def analysis(solved):
+    """``analysis(name)`` → the session's solved project of an example (tests/conftest.py)."""
+    return solved
 
 
-@functools.cache
-def output(fn, name, lang="en", precision=0.0):
-    """One function's output, built once per session (the plans take ~30 ms a variant)."""
-    if fn is summary_rows:
-        return fn(analysis(name), lang)
-    return fn(analysis(name), lang, precision)
+@pytest.fixture
+def output(solved):
+    """``output(fn, name, lang, precision)`` → one function's output, built once per project
+    (a stage of the session's project; the plans take ~30 ms a variant)."""
+
+    def get(fn, name, lang="en", precision=0.0):
+        a = solved(name)
+        if fn is summary_rows:
+            return a.stage(("tables", fn.__name__, lang), lambda: fn(a, lang))
+        return a.stage(("tables", fn.__name__, lang, precision),
+                       lambda: fn(a, lang, precision))
+
+    return get
 
 
-def csv_rows(name, precision, lang="en"):
-    return list(csv.DictReader(io.StringIO(output(plans_csv, name, lang, precision))))
+@pytest.fixture
+def csv_rows(output):
+    """``csv_rows(name, precision, lang)`` → the rows of the plans' CSV."""
+
+    def get(name, precision, lang="en"):
+        return list(csv.DictReader(io.StringIO(output(plans_csv, name, lang, precision))))
+
+    return get
 
 
 # --- the solver's value of a reading quantity ----------------------------------------------
@@ -107,7 +117,7 @@ def _close(x, candidates, rel, abs_):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_exact_csv_equals_the_kinematics(name):
+def test_exact_csv_equals_the_kinematics(analysis, csv_rows, name):
     a = analysis(name)
     index = {label: k for k, label in enumerate(a.kin.labels)}
     rows = csv_rows(name, 0.0)
@@ -131,7 +141,7 @@ def test_exact_csv_equals_the_kinematics(name):
 
 @pytest.mark.parametrize("name", EXAMPLES)
 @pytest.mark.parametrize("precision", [0.0, 0.5])
-def test_mm_times_scale_is_the_value(name, precision):
+def test_mm_times_scale_is_the_value(csv_rows, name, precision):
     for r in csv_rows(name, precision):
         if r["kind"] == "segment":
             mm, value = float(r["mm"]), float(r["value"])
@@ -139,7 +149,7 @@ def test_mm_times_scale_is_the_value(name, precision):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_drafting_mode_reads_to_half_a_millimetre(name):
+def test_drafting_mode_reads_to_half_a_millimetre(csv_rows, output, name):
     n_err = 0
     for r in csv_rows(name, 0.5):
         if r["kind"] == "segment":
@@ -158,7 +168,7 @@ def test_drafting_mode_reads_to_half_a_millimetre(name):
 
 @pytest.mark.parametrize("name", EXAMPLES)
 @pytest.mark.parametrize("precision", [0.0, 0.5])
-def test_ru_and_en_tables_have_the_same_columns(name, precision):
+def test_ru_and_en_tables_have_the_same_columns(analysis, output, name, precision):
     for table in (plan_table_rows, rate_table_rows, summary_rows):
         (he, re_), (hr, rr) = (output(table, name, lang, precision) for lang in ("en", "ru"))
         assert len(he) == len(hr) and he != hr
@@ -172,7 +182,7 @@ def test_ru_and_en_tables_have_the_same_columns(name, precision):
 
 @pytest.mark.parametrize("name", EXAMPLES)
 @pytest.mark.parametrize("precision", [0.0, 0.5])
-def test_no_nan_or_inf_anywhere(name, precision):
+def test_no_nan_or_inf_anywhere(output, name, precision):
     texts = [output(fn, name, lang, precision) for fn in (plans_markdown, plans_csv)
              for lang in ("en", "ru")]
     for table in (plan_table_rows, rate_table_rows, summary_rows):
@@ -182,7 +192,7 @@ def test_no_nan_or_inf_anywhere(name, precision):
         assert not NAN_INF.search(t)
 
 
-def test_press_position_2_reads_pa_as_va_over_kv():
+def test_press_position_2_reads_pa_as_va_over_kv(analysis, output):
     a = analysis("press")
     kl, kv = a.sheet1.kl, a.sheet1.kv
     # By hand: ω1 = π·n1/30 = π·55/30 = 5.7596 rad/s; vA = ω1·lOA = 5.7596·0.08 = 0.4608 m/s.
@@ -203,7 +213,7 @@ def test_press_position_2_reads_pa_as_va_over_kv():
     assert "ω2 = vBA/lAB = " in section and "ε2 = aτBA/lAB = " in section
 
 
-def test_rates_as_a_student_writes_them():
+def test_rates_as_a_student_writes_them(analysis, output):
     a = analysis("press")
     rows = output(rate_table_rows, "press")[1]
     w2 = next(r for r in rows if r[0] == "2" and r[2] == "2")
@@ -217,7 +227,7 @@ def test_rates_as_a_student_writes_them():
     assert any(r[3] == "ω5 = 0 (поступательное движение)" for r in shaper)
 
 
-def test_plan_readings_builds_exact_plans_in_drafting_mode():
+def test_plan_readings_builds_exact_plans_in_drafting_mode(analysis):
     a = analysis("press")
     exact, drawn = plan_readings(a), plan_readings(a, 0.5)
     assert len(exact) == len(drawn) == a.kin.n
@@ -232,7 +242,7 @@ def test_plan_readings_builds_exact_plans_in_drafting_mode():
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_summary_fits_the_sheet(name):
+def test_summary_fits_the_sheet(analysis, output, name):
     a = analysis(name)
     head, rows = output(summary_rows, name, "ru")
     assert len(rows) == a.kin.n
