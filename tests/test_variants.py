@@ -84,6 +84,22 @@ def test_a_crusher_force_on_the_jaw_flipped():
     assert "loads[0] (Fс)" in w and w.endswith('likely fix: output.working = "-"'), w
 
 
+def test_a_load_on_another_links_working_stroke_out_of_step():
+    # the shaper's ram cuts moving left (working = "-"); its rocker 3 then turns CCW, so a
+    # moment on the rocker over ITS "working" swing with x taking "-" (CW) comes on the
+    # ram's return: 0 % of it in the working stroke; loads[1].working = "+" puts it back
+    text = _example("shaper")
+    extra = ('[[loads]]\nname = "Mтр"\nkind = "moment"\nlink = "3"\nmax = 100\n'
+             'diagram = [[0.0, 1.0], [1.0, 1.0]]\n\n[positions]')
+    text = text.replace("[positions]", extra, 1)
+    (w,) = _warnings(text, "shaper-m3.toml")
+    assert w == ('shaper-m3.toml: loads[1] (Mтр): given on the working stroke of link 3, '
+                 'whose x runs with working = "-", it comes while the output makes its idle '
+                 'stroke (0 % of it in the working stroke); likely fix: loads[1].working = "+"')
+    fixed = text.replace('name = "Mтр"', 'name = "Mтр"\nworking = "+"')
+    assert _warnings(fixed, "shaper-m3.toml") == ()
+
+
 @pytest.mark.parametrize("flip", [{}, BRANCH], ids=["as written", "other branch"])
 def test_load_work_is_the_line_integral_of_the_force(flip):
     """The warning's work against an independent sum over the positions alone: the force

@@ -39,8 +39,15 @@ from functools import partial
 import numpy as np
 
 from ..errors import GraphplanError
-from ..forces import ForceLoad, point_velocity, resistance_loads
-from ..kinematics import Cycle, analyse_cycle, link_coordinate, solve, solve_positions
+from ..forces import ForceLoad, point_velocity, resistance_loads, stroke_index
+from ..kinematics import (
+    Cycle,
+    analyse_cycle,
+    in_working_stroke,
+    link_coordinate,
+    solve,
+    solve_positions,
+)
 from ..model import Mechanism, Resistance
 
 K_MARGIN = 0.01
@@ -149,8 +156,7 @@ def _meant_to_resist(res: Resistance) -> bool:
     resistance, given as a signed diagram or a force along ``angle``."""
     if res.sense != "diagram" or res.gas or res.over != "stroke":
         return False
-    diags = res.stroke_diagrams(len(res.strokes) or 2)
-    return any(d is not None for d in diags[0::2]) and all(d is None for d in diags[1::2])
+    return _working_strokes_only(res)
 
 
 def load_work(mech: Mechanism, cycle: Cycle, n: int) -> tuple[float, float]:
@@ -197,10 +203,65 @@ def _driving_resistance_warnings(mech: Mechanism, cycle: Cycle):
                f"diagram or its angle (sense = \"resists\" always opposes the motion)")
 
 
+def _in_step(mech: Mechanism, cycle: Cycle, n: int) -> float:
+    """The share of load ``n``'s loaded strokes that falls in the output's working
+    strokes (1: in step with them, 0: on the output's idle strokes only)."""
+    res = mech.resistances[n]
+    tau = np.linspace(0.0, cycle.period, round(cycle.period / (2 * math.pi)) * WORK_GRID,
+                      endpoint=False)
+    diags = res.stroke_diagrams(round(cycle.period / math.pi))
+    k = stroke_index(res, mech, cycle, tau)
+    on = np.array([diags[i] is not None for i in k])
+    if not on.any():
+        return 1.0
+    working = in_working_stroke(mech, cycle, cycle.origin + mech.crank.sense * tau)
+    return float(np.mean(working[on]))
+
+
+def _out_of_step_warnings(mech: Mechanism, cycle: Cycle):
+    """A load on the working strokes of a link other than the output (its x runs with
+    ``loads[n].working``, by default the output's sense) that comes while the output makes
+    its idle stroke: that link's "working" sense is probably the other one."""
+    if not cycle.dead_centres:
+        return
+    for n, res in enumerate(mech.resistances):
+        tl = res.travel_link or mech.output.link
+        if (res.over != "stroke" or res.gas or tl == mech.output.link
+                or not _working_strokes_only(res)):
+            continue
+        share = _in_step(mech, cycle, n)
+        if share >= 0.5:
+            continue
+        w = res.working or mech.output.working
+        loads = list(mech.resistances)
+        loads[n] = replace(res, working=-w)
+        other = replace(mech, resistances=tuple(loads))
+        try:
+            better = _in_step(other, analyse_cycle(other), n) > share
+        except GraphplanError:
+            better = False
+        label = res.name or ("Q" if res.kind == "force" else "Mс")
+        sign, flip = ("+" if w > 0 else "-"), ("-" if w > 0 else "+")
+        yield (f"{mech.source}: loads[{n}] ({label}): given on the working stroke of link "
+               f"{tl}, whose x runs with working = \"{sign}\", it comes while the output "
+               f"makes its idle stroke ({share * 100:.0f} % of it in the working stroke); "
+               f"likely fix: loads[{n}].working = \"{flip}\"" if better else
+               f"{mech.source}: loads[{n}] ({label}): given on the working stroke of link "
+               f"{tl}, whose x runs with working = \"{sign}\", it comes while the output "
+               f"makes its idle stroke ({share * 100:.0f} % of it in the working stroke); "
+               f"likely fix: travel_link = the output, or stroke = \"idle\"")
+
+
+def _working_strokes_only(res: Resistance) -> bool:
+    diags = res.stroke_diagrams(len(res.strokes) or 2)
+    return any(d is not None for d in diags[0::2]) and all(d is None for d in diags[1::2])
+
+
 def machine_warnings(mech: Mechanism, cycle: Cycle) -> tuple[str, ...]:
     """The warnings of the module docstring, one line each (empty when all looks meant)."""
     out: list[str] = list(_cylinder_head_warnings(mech, cycle))
     out += _driving_resistance_warnings(mech, cycle)
+    out += _out_of_step_warnings(mech, cycle)
     K = cycle.time_ratio
     if not (cycle.dead_centres and K < 1.0 - K_MARGIN and _working_only(mech)):
         return tuple(out)
