@@ -171,7 +171,8 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
                  f"{fmt(m.mass, 4)} {'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
                  + ("" if m.speed_ok else " (> 40 м/с!)"))
     else:  # the crank (and the rotor) already have JI
-        why = t["no_fw_why"].format(ji=fmt(fw.J_I, 6), have=fmt(fw.I_const + fw.I_rotor, 6))
+        why = str(t["no_fw_why"]).format(ji=fmt(fw.J_I, 6),
+                                         have=fmt(fw.I_const + fw.I_rotor, 6))
         L.append(f"- {why}")
     L += ["", f"## {t['check']}", "",
           f"- ω(φ) = √(2(T0 + ΔT)/(Jпр + Jрот·u² + Jм)): ωmax = {fmt(s.omega_max, 5)}, "
