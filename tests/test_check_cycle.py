@@ -103,3 +103,20 @@ def test_the_levers_moment_is_its_own_figure_and_compared_with_graphplans():
     r = _check(K_RIGHT, ["Мур = 663,5 Нм", "Мур.ж = -663,5 Нм"])
     [f] = [f for f in r.findings if f.verdict == "wrong"]
     assert f.kind == "sign"
+
+
+def test_delta_in_the_general_lines_is_the_coefficient_of_speed_fluctuation():
+    # the engine's variant: dynamics.delta = 0.0125 (1/80)
+    from graphplan.files import bundled_example as ex
+
+    def run(line):
+        text = (f'[work]\nvariant = "{ex("engine")}"\n[general]\nlines = ["{line}"]\n'
+                '[[positions]]\nlabel = "1"\nlines = ["vB = pb∙Kv = 63,79∙0,15 = 9,5685 м/с"]\n')
+        return check_work(loads_student(text, "<fluctuation>.toml"))
+
+    for right in ("δ = 1/80 = 0,0125", "δ = 1,25 %"):
+        r = run(right)
+        assert _fig(r, "δ").verdict == "ok", _fig(r, "δ")
+    r = run("δ = 1/50 = 0,02")
+    [f] = [f for f in r.findings if f.verdict == "wrong"]
+    assert f.quantity == "δ" and "1/80" in f.explanation_en

@@ -157,9 +157,12 @@ class Checker:
             if key != ("mbal_discrepancy",):
                 continue
             o = f.occs[0]
+            if o.position is None:  # in the general lines: the coefficient of fluctuation
+                self._fluctuation(f)
+                continue
             m = figs.get((scope, ("M_bal",)))
             mz = figs.get((scope, ("M_bal", "lever")))
-            if o.position is None or m is None or mz is None:
+            if m is None or mz is None:
                 continue
             a, b = abs(mz.s), abs(m.s)
             d = abs(mz.s - m.s)
@@ -188,6 +191,25 @@ class Checker:
             f.ok, f.tol, f.rel = max(0.05 * e, 0.1), max(0.1 * e, 0.3), 0.05
             f.verdict = self.verdict(f.s, e, f.ok, f.tol)
             f.extra["delta"] = (m, mz, cands, own)
+
+    def _fluctuation(self, f: Fig) -> None:
+        """δ in the general lines is the coefficient of speed fluctuation (коэффициент
+        неравномерности хода), compared with the variant's ``dynamics.delta`` as a datum:
+        a fraction (``δ = 1/80 = 0,0125``) or in per cent (``δ = 1,25 %``)."""
+        d = self.ref.mech.settings.get("dynamics", {}).get("delta")
+        if d is None:
+            return
+        from dataclasses import replace
+
+        o = f.occs[0]
+        e = float(d) * (100.0 if o.explicit == "%" else 1.0)
+        if o.explicit != "%":  # a fraction: no unit to show
+            f.q = replace(f.q, unit="1")
+        f.e, f.model, f.scale_note = e, "rule", ""
+        f.ok, f.tol, f.rel = max(self.tol.datum_ok * e, 1e-12), max(self.tol.datum * e,
+                                                                    1e-12), self.tol.datum
+        f.verdict = self.verdict(f.s, e, f.ok, f.tol)
+        f.extra["fluctuation"] = float(d)
 
     def _diagnose_at_scales(self, f: Fig, dg: Diagnoser) -> tuple[Fig, Diag]:
         """A length on paper wrong at every scale the student used there: the scale whose
@@ -596,9 +618,13 @@ _NOT_COMPARED = {
                     "строка не называет величину (укажите `quantity` или `symbols`)"),
     "unread": _Say("the line cannot be read", "строку не удалось прочитать"),
     "delta": _Say("δ compares the position's Мур of the force plans with Мур.ж of "
-                  "Zhukovsky's lever: write both at this position to compare it",
+                  "Zhukovsky's lever: write both at this position to compare it; in the "
+                  "general lines δ is the coefficient of speed fluctuation, and the "
+                  "variant gives none (dynamics.delta)",
                   "δ сравнивает Мур планов сил и Мур.ж рычага Жуковского: запишите оба "
-                  "в этом положении, чтобы его проверить"),
+                  "в этом положении, чтобы его проверить; в общих строках δ — "
+                  "коэффициент неравномерности хода, а вариант его не задаёт "
+                  "(dynamics.delta)"),
 }
 
 

@@ -223,6 +223,13 @@ class Diagnoser:
         """δ, the discrepancy of Мур and Мур.ж, that the student's own two moments do not
         give: written as a fraction (``unit``), by a formula of its own (``formula``), or
         not from the moments they wrote (``consistency``)."""
+        if "fluctuation" in f.extra and f.e is not None:
+            d = f.extra["fluctuation"]
+            en = (f"the variant's coefficient of speed fluctuation is δ = {num(d)} "
+                  f"(1/{num(1 / d, digits=4)}); {num(f.s)} is not it.")
+            ru = (f"коэффициент неравномерности хода варианта δ = {num(d, 'ru')} "
+                  f"(1/{num(1 / d, 'ru', 4)}); {num(f.s, 'ru')} — не он.")
+            return Diag("model", en, ru)
         got = f.extra.get("delta")
         if got is None or f.e is None:
             return None
