@@ -536,9 +536,10 @@ class Diagnoser:
                        ) -> Diag | None:
         """The formula names one plan's scale where another's belongs (``VS2 = ps2∙μa``):
         with the right scale's value in its place it gives graphplan's value."""
-        assert lw.template is not None  # _formula asks only about a line with a formula
+        if lw.template is None or lw.matched is None:
+            return None
         stated = self.w.stated_scales(o.position, o.line)
-        for name, _node in lw.matched.bindings if lw.matched else ():
+        for name, _node in lw.matched.bindings:
             x = next((y for y in lw.occs if y.name == name and y.role == "operand"), None)
             if x is None or x.q.kind != "scale":
                 continue
