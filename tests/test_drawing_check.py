@@ -396,3 +396,62 @@ def test_overlay_shows_force_findings(tmp_path):
     name = bad[0].quantity[:-3]
     assert f"{name}: " in svg and " ≠ " in svg and "stroke-dasharray" in svg
     assert any("force plan" in s.split("<title>")[1] for s in sheets[1:])
+
+
+def _scheme_dxf(variant, label: str, path: Path, move: str = "") -> Path:
+    """The scheme of one position drawn as a CAD user draws it: joints as circles with
+    capital letters beside them, links as lines from circle to circle, the caption with
+    its position and Kl; ``move``: that joint drawn 3 mm off its place."""
+    import ezdxf
+    import numpy as np
+
+    from graphplan.checking.checks import reference_for
+
+    ref = reference_for(variant)
+    kl = ref.analysis.sheet1.kl.per_mm
+    k = ref.index(label)
+    P = ref.kin.pos.points
+    o = np.asarray(P[ref.mech.crank.pivot][k])
+    origin = np.array([1200.0, 700.0])
+    at = {n: origin + (np.asarray(P[n][k]) - o) / kl for n in P if not n.startswith("S")}
+    if move:
+        at[move] = at[move] + np.array([2.4, 1.8])
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 4  # mm
+    msp = doc.modelspace()
+    for n, xy in at.items():
+        msp.add_circle(tuple(xy), 1.0)
+        msp.add_text(n, dxfattribs={"height": 3.5}).set_placement(tuple(xy + [2.0, 1.5]))
+    mech = ref.mech
+    for link in [mech.crank.link, *mech.links]:
+        pts = [q for q in mech.points_of(link) if q in at]
+        for a, b in zip(pts, pts[1:], strict=False):
+            A, B = at[a], at[b]
+            u = (B - A) / np.hypot(*(B - A))
+            msp.add_line(tuple(A + u), tuple(B - u))  # from rim to rim
+    top = max(xy[1] for xy in at.values()) + 15.0
+    msp.add_text(f"План положений, пол. {label}, Kl = {str(kl).replace('.', ',')} м/мм",
+                 dxfattribs={"height": 5.0}).set_placement((origin[0] - 40, top))
+    doc.saveas(path)
+    return path
+
+
+@pytest.mark.parametrize("ex", ["press", "fourbar", "shaper", "sixbar_press"])
+def test_scheme_of_a_position(tmp_path, ex):
+    """The plan of positions at one position: its joints against the exact position at
+    the student's Kl — right as drawn, and a joint drawn 3 mm off its place found."""
+    from graphplan.checking.checks import reference_for
+
+    v = EX / f"{ex}.toml"
+    ref = reference_for(v)
+    label = ref.labels[2]
+    dc = check_drawing(_scheme_dxf(v, label, tmp_path / "s.dxf"), v, lang="en")
+    schemes = [j for j in dc.plans if j.found.kind == "scheme"]
+    assert len(schemes) == 1 and schemes[0].position == label
+    assert len(schemes[0].found.joints) >= 2 and schemes[0].found.links
+    assert dc.report.ok, _wrong(dc.report)
+    joint = next(n for n in ref.kin.pos.points if n not in ref.mech.frame_points and
+                 not n.startswith("S") and n != ref.mech.crank.pin)
+    dc = check_drawing(_scheme_dxf(v, label, tmp_path / "m.dxf", move=joint), v, lang="en")
+    assert any(f.quantity == f"•{joint}" and f.kind == "point" and f.position == label
+               for f in dc.report.wrong), _wrong(dc.report)

@@ -42,7 +42,7 @@ from .measure import (
     missing_components,
     segment_lengths,
 )
-from .plans import KINDS, FoundPlan, assign_scales, find_plans, stated_scales
+from .plans import KINDS, FoundPlan, assign_scales, caption_kind, find_plans, stated_scales
 from .primitives import Drawing, DrawingError
 from .read import read_drawing
 from .scene import Scene
@@ -87,8 +87,8 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     found = find_plans(scene)
     sheet = assign_scales(found, stated_scales(d.texts))
     notes: list[str] = list(d.notes)
-    if not found and not any(t.text.strip() in ("h21",) or "сил" in t.text.lower()
-                             for t in d.texts):
+    if not found and not any(t.text.strip() in ("h21",) or "сил" in t.text.lower() or
+                             caption_kind(t.text) == "scheme" for t in d.texts):
         raise DrawingError(
             f"{path}: no plan found: no text 'p' (velocity) or 'π' (acceleration) near a "
             f"line end, no force named along a line ({len(d.segments)} lines, "
@@ -107,7 +107,11 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
 
     judged += [judge_force_plan(fp, ref, tol, lang) for fp in find_force_plans(scene)]
     judged += [judge_arm(a, ref, sheet, lang) for a in find_h21(scene)]
-    order = {"velocity": 0, "acceleration": 1, "force": 2, "arm": 3}
+    from .positions import find_schemes, judge_scheme
+
+    judged += [judge_scheme(s, ref, tol, lang) for s in find_schemes(scene, ref)]
+    order = {"velocity": 0, "acceleration": 1, "force": 2, "arm": 3, "scheme": 4,
+             "positions": 5}
     judged.sort(key=lambda j: (ref.index(j.position) if j.position in ref.labels else 99,
                                order.get(j.found.kind, 4)))
     # one plan of each kind per position: a second one is reported and left out
@@ -150,9 +154,8 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
         by_key = {j.key: j for j in js}
         for f in rep.findings:
             hit = next((jj for key, jj in by_key.items() if key and key in f.where), None)
-            if hit is not None and any(g.verdict == "wrong" and g.primary for g in hit.findings):
-                cause = hit.findings[0]
-                f = replace(f, follows_from=(f.follows_from or (cause.quantity,)))
+            if hit is not None and f.quantity in hit.causes and not f.follows_from:
+                f = replace(f, follows_from=(hit.causes[f.quantity],))
             findings.append(f)
         figures += list(rep.figures)
         lines += list(rep.lines)
@@ -318,9 +321,35 @@ def _judge(p: FoundPlan, ref, sheet: dict[str, float], tol: Tolerances, lang: st
             f"letters not known as points of the {words_en}: {', '.join(laid.unknown)}.",
             f"буквы, которых нет среди точек плана: {', '.join(laid.unknown)}.", lang,
             verdict="inaccurate", key=j.key))
-    # 2. the segments (checked by the calculation checker) and 3. their directions
+    # 2. the segments (checked by the calculation checker), 3. every point where the
+    # construction puts it (off its place by more than the segment tolerance of its vector
+    # from the pole: a point built wrong) and 4. the segments' directions. A segment or a
+    # direction wrong only because the whole plan is (another scale, another position, a
+    # component left out) or because one of its ends is misplaced follows from that.
     j.figures = segment_lengths(laid, tol.reading_mm)
-    plan_level = any(f.verdict == "wrong" for f in j.findings)
+    whole = next((f.quantity for f in j.findings if f.verdict == "wrong"), None)
+    inv = {c: s for s, c in laid.match.items()}
+    point_cause: dict[str, str] = {}
+    for pt in misplaced_points(laid, tol):
+        name = inv.get(pt.name, pt.name)
+        en = (f"the point {name} is {num(pt.error_mm, 'en', 3)} mm from where the construction "
+              f"puts it (its vector from the pole, {num(pt.length_mm, 'en', 4)} mm, allows "
+              f"{num(pt.band_mm, 'en', 2)} mm).")
+        ru = (f"точка {name} в {num(pt.error_mm, 'ru', 3)} мм от места, где её даёт построение "
+              f"(для вектора из полюса длиной {num(pt.length_mm, 'ru', 4)} мм допустимо "
+              f"{num(pt.band_mm, 'ru', 2)} мм).")
+        f = _plan_finding(p, laid.position, f"•{name}", "point", pt.error_mm, 0.0, "mm", en,
+                          ru, lang, verdict=pt.verdict, key=j.key)
+        if whole:
+            f = replace(f, follows_from=(whole,))
+        elif pt.verdict == "wrong":
+            point_cause[pt.name] = f.quantity
+        j.findings.append(f)
+    for sg in laid.segments:
+        cause = whole or point_cause.get(sg.end) or point_cause.get(sg.start)
+        if cause:
+            j.causes[sg.name] = cause
+            j.causes[f"∠{sg.name}"] = cause
     for dr in directions(laid, tol.reading_mm):
         if dr.verdict == "ok":
             continue
@@ -336,24 +365,8 @@ def _judge(p: FoundPlan, ref, sheet: dict[str, float], tol: Tolerances, lang: st
         # stated: the angle off graphplan's direction (expected 0), degrees
         f = _plan_finding(p, laid.position, f"∠{dr.name}", "direction", dr.error_deg, 0.0,
                           "°", en, ru, lang, verdict=dr.verdict, key=j.key)
-        if plan_level:
-            f = replace(f, follows_from=(j.findings[0].quantity,))
-        j.findings.append(f)
-    # 4. every point where the construction puts it (a point off its place by more than
-    # the segment tolerance of its vector from the pole: a point built wrong)
-    for pt in misplaced_points(laid, tol):
-        inv = {c: s for s, c in laid.match.items()}
-        name = inv.get(pt.name, pt.name)
-        en = (f"the point {name} is {num(pt.error_mm, 'en', 3)} mm from where the construction "
-              f"puts it (its vector from the pole, {num(pt.length_mm, 'en', 4)} mm, allows "
-              f"{num(pt.band_mm, 'en', 2)} mm).")
-        ru = (f"точка {name} в {num(pt.error_mm, 'ru', 3)} мм от места, где её даёт построение "
-              f"(для вектора из полюса длиной {num(pt.length_mm, 'ru', 4)} мм допустимо "
-              f"{num(pt.band_mm, 'ru', 2)} мм).")
-        f = _plan_finding(p, laid.position, f"•{name}", "point", pt.error_mm, 0.0, "mm", en,
-                          ru, lang, verdict=pt.verdict, key=j.key)
-        if plan_level:
-            f = replace(f, follows_from=(j.findings[0].quantity,))
+        if f.quantity in j.causes:
+            f = replace(f, follows_from=(j.causes[f.quantity],))
         j.findings.append(f)
     return j
 

@@ -23,6 +23,7 @@ class Judged:
     key: str = ""
     pos: str | None = None  # a force plan's or an arm's position
     scales: dict[str, float] = field(default_factory=dict)  # its own (Kp, a scheme's Kl)
+    causes: dict[str, str] = field(default_factory=dict)  # a figure → the finding it follows
 
     @property
     def position(self) -> str | None:

@@ -120,6 +120,8 @@ def lay(found: FoundPlan, plan, position: str, index: int) -> Laid:
     poles += [np.asarray(o, float) for o in found.options.get(found.pole, ())[1:]]
     best = None
     for p0 in poles:
+        if best is not None and best[0] <= POLE_GAIN_MM:
+            break  # the letter's own node fits: no other is tried
         laid = _lay_at(found, plan, position, index, p0)
         score = min(laid.rms, laid.rms_scaled)
         # another node only when it fits clearly better (not by the reading's noise)
@@ -166,7 +168,7 @@ def _lay_at(found: FoundPlan, plan, position: str, index: int, p0: np.ndarray) -
     # one factor that fits best — from the scale written (1) and from the letters'
     # nearest points (k0), each refined on the points it chooses; the better fit wins
     best_fit: tuple[float, dict[str, np.ndarray]] | None = None
-    for k in (1.0, k0):
+    for k in (1.0, k0) if abs(k0 - 1.0) > 1e-3 else (1.0,):
         for _round in range(3):
             measured = _choose(found, match, first, plan, p0, k)
             M = np.array([measured[c] for c in measured], float)

@@ -16,6 +16,7 @@ between them, arrowheads, and the letters placed near the points.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass, field
@@ -485,14 +486,19 @@ class Scene:
         return out
 
 
-def head_tip(pts) -> tuple[float, float]:
-    """The tip of an arrowhead: of its distinct vertices, the one farthest from the
-    others (a closed outline repeats its first vertex)."""
+@functools.lru_cache(maxsize=65536)
+def _tip(pts: tuple) -> tuple[float, float]:
     uniq: list[tuple[float, float]] = []
     for p in pts:
         if all(abs(p[0] - q[0]) + abs(p[1] - q[1]) > 1e-6 for q in uniq):
             uniq.append(p)
     return max(uniq, key=lambda p: sum(math.hypot(p[0] - q[0], p[1] - q[1]) for q in uniq))
+
+
+def head_tip(pts) -> tuple[float, float]:
+    """The tip of an arrowhead: of its distinct vertices, the one farthest from the
+    others (a closed outline repeats its first vertex)."""
+    return _tip(tuple(tuple(p) for p in pts))
 
 
 def point_segment(px: float, py: float, s: Segment) -> float:
