@@ -402,6 +402,8 @@ def _scheme_dxf(variant, label: str, path: Path, move: str = "") -> Path:
     """The scheme of one position drawn as a CAD user draws it: joints as circles with
     capital letters beside them, links as lines from circle to circle, the caption with
     its position and Kl; ``move``: that joint drawn 3 mm off its place."""
+    import itertools
+
     import ezdxf
     import numpy as np
 
@@ -421,11 +423,11 @@ def _scheme_dxf(variant, label: str, path: Path, move: str = "") -> Path:
     msp = doc.modelspace()
     for n, xy in at.items():
         msp.add_circle(tuple(xy), 1.0)
-        msp.add_text(n, dxfattribs={"height": 3.5}).set_placement(tuple(xy + [2.0, 1.5]))
+        msp.add_text(n, dxfattribs={"height": 3.5}).set_placement(tuple(xy + np.array([2.0, 1.5])))
     mech = ref.mech
     for link in [mech.crank.link, *mech.links]:
         pts = [q for q in mech.points_of(link) if q in at]
-        for a, b in zip(pts, pts[1:], strict=False):
+        for a, b in itertools.pairwise(pts):
             A, B = at[a], at[b]
             u = (B - A) / np.hypot(*(B - A))
             msp.add_line(tuple(A + u), tuple(B - u))  # from rim to rim
