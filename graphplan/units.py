@@ -33,9 +33,11 @@ def unit_text(unit: str, lang: str) -> str:
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 """Mantissas of the usual scale factors."""
 
-PLAN_SERIES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+PLAN_SERIES = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 """Mantissas of the scales of the velocity and acceleration plans: round numbers a student
-divides by (μv = 0,003 (м/с)/мм), close enough that a plan fills at least 3/4 of its place."""
+divides by (μv = 0,003 (м/с)/мм), close enough that a plan fills at least 3/4 of its place
+(1.2 between 1 and 1.5: a shaper's plans at μv = 0,012 keep pa over 50 mm and the idle
+stroke's fastest vector under VECTOR_HARD, where 0,01 and 0,015 give one or the other)."""
 
 
 def nice_ceil(value: float, series: tuple[float, ...] = SERIES) -> float:

@@ -53,7 +53,8 @@ LONGEST_MIN, MEDIAN_MIN = 40.0, 50.0
 #: increment removes what it fixes (strict xfail: a case that starts passing fails here
 #: until it is removed from this list).
 TODO = {
-    *((n, s, "filled") for n in EXAMPLES for s in (1, 2)),
+    *((n, 2, "filled") for n in EXAMPLES),
+    *((n, 1, "filled") for n in EXAMPLES if n != "sixbar_press"),
 }
 
 

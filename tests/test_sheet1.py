@@ -254,3 +254,43 @@ def test_sense_of_rotation_is_drawn_at_the_crank(built, name, ccw):
     turn = t0[0] * t1[1] - t0[1] * t1[0]
     assert (turn < 0) == ccw
     assert any(isinstance(t, Text) and t.text == "ω1" for t in iter_leaves(sheet.items))
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "fourbar", "scotch_yoke"])
+def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(name):
+    """A scheme of the mechanism in each position of the acceleration plans, with a curved
+    arrow and a letter ω2, ε2 … for every link that turns there, its head at the end the
+    solver's sign turns to (counter-clockwise positive; the plans flip only y)."""
+    from graphplan.drawing import Arc
+    from graphplan.drawing.sheet import arc_point
+
+    a, sheet, _ = built(name)
+    sc = sheet_scales(a.mech, a.kin)
+    leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
+    texts = {it.text for it in leaves.values() if isinstance(it, Text)}
+    assert sc.acc_plans and len(sc.layout.schemes) == len(sc.acc_plans)
+    for k in sc.acc_plans:
+        for link in a.mech.moving_links:
+            for sym, value in (("ω", a.kin.vel.omega[link][k]), ("ε", a.kin.acc.epsilon[link][k])):
+                ident = f"sch{k}-{sym}{link}"
+                if abs(value) < 1e-9:
+                    assert f"{ident}-arc" not in leaves
+                    continue
+                arc, head = leaves[f"{ident}-arc"], leaves[f"{ident}-head"]
+                assert isinstance(arc, Arc) and f"{sym}{link}" in texts
+                # the head sits at the arc's counter-clockwise end (as seen) when value > 0
+                end = arc_point(arc.centre, arc.r, arc.end_deg if value > 0 else arc.start_deg)
+                assert math.dist(end, head.p1) < 1e-6, (ident, value)
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "sixbar_press"])
+def test_structural_scheme_draws_each_assur_group_apart(name):
+    a, sheet, _ = built(name)
+    leaves = [it for it in iter_leaves(sheet.items) if it.id and it.id.startswith("groups-")]
+    formulas = [it.text for it in leaves if it.id.endswith("-formula")]
+    assert formulas == [f"I({a.structure.initial[0]},{a.structure.initial[1]})"] + [
+        g.formula for g in a.structure.groups]
+    for i, g in enumerate(a.structure.groups, start=1):
+        drawn = {it.id.split("-")[3] for it in leaves
+                 if it.id.startswith((f"groups-{i}-link-", f"groups-{i}-slider-"))}
+        assert set(g.links) <= drawn, (g.formula, drawn)

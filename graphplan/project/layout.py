@@ -4,12 +4,14 @@ The page is cut as a student cuts it:
 
 * a **left column** holding the plan of positions (top) and the kinematic
   diagrams s(φ), v(φ), a(φ) (below it);
-* a **grid** to its right with one cell per plan: the velocity plans of all
-  positions, then their acceleration plans, in reading order;
+* **rows of cells** to its right, one cell per plan, each as large as its own plan
+  needs: the velocity plans of all positions, then the acceleration plans of the
+  analysed positions, in reading order; under them a scheme of the mechanism in each
+  analysed position (with its ω and ε) and the structural scheme (the Assur groups);
 * a **bottom strip** under the grid with the table of the plans, and the block of
   scales above the title block.
 
-The cell size fixes the scales Kv and Ka (each plan fills its cell), so the
+The cells' sizes fix the scales Kv and Ka (each plan fills its cell), so the
 layout is computed before the plans are drawn, from sizes only. Paper mm, y down.
 """
 
@@ -33,7 +35,8 @@ def structure_block_height(n_groups: int) -> float:
     structure, a line per Assur group, the stroke (swing) and time ratio, the arcs."""
     return 13.0 + STRUCTURE_LINE * (4 + n_groups)
 DIAGRAM_MIN = (200.0, 130.0)  #: smallest useful box of the three diagrams, mm
-DIAGRAM_MAX_H = 240.0
+DIAGRAM_MAX_H = 330.0
+DIAGRAM_PREF_H = 180.0  #: the diagrams' height the schemes leave them in the left column, mm
 
 
 def diagram_min(page: Page) -> tuple[float, float]:
@@ -48,9 +51,10 @@ class Sheet1Layout:
 
     ``plan_box`` is where the plan of positions goes (its own size, centred in the
     left column), ``diagrams`` the box of the three diagrams, ``v_cells`` the cells of the
-    velocity plans (one per drawn position), ``a_cells`` the larger cells of the
-    acceleration plans (the positions chosen for them), ``table`` the top-left corner and
-    width available for the table of the plans, ``scales`` the box of the list of scales.
+    velocity plans (one per drawn position), ``a_cells`` the cells of the acceleration
+    plans (the positions chosen for them), ``schemes`` one cell per analysed position,
+    ``groups`` the cell of the structural scheme, ``table`` the top-left corner and width
+    available for the table of the plans, ``scales`` the box of the list of scales.
     """
 
     page: Page
@@ -62,6 +66,8 @@ class Sheet1Layout:
     scales: Rect
     plan_size: float = 0.0  #: the smaller defining vector (pa, πa) the cells allow, mm
     structure: Rect | None = None  #: the block of the structural analysis
+    schemes: tuple[Rect, ...] = ()  #: the mechanism in each analysed position, its ω and ε
+    groups: Rect | None = None  #: the structural scheme: the Assur groups drawn apart
 
     @property
     def cells(self) -> tuple[Rect, ...]:
@@ -78,111 +84,190 @@ CELL_MARGIN = 5.0  #: room kept on each side of a plan in its cell for its lette
 OVERSHOOT = 6.0  #: construction lines run this far past their intersection, mm
 VECTOR_MAX = 100.0  #: the method's longest main vector of a plan, mm
 MIN_PLAN = 4.0  #: the shortest defining vector (pa) a plan is drawn with, mm
-VECTOR_HARD = 125.0  #: the longest vector a plan may have: the method wants 50-100 mm, but one Kv
+VECTOR_HARD = 150.0  #: the longest vector a plan may have: the method wants 50-100 mm, but one Kv
 #: for every position cannot keep a shaper's pa (at the dead centres the longest vector) at 50 mm
-#: and its idle stroke (2.3·pa) under 100 mm: the median plan is then read at 50 mm
+#: and its idle stroke (2.3·pa) under 100 mm: the plans of most positions are kept at 50 mm
+#: or more, the idle stroke's fastest then over 100 mm
 
 
-def _grid(x0: float, y0: float, w: float, h: float, n: int, shape: tuple[float, float],
-          cap: float) -> tuple[float, tuple[Rect, ...]]:
-    """The grid of ``n`` cells in the box that gives the largest plan of ``shape`` (its
-    width and height per mm of the defining vector): that vector's length and the cells."""
-    best: tuple[float, int, int] | None = None
-    for ncol in range(1, n + 1):
-        nrow = math.ceil(n / ncol)
-        cw, ch = w / ncol, h / nrow
-        iw = cw - 2 * CELL_MARGIN - 2 * OVERSHOOT
-        ih = ch - CAPTION - 2 * CELL_MARGIN - 2 * OVERSHOOT
-        size = min(iw / max(shape[0], 1e-9), ih / max(shape[1], 1e-9), cap)
-        if best is None or size > best[0] + 1e-9:
-            best = (size, ncol, nrow)
-    size, ncol, nrow = best  # type: ignore[misc]
-    cw, ch = w / ncol, h / nrow
-    return size, tuple(Rect(x0 + (i % ncol) * cw, y0 + (i // ncol) * ch,
-                            x0 + (i % ncol + 1) * cw, y0 + (i // ncol + 1) * ch)
-                       for i in range(n))
+MIN_CELL_W = 64.0  #: narrowest plan cell: its caption («План ускорений, пол. 10») fits, mm
+SCHEME_H = (60.0, 140.0)  #: least and greatest height of a scheme of an analysed position, mm
+GROUPS_H = 60.0  #: least height of the cell of the structural scheme (the Assur groups), mm
+COLUMN_SHARE = 0.34  #: the left column (positions, diagrams) is at least this share of the frame
+
+
+def cell_room(cell: Rect) -> tuple[float, float]:
+    """Room for a plan's own extent in ``cell``: less its caption, margins and the
+    construction lines' overshoot, mm."""
+    return (cell.width - 2 * CELL_MARGIN - 2 * OVERSHOOT,
+            cell.height - CAPTION - 2 * CELL_MARGIN - 2 * OVERSHOOT)
+
+
+def _cell_size(shape: tuple[float, float], size: float) -> tuple[float, float]:
+    """The cell a plan of ``shape`` (mm per mm of its defining vector) needs at ``size``."""
+    return (max(MIN_CELL_W, shape[0] * size + 2 * CELL_MARGIN + 2 * OVERSHOOT),
+            shape[1] * size + CAPTION + 2 * CELL_MARGIN + 2 * OVERSHOOT)
+
+
+def _shelves(x0: float, y0: float, width: float, boxes: list[tuple[float, float]]
+             ) -> tuple[float, list[list[int]]]:
+    """Boxes laid in rows, in reading order (a row is as tall as its tallest box): the
+    total height and the indices of each row."""
+    rows: list[list[int]] = []
+    x = math.inf
+    for i, (w, _) in enumerate(boxes):
+        if x + w > width + 1e-9:
+            rows.append([])
+            x = 0.0
+        rows[-1].append(i)
+        x += w
+    return sum(max(boxes[i][1] for i in r) for r in rows), rows
+
+
+def _place(x0: float, y0: float, width: float, boxes: list[tuple[float, float]],
+           rows: list[list[int]], extra_h: list[float] | None = None
+           ) -> tuple[list[Rect], float]:
+    """The rectangles of ``boxes`` in ``rows``, each row stretched to ``width`` (the spare
+    width shared by its boxes) and made ``extra_h[i]`` taller: the rects and their bottom."""
+    out: list[Rect | None] = [None] * len(boxes)
+    y = y0
+    for n, r in enumerate(rows):
+        h = max(boxes[i][1] for i in r) + (extra_h[n] if extra_h else 0.0)
+        spare = (width - sum(boxes[i][0] for i in r)) / len(r)
+        x = x0
+        for i in r:
+            w = boxes[i][0] + spare
+            out[i] = Rect(x, y, x + w, y + h)
+            x += w
+        y += h
+    return [r for r in out if r is not None], y
 
 
 def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
-                  n_plans: int | None = None, n_acc: int | None = None,
-                  shape: tuple[float, float, float, float] = (2.0, 2.0, 2.0, 2.0),
-                  longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1
-                  ) -> Sheet1Layout:
+                  v_shapes: tuple[tuple[float, float], ...],
+                  a_shapes: tuple[tuple[float, float], ...] = (),
+                  longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1,
+                  scheme_aspect: float = 1.0, groups_aspect: float = 2.0) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
-    The region right of the left column holds, above the table's strip, a grid of the
-    ``n_plans`` velocity plans (default: every position) and under it a row of the
-    ``n_acc`` acceleration plans (default: as many). ``shape`` is the largest width and
-    height of a velocity and of an acceleration plan per mm of its defining vector (pa,
-    πa), ``longest`` its longest vector per mm of it: the split between the two and the
-    grid are those that make the smaller of the two defining vectors the longest, neither
-    plan's longest vector over VECTOR_MAX. Raises LayoutError when the plan of positions
-    leaves no room.
+    The left column holds the plan of positions and under it the kinematic diagrams (the
+    rest of its height). Right of it, above the strip of the table, the velocity plans
+    (``v_shapes``: each plan's width and height per mm of its defining vector pa, in cell
+    order) are laid in rows, each cell as large as its own plan needs, then the
+    acceleration plans (``a_shapes``, per mm of πa). The schemes — the mechanism in each
+    analysed position with its ω and ε (``scheme_aspect`` = width/height) and the
+    structural scheme with the Assur groups drawn apart (``groups_aspect``) — go beside a
+    plan of positions narrower than its column, or under it when the column is tall
+    enough for them and the diagrams, else after the plans. The defining vectors are made
+    as long as the place allows (neither plan's longest vector over VECTOR_HARD,
+    ``longest`` per mm of it); the height left grows the schemes, then every row.
+    Raises LayoutError when the plan of positions leaves no room.
     """
     f = page.frame
     top = f.y0 + GRAPH26_SIZE[1] + 4.0
     dmin_w, dmin_h = diagram_min(page)
-    left_w = max(plan_w, dmin_w)
-    if plan_h + GAP + dmin_h > f.y1 - top - 4.0 or left_w > f.width * 0.55:
+    left_w = max(plan_w, dmin_w, COLUMN_SHARE * f.width)
+    if plan_h + GAP + dmin_h > f.y1 - top - 4.0 or plan_w > f.width * 0.55:
         raise LayoutError(
             f"the plan of positions ({plan_w:.0f}×{plan_h:.0f} mm) does not leave room for the "
             f"plans on {page.format}: choose a smaller Kl (drawing.Kl) or a larger format"
         )
     x0 = f.x0 + 4.0
-    plan_box = Rect(x0 + (left_w - plan_w) / 2, top, x0 + (left_w + plan_w) / 2, top + plan_h)
-    d_h = min(f.y1 - 4.0 - (plan_box.y1 + GAP), DIAGRAM_MAX_H)
+    gx0, gx1 = x0 + left_w + GAP + 4.0, f.x1 - 4.0
+    W = gx1 - gx0
+    n_s = len(a_shapes)
+
+    def extras(width: float) -> list[tuple[float, float]]:
+        s_w = min(width, max(SCHEME_H[0] * scheme_aspect, MIN_CELL_W))
+        g_w = min(width, max(GROUPS_H * groups_aspect, MIN_CELL_W))
+        return [(s_w, SCHEME_H[0] + CAPTION)] * n_s + [(g_w, GROUPS_H + CAPTION)]
+
+    def grown(rows, room):
+        """Extra height of each row of schemes: ``room`` shared, SCHEME_H's range each."""
+        each = min(room / max(len(rows), 1), SCHEME_H[1] - SCHEME_H[0])
+        return [max(each, 0.0)] * len(rows)
+
+    # the schemes beside a plan of positions narrower than the column, or between it and
+    # the diagrams when the column is tall enough for both, else after the plans
+    side_w = left_w - plan_w - GAP
+    beside = under = False
+    schemes: list[Rect] = []
+    if side_w >= MIN_CELL_W:
+        ex = extras(side_w)
+        h_side, rows_side = _shelves(0.0, 0.0, side_w, ex)
+        beside = h_side <= plan_h
+        if beside:
+            plan_box = Rect(x0, top, x0 + plan_w, top + plan_h)
+            schemes, _ = _place(x0 + plan_w + GAP, top, side_w, ex, rows_side,
+                                grown(rows_side, plan_h - h_side))
+    if not beside:
+        plan_box = Rect(x0 + (left_w - plan_w) / 2, top, x0 + (left_w + plan_w) / 2,
+                        top + plan_h)
+    rest = f.y1 - 4.0 - (plan_box.y1 + GAP)
+    d_top = plan_box.y1 + GAP
+    if not beside:
+        ex = extras(left_w)
+        h_left, rows_left = _shelves(0.0, 0.0, left_w, ex)
+        under = rest - h_left - GAP >= max(DIAGRAM_PREF_H, dmin_h)
+        if under:
+            schemes, band_bottom = _place(x0, d_top, left_w, ex, rows_left,
+                                          grown(rows_left, rest - h_left - GAP - DIAGRAM_PREF_H))
+            d_top = band_bottom + GAP
+    d_h = min(f.y1 - 4.0 - d_top, DIAGRAM_MAX_H)
     diagrams = Rect(x0, f.y1 - 4.0 - d_h, x0 + left_w, f.y1 - 4.0)
 
-    gx0, gx1 = x0 + left_w + GAP + 4.0, f.x1 - 4.0
-    n_v = n_positions if n_plans is None else n_plans
-    n_a = n_v if n_acc is None else n_acc
     table_h = ROW * (n_positions + 1) + CAPTION
     tb_w, tb_h = TITLE_BLOCK_SIZE
     struct_h = structure_block_height(n_groups)
     strip = max(table_h, tb_h + GAP + SCALES_BLOCK + struct_h)
     gy0, gy1 = f.y0 + 4.0, f.y1 - strip - GAP
-    W, H = gx1 - gx0, gy1 - gy0
+    H = gy1 - gy0
     cap_v, cap_a = VECTOR_HARD / max(longest[0], 1.0), VECTOR_HARD / max(longest[1], 1.0)
-    best = None
-    step = 2.0
-    ha = 0.0
-    while ha <= H:
-        hv = H - ha
-        if (n_a == 0) != (ha == 0.0) or (n_v == 0) != (hv == 0.0):
-            ha += step
-            continue
-        sv, vc = _grid(gx0, gy0, W, hv, n_v, shape[:2], cap_v) if n_v else (math.inf, ())
-        sa, ac = _grid(gx0, gy0 + hv, W, ha, n_a, shape[2:], cap_a) if n_a else (math.inf, ())
-        score = min(sv, sa)
-        if best is None or score > best[0] + 1e-9:
-            best = (score, vc, ac)
-        ha += step
-    # or: the acceleration plans in the left column, between the plan of positions and
-    # the diagrams (these at their smallest height), the velocity plans over the whole height
-    if n_a and n_v:
-        a_top = plan_box.y1 + GAP
-        a_bot = f.y1 - 4.0 - dmin_h - GAP
-        if a_bot - a_top > 60.0:
-            sa, ac = _grid(x0, a_top, left_w, a_bot - a_top, n_a, shape[2:], cap_a)
-            sv, vc = _grid(gx0, gy0, W, H, n_v, shape[:2], cap_v)
-            if best is None or min(sv, sa) > best[0] + 2.0:
-                best = (min(sv, sa), vc, ac)
-                diagrams = Rect(x0, f.y1 - 4.0 - dmin_h, x0 + left_w, f.y1 - 4.0)
-    # a plan whose defining vector is under MIN_PLAN mm cannot be drawn; a small one (a
-    # mechanism near its toggle, whose other positions' vectors are many times pa) is
-    # drawn small rather than refused: the variant is accepted, its sheets must be drawn
-    if best is None or best[0] < MIN_PLAN:
+    right_extra = [] if beside or under else extras(W)
+    n_plans = len(v_shapes) + len(a_shapes)
+
+    def blocks(size: float):
+        sv, sa = min(size, cap_v), min(size, cap_a)
+        boxes = [_cell_size(sh, sv) for sh in v_shapes] + [_cell_size(sh, sa) for sh in a_shapes]
+        boxes += right_extra
+        if any(b[0] > W + 1e-9 for b in boxes):
+            return None
+        h, rows = _shelves(gx0, gy0, W, boxes)
+        return (h, boxes, rows) if h <= H + 1e-9 else None
+
+    lo, hi = 0.0, max(cap_v, cap_a)
+    if blocks(MIN_PLAN) is None and right_extra:  # a small format: the plans come first
+        right_extra = []
+    if blocks(MIN_PLAN) is None:
         raise LayoutError(
-            f"{n_v + n_a} plans leave too little room on {page.format}: choose the "
-            "positions to draw (drawing.positions) or a larger format"
-        )
-    size, v_cells, a_cells = best
+            f"{n_plans} plans leave too little room on {page.format}: "
+            "choose the positions to draw (drawing.positions) or a larger format")
+    for _ in range(40):
+        mid = (lo + hi) / 2
+        if blocks(mid) is None:
+            hi = mid
+        else:
+            lo = mid
+    size = max(lo, MIN_PLAN)
+    used, boxes, rows = blocks(size)  # type: ignore[misc]
+    # the height left grows the rows of schemes (by SCHEME_H's range), then all rows
+    with_schemes = [i for i, r in enumerate(rows) if any(j >= n_plans for j in r)]
+    extra_h = [0.0] * len(rows)
+    room = H - used
+    for i, g in zip(with_schemes, grown(with_schemes, room), strict=True):
+        extra_h[i] = g
+    room -= sum(extra_h)
+    extra_h = [e + room / len(rows) for e in extra_h]
+    cells, _ = _place(gx0, gy0, W, boxes, rows, extra_h)
+    if right_extra:
+        schemes = cells[n_plans:]
+    v_cells, a_cells = tuple(cells[:len(v_shapes)]), tuple(cells[len(v_shapes):n_plans])
     tbx = f.x1 - tb_w
     table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
     scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
     structure = Rect(tbx, scales.y0 - struct_h, f.x1 - 4.0, scales.y0)
     return Sheet1Layout(page, plan_box, diagrams, v_cells, a_cells, table, scales, size,
-                        structure)
+                        structure, tuple(schemes[:n_s]), schemes[n_s] if schemes else None)
 
 
 @dataclass(frozen=True, slots=True)

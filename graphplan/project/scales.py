@@ -24,12 +24,12 @@ from ..units import PLAN_SERIES, Scale, fit_scale, fmt, nice_ceil
 from .layout import (
     CAPTION,
     GAP,
-    OVERSHOOT,
     VECTOR_HARD,
     VECTOR_MAX,
     Rect,
     Sheet1Layout,
     Sheet2Layout,
+    cell_room,
     diagram_min,
     plan_room,
     sheet1_layout,
@@ -40,6 +40,8 @@ from .layout import (
 
 PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters, mm
 SLACK = 8.0  #: of a cell's margins a plan may take when that spares it the coarser scale, mm
+READ_MIN = 53.0  #: a plan's longest vector, arrowhead included, is read at least this long
+#: (its shaft 50 mm, the method's least main vector), mm
 SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
 TRAJECTORY_POINTS = 360
 SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
@@ -132,27 +134,33 @@ def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
     return tuple(range(kin.n)) if which is None else which
 
 
-def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...]
-                 ) -> tuple[tuple[float, float, float, float], tuple[float, float]]:
-    """Largest width and height of the velocity plans of ``which`` and of the acceleration
-    plans of ``acc``, and their longest vectors, each per mm of its defining vector (pa, πa)."""
+def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...]):
+    """Width and height of the velocity plan of each of ``which`` and of the acceleration
+    plan of each of ``acc`` (in that order), and the longest vector of each of them, all
+    per mm of the plan's defining vector (pa, πa)."""
     from ..plans import acceleration_plan, velocity_plan
 
     cr = mech.crank
     va, aa = abs(cr.omega) * cr.length, cr.omega**2 * cr.length
     trial_v = Scale("Kv", va / 50.0, "(m/s)/mm")
     trial_a = Scale("Ka", max(aa, 1e-12) / 50.0, "(m/s²)/mm")
-    vw = vh = aw = ah = lv = la = 0.0
+    v_shapes: dict[int, tuple[float, float]] = {}
+    a_shapes: dict[int, tuple[float, float]] = {}
+    v_long: dict[int, float] = {}
+    a_long: dict[int, float] = {}
     for k in sorted(set(which) | set(acc)):
         vp = velocity_plan(mech, kin, k, kl, trial_v)
         if k in which:
             w, h = _ptp(vp)
-            vw, vh, lv = max(vw, w), max(vh, h), max(lv, _longest(vp))
+            v_shapes[k] = (w / 50, h / 50)
+            v_long[k] = _longest(vp) / 50
         if k in acc:
             ap = acceleration_plan(mech, kin, k, kl, trial_a, vp)
             w, h = _ptp(ap)
-            aw, ah, la = max(aw, w), max(ah, h), max(la, _longest(ap))
-    return (vw / 50, vh / 50, aw / 50, ah / 50), (lv / 50, la / 50)
+            a_shapes[k] = (w / 50, h / 50)
+            a_long[k] = _longest(ap) / 50
+    return (tuple(v_shapes[k] for k in which), tuple(a_shapes[k] for k in acc),
+            tuple(v_long[k] for k in which), tuple(a_long[k] for k in acc))
 
 
 def _ptp(plan) -> tuple[float, float]:
@@ -237,12 +245,14 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
     given = positions_by_label(mech, kin, "drawing")
     tries = [plan_positions(mech, kin)] if given is not None else [
         tuple(range(kin.n)), tuple(range(0, kin.n, 2)), ()]
+    scheme_aspect = _scheme_aspect(mech, kin, acc)
     for n_try, chosen in enumerate(tries):
         which = tuple(sorted(set(chosen) | set(acc)))
-        shape, longest = _plan_shapes(mech, kin, kl, which, acc)
+        v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc)
+        longest = (max(v_long, default=1.0), max(a_long, default=1.0))
         try:
-            layout = sheet1_layout(page, plan_w, plan_h, kin.n, len(which), len(acc), shape,
-                                   longest, len(mech.dyads))
+            layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
+                                   len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads))
             break
         except LayoutError:
             if n_try == len(tries) - 1:
@@ -250,33 +260,51 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
     va = abs(cr.omega) * cr.length
     aa = cr.omega**2 * cr.length
 
-    def fit(cells, sw, sh, lng, defining) -> float:
-        """Units per mm: the series value that draws the largest plan nearest to filling
-        its cell, its longest vector at most VECTOR_HARD. The usual ceiling of the series
-        may shrink a plan by a third; the next finer value is taken when the plan still
-        fits with the room kept for letters and construction lines eaten by SLACK."""
-        iw, ih = Sheet1Layout.inner(cells[0])
-        iw, ih = iw - 2 * OVERSHOOT, ih - 2 * OVERSHOOT
-        size = min(iw / max(sw, 1e-9), ih / max(sh, 1e-9), VECTOR_MAX / max(lng, 1.0))
-        loose = min((iw + SLACK) / max(sw, 1e-9), (ih + SLACK) / max(sh, 1e-9),
-                    VECTOR_HARD / max(lng, 1.0))
+    def fit(cells, shapes, longs, defining) -> float:
+        """Units per mm: of the series values whose plans all fit their cells (the room
+        kept for letters and construction lines may be eaten by SLACK) with no vector over
+        VECTOR_HARD, the one that draws the most plans with their longest vector READ_MIN
+        to VECTOR_MAX mm long; of equals, the one whose plans are nearest those marks."""
+        rooms = [cell_room(c) for c in cells]
+        loose = min([min((iw + SLACK) / max(sw, 1e-9), (ih + SLACK) / max(sh, 1e-9))
+                     for (iw, ih), (sw, sh) in zip(rooms, shapes, strict=True)]
+                    + [VECTOR_HARD / max(max(longs), 1e-9)])
         d = max(defining, 1e-12)
-        strict = nice_ceil(d / max(size, 1e-9), PLAN_SERIES)
-        e0 = math.floor(math.log10(strict))
-        finer = max((m * 10.0**e for e in (e0 - 1, e0) for m in PLAN_SERIES
-                     if m * 10.0**e < strict * (1 - 1e-9)), default=strict)
-        return float(f"{finer:.12g}") if d / finer <= loose else strict
+        e0 = math.floor(math.log10(d / max(loose, 1e-9)))
+        values = sorted(float(f"{m * 10.0**e:.12g}") for e in (e0 - 1, e0, e0 + 1)
+                        for m in PLAN_SERIES)
+        fitting = [u for u in values if d / u <= loose] or [values[-1]]
 
-    kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, *shape[:2], longest[0], va), 1.0,
+        def score(u):
+            mm = [lg * d / u for lg in longs]
+            good = sum(READ_MIN <= x <= VECTOR_MAX for x in mm)
+            miss = sum(max(READ_MIN - x, 0.0) + max(x - VECTOR_MAX, 0.0) for x in mm)
+            return good, -miss
+
+        return max(fitting, key=score)
+
+    kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, v_shapes, v_long, va), 1.0,
                    quantity=f"v{cr.pin}", defining=va,
                    segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"),
                    series=PLAN_SERIES)
-    a_cells = layout.a_cells or layout.v_cells
-    ka = fit_scale("Ka", "(m/s²)/mm", fit(a_cells, *shape[2:], longest[1], aa), 1.0,
+    ka_fit = fit(layout.a_cells, a_shapes, a_long, aa) if a_shapes else \
+        nice_ceil(aa / 50.0, PLAN_SERIES)
+    ka = fit_scale("Ka", "(m/s²)/mm", ka_fit, 1.0,
                    quantity=f"a{cr.pin}", defining=aa,
                    segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
                    series=PLAN_SERIES)
     return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc)
+
+
+def _scheme_aspect(mech: Mechanism, kin, acc: tuple[int, ...]) -> float:
+    """Width over height of the mechanism in the analysed positions (its joints and frame
+    points, with room for the arrows of ω and ε): the shape of their schemes' cells."""
+    if not acc:
+        return 1.0
+    pts = np.concatenate([np.array([p[k] for p in kin.pos.points.values()]) for k in acc])
+    w, h = np.ptp(pts, axis=0)
+    span = max(float(w), float(h), 1e-12)
+    return float(np.clip((w + 0.25 * span) / (h + 0.25 * span), 0.6, 2.5))
 
 
 def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:
