@@ -26,7 +26,7 @@ from ..project import (
     titled_table,
 )
 from .labels import LabelRequest, place_labels
-from .linkage import (  # WHITE_FILL, slider_point: re-exported for sheet 2
+from .linkage import (
     JOINT_R,
     SLIDER,
     _joints,
@@ -36,8 +36,11 @@ from .linkage import (  # WHITE_FILL, slider_point: re-exported for sheet 2
     link_items,
     turning_arrow,
 )
-from .linkage import (
+from .linkage import (  # re-exported: sheet 2 and the lessons' schemes import them from here
     WHITE_FILL as WHITE_FILL,
+)
+from .linkage import (
+    _pair_points as _pair_points,
 )
 from .linkage import (
     slider_point as slider_point,
