@@ -348,7 +348,7 @@ def test_no_line_thinner_than_gost_thin_line(name, n):
 
 #: A3 does not work yet for these (issue 18, sheets12): the table of the plans is cut to
 #: nothing, the kinematic diagrams' box or sheet 2's cells are too small.
-A3_TODO = {"engine", "offset_slider", "scotch_yoke", "shaper", "shaper_prp", "sixbar_press"}
+A3_TODO = {"engine", "sixbar_press"}
 
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
