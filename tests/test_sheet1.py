@@ -257,7 +257,7 @@ def test_sense_of_rotation_is_drawn_at_the_crank(built, name, ccw):
 
 
 @pytest.mark.parametrize("name", ["press", "shaper", "fourbar", "scotch_yoke"])
-def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(name):
+def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(built, name):
     """A scheme of the mechanism in each position of the acceleration plans, with a curved
     arrow and a letter ω2, ε2 … for every link that turns there, its head at the end the
     solver's sign turns to (counter-clockwise positive; the plans flip only y)."""
@@ -284,7 +284,7 @@ def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(name):
 
 
 @pytest.mark.parametrize("name", ["press", "shaper", "sixbar_press"])
-def test_structural_scheme_draws_each_assur_group_apart(name):
+def test_structural_scheme_draws_each_assur_group_apart(built, name):
     a, sheet, _ = built(name)
     leaves = [it for it in iter_leaves(sheet.items) if it.id and it.id.startswith("groups-")]
     formulas = [it.text for it in leaves if it.id.endswith("-formula")]
