@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import shapely
 
 from ..project import CAPTION
 from ..units import nice_ceil, plain
@@ -73,8 +74,6 @@ def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
     """``draw(P)`` at the finest scale of the series (or at ``kl``) whose drawing — blocks,
     slots and guides included, which the points alone do not bound — fits ``box``,
     centred in it: ``(kl, P, items)``."""
-    import shapely
-
     kl = _fit(points, box.width, box.height) if kl is None else kl
     for _ in range(6):
         P = _centred(points, kl, box)
@@ -229,8 +228,10 @@ def groups_items(analysis, slots, cell: Rect, lang: str, ident: str = "groups") 
         box = boxes[i]
         _, P, drawn = _drawn_to_fit(points_of(links), box, draw(i, links), kl)
         items += drawn
-        items.append(text_at_centre(((box.x0 + box.x1) / 2, cell.y1 - 4.0), formula, 3.5,
-                                    layer="text", id=f"{ident}-{i}-formula"))
+        geoms = [g for it in iter_leaves(drawn) if (g := item_geometry(it)) is not None]
+        under = shapely.union_all(geoms).bounds[3] + 7.0 if geoms else cell.y1 - 4.0
+        items.append(text_at_centre(((box.x0 + box.x1) / 2, min(under, cell.y1 - 4.0)),
+                                    formula, 3.5, layer="text", id=f"{ident}-{i}-formula"))
         own = {p for lk in links for p in mech.points_of(lk)}
         for p in sorted(own):
             if p in kin.pos.points and (p in mech.frame_points or p in _joints(mech)
