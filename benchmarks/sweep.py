@@ -11,7 +11,8 @@ At each number of positions N the methods are timed in turns in one process
 * ``pylinkage numba`` — pylinkage's ``step_fast_with_kinematics`` (positions, velocities,
   accelerations only; compiled on a first call that is not timed);
 * ``pylinkage default`` — its pure-Python ``step_with_derivatives``, timed after the
-  others in a block of its own (it leaves the caches cold for whatever runs next).
+  others, for every N after the other methods of every N (it fills the heap with Python
+  objects, after which numpy's short calls are slower).
 
 The repetitions at each N are as many as fit a time budget (at least 3, at most 31).
 """
@@ -76,7 +77,7 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
                CF_KIN: lambda phi=phi: cs.kinematics(phi),
                CF_FULL: lambda phi=phi: cs.full_cycle(phi)}
         pl = None
-        if have_peer:
+        if have_peer:  # its default path is timed after every size (below)
             from graphplan.kinematics import solve
 
             pl = peers.PylinkageModel(mech, solve(mech, phi[:1]), 0, float(phi[0]), n)
@@ -87,16 +88,6 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
         reps = _reps(single, budget_s)
         times = interleaved(fns, reps)
         med = {k: statistics.median(v) for k, v in times.items()}
-        if pl is not None:
-            # alone, after the others: one warm-up call when a call is short, none when
-            # a call takes seconds (the first call then is a sample like the others)
-            first = _once(pl.sweep_default)
-            reps_d = _reps(first, default_budget_s, lo=3, hi=11)
-            ts = [] if first < 1.0 else [first]
-            gc.collect()
-            while len(ts) < reps_d:
-                ts.append(_once(pl.sweep_default))
-            med[DEFAULT] = statistics.median(ts)
         for m in METHODS:
             out["median_s"][m].append(med.get(m))
         out["repetitions"].append(reps)
@@ -106,6 +97,25 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
                                        if m in med))
         del pl
         gc.collect()
+    # pylinkage's pure-Python path last, alone: it fills the heap with Python objects, and
+    # numpy's many short calls timed after it were measurably slower (graphplan's full
+    # cycle at N = 3,600: 2.7 ms alone, 15 ms after the default path of N = 360)
+    for k, n in enumerate(sizes if have_peer else ()):
+        from graphplan.kinematics import solve
+
+        phi = grid(n)
+        pl = peers.PylinkageModel(mech, solve(mech, phi[:1]), 0, float(phi[0]), n)
+        # one warm-up call when a call is short, none when it takes seconds (the first
+        # call then is a sample like the others)
+        first = _once(pl.sweep_default)
+        reps_d = _reps(first, default_budget_s, lo=3, hi=11)
+        ts = [] if first < 1.0 else [first]
+        gc.collect()
+        while len(ts) < reps_d:
+            ts.append(_once(pl.sweep_default))
+        out["median_s"][DEFAULT][k] = statistics.median(ts)
+        log(f"  N = {n}: {DEFAULT} {out['median_s'][DEFAULT][k] * 1e3:.3g} ms")
+        del pl
     return out
 
 
