@@ -194,11 +194,11 @@ def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
     assert (tmp_path / "sheet1.svg").exists() and (tmp_path / "sheet2.svg").exists()
     from graphplan.files import bundled_example
 
-    # the shaper's sheet 1 (tests/test_norm_control.py A3_TODO): when it fits, take another
-    code, out, err = run(capsys, "sheets", str(bundled_example("shaper")), "--page", "A3",
-                         "-o", str(tmp_path / "shaper"))
+    # the engine's sheet 1 (tests/test_norm_control.py A3_TODO): when it fits, take another
+    code, out, err = run(capsys, "sheets", str(bundled_example("engine")), "--page", "A3",
+                         "-o", str(tmp_path / "engine"))
     assert code == 2 and out == "" and err.count("\n") == 1
-    assert not (tmp_path / "shaper" / "sheet1.svg").exists()
+    assert not (tmp_path / "engine" / "sheet1.svg").exists()
 
 
 def test_json_carries_reactions_and_balancing_moments(capsys):
