@@ -111,3 +111,16 @@ def test_cycle_refuses_a_frame_link_reused_by_a_dyad():
     m = g.loads(text, source="bad.toml")
     with pytest.raises(g.StructureError):
         g.analyse_cycle(m)
+
+
+def test_russian_reports_name_the_dyad_kinds_as_russian_textbooks_do():
+    """В — вращательная пара, П — поступательная (issue 23): RRP is ВВП, RPR is ВПВ."""
+    from graphplan.files import bundled_example
+    from graphplan.project import solve_project
+    from graphplan.reports.tables import structure_text
+
+    p = solve_project(g.load(bundled_example("shaper")))
+    assert [grp.kind_ru for grp in p.structure.groups] == ["ВПВ", "ВВП"]
+    ru, en = structure_text(p, "ru"), structure_text(p, "en")
+    assert "вид ВПВ (3)" in ru and "вид ВВП (2)" in ru and "RPR" not in ru
+    assert "kind RPR (3)" in en and "ВПВ" not in en

@@ -432,7 +432,6 @@ STRUCTURE_WORDS = {
            "ratio": "K = {k}", "mech": "a class II mechanism"},
 }
 
-_KIND_RU = {"RRR": "ВВВ", "RRP": "ВВП", "RPR": "ВПВ", "PRP": "ПВП", "RPP": "ВПП"}
 
 
 def structure_lines(analysis, lang: str) -> list[str]:
@@ -446,7 +445,7 @@ def structure_lines(analysis, lang: str) -> list[str]:
     st, cy, mech = analysis.structure, analysis.cycle, analysis.mech
     lines = [st.mobility_equation, f"{w['formula']}: {st.formula} — {w['mech']}"]
     for g in st.groups:
-        kind = f"{g.kind} ({_KIND_RU[g.kind]})" if lang == "ru" else g.kind
+        kind = f"{g.kind} ({g.kind_ru})" if lang == "ru" else g.kind
         lines.append(f"{kind}({'-'.join(g.links)}): "
                      + w["group"].format(order=g.order, kind=g.kind_number))
     out = mech.output.link

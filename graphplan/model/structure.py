@@ -45,6 +45,12 @@ class AssurGroup:
     order: int = 2
 
     @property
+    def kind_ru(self) -> str:
+        """The kind as Russian textbooks write it: В for a revolute pair (вращательная),
+        П for a prismatic one (поступательная), e.g. ``RRP`` → ``ВВП``."""
+        return self.kind.translate(str.maketrans("RP", "ВП"))
+
+    @property
     def kind_number(self) -> int:
         """Kind (вид) 1…5 of the dyad."""
         return DYAD_KIND_NUMBER[self.kind]

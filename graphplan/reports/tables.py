@@ -91,7 +91,8 @@ def structure_text(a: Analysis, lang: str = "en") -> str:
     for g in st.groups:
         lines.append("  " + t["group"].format(formula=g.formula,
                                               links=f"{g.links[0]}, {g.links[1]}",
-                                              kind=g.kind, num=g.kind_number))
+                                              kind=g.kind_ru if lang == "ru" else g.kind,
+                                              num=g.kind_number))
     lines += ["", f"{t['formula']}: {st.formula}"]
     return "\n".join(lines)
 
