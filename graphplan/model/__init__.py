@@ -30,7 +30,7 @@ from .mechanism import (
     Positions,
     Resistance,
 )
-from .structure import AssurGroup, Pair, Structure, analyse, pairs_of
+from .structure import AssurGroup, Pair, Structure, analyse, pairs_of, russian_kind
 from .toml_text import one_line, parse_toml
 
 __all__ = [
@@ -67,4 +67,5 @@ __all__ = [
     "one_line",
     "pairs_of",
     "parse_toml",
+    "russian_kind",
 ]

@@ -34,6 +34,15 @@ class Pair:
         return f"{self.kind}{where} ({self.links[0]}-{self.links[1]})"
 
 
+_RU_PAIRS = str.maketrans("RP", "ВП")
+
+
+def russian_kind(kind: str) -> str:
+    """A dyad's kind as Russian textbooks write it: В for a revolute pair (вращательная),
+    П for a prismatic one (поступательная), e.g. ``RRP`` → ``ВВП``."""
+    return kind.translate(_RU_PAIRS)
+
+
 @dataclass(frozen=True, slots=True)
 class AssurGroup:
     """A class-II group (dyad) found on the pair graph: topology only, no lengths."""
@@ -46,9 +55,8 @@ class AssurGroup:
 
     @property
     def kind_ru(self) -> str:
-        """The kind as Russian textbooks write it: В for a revolute pair (вращательная),
-        П for a prismatic one (поступательная), e.g. ``RRP`` → ``ВВП``."""
-        return self.kind.translate(str.maketrans("RP", "ВП"))
+        """The kind as Russian textbooks write it (:func:`russian_kind`)."""
+        return russian_kind(self.kind)
 
     @property
     def kind_number(self) -> int:

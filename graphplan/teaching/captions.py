@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..model import russian_kind
 from ..plans import ZERO_MM
 from ..units import UNITS_RU, plain, unit_text
 from .model import Result
@@ -124,8 +125,7 @@ def group_name(group: str, lang: str) -> str:
     if m is None:
         return group
     if lang == "ru":
-        kind = m[1].replace("R", "В").replace("P", "П")
-        return f"группа Ассура II класса 2-го порядка {kind} (звенья {m[2]}–{m[3]})"
+        return f"группа Ассура II класса 2-го порядка {russian_kind(m[1])} (звенья {m[2]}–{m[3]})"
     return f"Assur group of class II, order 2, {m[1]} (links {m[2]}–{m[3]})"
 
 
