@@ -315,19 +315,119 @@ def _refuse_translating_driver(data: dict, r: _Reader) -> None:
 
 
 def _build(data: dict, r: _Reader) -> Mechanism:
+    """The variant's sections read in the order they depend on one another.
+
+    Each section has its own reader below; a later one sees the links and points the
+    earlier ones defined (:class:`_Known`), so a key naming a point or a link that comes
+    later is refused with the ones known so far.
+    """
     _refuse_translating_driver(data, r)
+    _check_sections(data, r)
+    name, unit_name, unit = _variant(data, r)
+    frame_points, known = _frame(data, r, unit)
+    crank = _crank(data["crank"], r, known, unit)
+    points = _ExtraPoints(data, r, unit)
+    points.place(known)
+    dyads = _dyads(data, r, known, unit, points)
+    points.refuse_unplaced(known)
+    g, gravity = _gravity(data, r)
+    links = _masses(data, r, known, crank.link, g)
+    output = _output(data, r, known, dyads)
+    positions = _positions(data, r)
+    resistances = _loads(r, data, dict(
+        frame_link=known.frame, link_points=known.link_points, link_order=known.order,
+        known_points=known.points, dyads=dyads, crank=crank, output=output, unit=unit,
+        cycle=positions.cycle))
+    settings = {
+        sec: data[sec]
+        for sec in ("kinetostatics", "dynamics", "drawing", "title_block", "variant")
+        if sec in data
+    }
+    _check_settings(r, settings)
+    return Mechanism(
+        name=name,
+        source=r.source,
+        frame_link=known.frame,
+        frame_points=frame_points,
+        crank=crank,
+        dyads=tuple(dyads),
+        points=tuple(points.placed),
+        links=links,
+        gravity=gravity,
+        resistances=tuple(resistances),
+        positions=positions,
+        output=output,
+        length_unit=unit_name,
+        settings=settings,
+    )
+
+
+class _Known:
+    """The links and points the sections read so far have defined.
+
+    ``points`` maps a point to its home link, ``link_points`` a link to its points (in the
+    order they were defined), ``order`` the links in the order they were defined.
+    """
+
+    def __init__(self, r: _Reader, frame: str, frame_points: list[str]):
+        self.r = r
+        self.frame = frame
+        self.points: dict[str, str] = {p: frame for p in frame_points}
+        self.link_points: dict[str, list[str]] = {frame: list(frame_points)}
+        self.order: list[str] = [frame]
+
+    def point(self, value: Any, path: str, *, known: bool) -> str:
+        """A point's name: one defined before (``known``) or a new one."""
+        p = self.r.name(value, path)
+        if known and p not in self.points:
+            have = ", ".join(self.points) or "none"
+            raise self.r.fail(path, f"point {p!r} is not defined before this (known: {have})")
+        if not known and p in self.points:
+            raise self.r.fail(path, f"point {p!r} is already defined; a new joint needs a new "
+                              "name")
+        return p
+
+    def link(self, value: Any, path: str, *, known: bool) -> str:
+        """A link's name (one defined before when ``known``)."""
+        ln = self.r.link(value, path)
+        if known and ln not in self.link_points:
+            have = ", ".join(self.order)
+            raise self.r.fail(path, f"link {ln!r} is not defined before this (known: {have})")
+        return ln
+
+    def on_link(self, value: Any, path: str, ln: str) -> str:
+        """The name of a point of link ``ln``."""
+        p = self.r.name(value, path)
+        if p not in self.link_points[ln]:
+            raise self.r.fail(path, f"point {p!r} is not on link {ln!r} "
+                              f"(its points: {', '.join(self.link_points[ln])})")
+        return p
+
+    def add(self, point: str, ln: str) -> None:
+        """Point ``point`` is now known, on link ``ln``."""
+        self.points[point] = ln
+        self.link_points[ln].append(point)
+
+
+def _check_sections(data: dict, r: _Reader) -> None:
+    """Only known sections, the required ones present, and only known keys in each."""
     r.keys(data, "", set(SECTIONS), {"frame", "crank", "dyads"})
     for sec, allowed in SECTIONS.items():
         if sec in data and allowed is not None:
             r.keys(r.table(data[sec], sec), sec, allowed)
 
+
+def _variant(data: dict, r: _Reader) -> tuple[str, str, float]:
+    """``[variant]``: the name, the length unit's name and its size in metres."""
     variant = r.table(data.get("variant", {}), "variant")
     unit_name = r.string(variant.get("length_unit", "m"), "variant.length_unit",
                          tuple(LENGTH_UNITS))
-    unit = LENGTH_UNITS[unit_name]
     name = r.string(variant.get("name", Path(r.source).stem), "variant.name")
+    return name, unit_name, LENGTH_UNITS[unit_name]
 
-    # -- frame
+
+def _frame(data: dict, r: _Reader, unit: float) -> tuple[dict[str, tuple[float, float]], _Known]:
+    """``[frame]``: the frame link and its fixed points (in metres)."""
     frame = r.table(data["frame"], "frame")
     r.keys(frame, "frame", SECTIONS["frame"], {"link", "points"})
     frame_link = r.link(frame["link"], "frame.link")
@@ -338,39 +438,34 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         frame_points[k] = r.xy(v, f"frame.points.{k}", unit)
     if not frame_points:
         raise r.fail("frame.points", "expected at least one fixed point (the crank pivot)")
+    return frame_points, _Known(r, frame_link, list(frame_points))
 
-    known_points: dict[str, str] = {p: frame_link for p in frame_points}  # point -> home link
-    link_points: dict[str, list[str]] = {frame_link: list(frame_points)}
-    link_order: list[str] = [frame_link]
 
-    def need_point(value: Any, path: str, *, known: bool) -> str:
-        p = r.name(value, path)
-        if known and p not in known_points:
-            have = ", ".join(known_points) or "none"
-            raise r.fail(path, f"point {p!r} is not defined before this (known: {have})")
-        if not known and p in known_points:
-            raise r.fail(path, f"point {p!r} is already defined; a new joint needs a new name")
-        return p
-
-    def need_link(value: Any, path: str, *, known: bool) -> str:
-        ln = r.link(value, path)
-        if known and ln not in link_points:
-            have = ", ".join(link_order)
-            raise r.fail(path, f"link {ln!r} is not defined before this (known: {have})")
-        return ln
-
-    # -- crank
-    crank_t = data["crank"]
+def _crank(crank_t: dict, r: _Reader, known: _Known, unit: float) -> Crank:
+    """``[crank]``, the driving link: its pivot on the frame, its pin, length and speed."""
     r.keys(crank_t, "crank", SECTIONS["crank"], {"link", "joints", "length"})
     crank_link = r.link(crank_t["link"], "crank.link")
-    if crank_link == frame_link:
-        raise r.fail("crank.link", f"the crank cannot be the frame link {frame_link!r}")
+    if crank_link == known.frame:
+        raise r.fail("crank.link", f"the crank cannot be the frame link {known.frame!r}")
     cj = r.array(crank_t["joints"], "crank.joints", 2)
-    pivot = need_point(cj[0], "crank.joints[0]", known=True)
-    if known_points[pivot] != frame_link:
+    pivot = known.point(cj[0], "crank.joints[0]", known=True)
+    if known.points[pivot] != known.frame:
         raise r.fail("crank.joints[0]", f"the crank pivot {pivot!r} must be a frame point")
-    pin = need_point(cj[1], "crank.joints[1]", known=False)
+    pin = known.point(cj[1], "crank.joints[1]", known=False)
     length = r.length(crank_t["length"], "crank.length", unit)
+    rpm, omega = _crank_speed(crank_t, r)
+    known.points[pin] = crank_link
+    known.link_points[crank_link] = [pivot, pin]
+    known.order.append(crank_link)
+    return Crank(crank_link, pivot, pin, length, rpm, omega)
+
+
+def _crank_speed(crank_t: dict, r: _Reader) -> tuple[float, float]:
+    """The crank's speed: n1 in rpm and the signed ω1 in rad/s (+ counter-clockwise).
+
+    Given as ``rpm`` (n1) or ``omega`` (ω1, rad/s); ω1 = π·n1/30, its sign from
+    ``direction``.
+    """
     if "rpm" not in crank_t and "omega" not in crank_t:
         raise r.fail("crank.rpm", "missing required key: the crank speed, 'rpm' (n1, rpm) "
                      "or 'omega' (ω1, rad/s)")
@@ -387,160 +482,182 @@ def _build(data: dict, r: _Reader) -> Mechanism:
     omega = math.pi * rpm / 30.0 * (1.0 if direction == "ccw" else -1.0)
     if "omega" in crank_t:
         omega = math.copysign(float(crank_t["omega"]), omega)  # exactly as given
-    crank = Crank(crank_link, pivot, pin, length, rpm, omega)
-    known_points[pin] = crank_link
-    link_points[crank_link] = [pivot, pin]
-    link_order.append(crank_link)
+    return rpm, omega
 
-    # -- extra points: defined in [[points]], placed as soon as their link is known
-    raw_points = data.get("points", [])
-    r.array(raw_points, "points")
-    pending: list[tuple[int, dict]] = []
-    for n, pt in enumerate(raw_points):
-        path = f"points[{n}]"
-        r.table(pt, path)
-        r.keys(pt, path, {"name", "link", "from", "toward", "along", "across", "fraction"},
-               {"name", "link", "from"})
-        pending.append((n, pt))
-    points: list[PointOnLink] = []
 
-    def place_points() -> None:
+POINT_KEYS = {"name", "link", "from", "toward", "along", "across", "fraction"}
+
+
+class _ExtraPoints:
+    """``[[points]]``: points defined on a link, placed as soon as their link is known."""
+
+    def __init__(self, data: dict, r: _Reader, unit: float):
+        self.r = r
+        self.unit = unit
+        raw_points = data.get("points", [])
+        r.array(raw_points, "points")
+        self.pending: list[tuple[int, dict]] = []
+        for n, pt in enumerate(raw_points):
+            path = f"points[{n}]"
+            r.table(pt, path)
+            r.keys(pt, path, POINT_KEYS, {"name", "link", "from"})
+            self.pending.append((n, pt))
+        self.placed: list[PointOnLink] = []
+
+    def place(self, known: _Known) -> None:
+        """Place every pending point whose link is known (a point may stand on another)."""
         progress = True
         while progress:
             progress = False
-            for item in list(pending):
+            for item in list(self.pending):
                 n, pt = item
-                path = f"points[{n}]"
-                ln = r.link(pt["link"], f"{path}.link")
-                if ln not in link_points:
+                ln = self.r.link(pt["link"], f"points[{n}].link")
+                if ln not in known.link_points:
                     continue
-                nm = need_point(pt["name"], f"{path}.name", known=False)
-                origin = r.name(pt["from"], f"{path}.from")
-                if origin not in link_points[ln]:
-                    raise r.fail(f"{path}.from", f"point {origin!r} is not on link {ln!r} "
-                                 f"(its points: {', '.join(link_points[ln])})")
-                toward = None
-                if "toward" in pt:
-                    toward = r.name(pt["toward"], f"{path}.toward")
-                    if toward not in link_points[ln]:
-                        raise r.fail(f"{path}.toward", f"point {toward!r} is not on link {ln!r} "
-                                     f"(its points: {', '.join(link_points[ln])})")
-                    if toward == origin:
-                        raise r.fail(f"{path}.toward", "must differ from 'from'")
-                fraction = None
-                if "fraction" in pt:
-                    if toward is None:
-                        raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
-                    if "along" in pt:
-                        raise r.fail(f"{path}.fraction",
-                                     "give either 'fraction' or 'along', not both")
-                    fraction = r.number(pt["fraction"], f"{path}.fraction", lo=-100, hi=100)
-                along = r.length(pt.get("along", 0.0), f"{path}.along", unit, signed=True)
-                across = r.length(pt.get("across", 0.0), f"{path}.across", unit, signed=True)
-                points.append(PointOnLink(nm, ln, origin, toward, along, across, fraction))
-                known_points[nm] = ln
-                link_points[ln].append(nm)
-                pending.remove(item)
+                self.placed.append(self._point(f"points[{n}]", pt, ln, known))
+                self.pending.remove(item)
                 progress = True
 
-    if frame_link in link_points:
-        place_points()
+    def _point(self, path: str, pt: dict, ln: str, known: _Known) -> PointOnLink:
+        r = self.r
+        nm = known.point(pt["name"], f"{path}.name", known=False)
+        origin = known.on_link(pt["from"], f"{path}.from", ln)
+        toward = None
+        if "toward" in pt:
+            toward = known.on_link(pt["toward"], f"{path}.toward", ln)
+            if toward == origin:
+                raise r.fail(f"{path}.toward", "must differ from 'from'")
+        fraction = None
+        if "fraction" in pt:
+            if toward is None:
+                raise r.fail(f"{path}.fraction", "needs 'toward' (fraction of from→toward)")
+            if "along" in pt:
+                raise r.fail(f"{path}.fraction", "give either 'fraction' or 'along', not both")
+            fraction = r.number(pt["fraction"], f"{path}.fraction", lo=-100, hi=100)
+        along = r.length(pt.get("along", 0.0), f"{path}.along", self.unit, signed=True)
+        across = r.length(pt.get("across", 0.0), f"{path}.across", self.unit, signed=True)
+        known.add(nm, ln)
+        return PointOnLink(nm, ln, origin, toward, along, across, fraction)
 
-    # -- dyads
-    raw_dyads = r.array(data["dyads"], "dyads", minlen=1)
+    def refuse_unplaced(self, known: _Known) -> None:
+        """A point left pending names a link that no section defined."""
+        if self.pending:
+            n, pt = self.pending[0]
+            raise self.r.fail(f"points[{n}].link", f"link {pt['link']!r} is not a link of this "
+                              f"mechanism (links: {', '.join(known.order)})")
+
+
+#: Keys of a dyad beyond kind, links, joints and branch: (allowed, required) by kind.
+DYAD_KEYS = {
+    "RRR": ({"lengths"}, {"lengths"}),
+    "RRP": ({"length", "guide"}, {"length", "guide"}),
+    "RPR": ({"offset"}, set()),
+    "PRP": ({"guides"}, {"guides"}),
+    "RPP": ({"guide", "slot_angle"}, {"guide"}),
+}
+
+
+def _dyads(data: dict, r: _Reader, known: _Known, unit: float,
+           points: _ExtraPoints) -> list[Dyad]:
+    """``[[dyads]]``: the Assur groups in the order they are attached."""
     dyads: list[Dyad] = []
-    for n, dt in enumerate(raw_dyads):
-        path = f"dyads[{n}]"
-        r.table(dt, path)
-        kind = r.string(dt.get("kind"), f"{path}.kind", DYAD_KINDS) if "kind" in dt else None
-        if kind is None:
-            raise r.fail(f"{path}.kind", "missing required key")
-        allowed = {"kind", "links", "joints", "branch"}
-        required = {"kind", "links", "joints"}
-        extra = {
-            "RRR": ({"lengths"}, {"lengths"}),
-            "RRP": ({"length", "guide"}, {"length", "guide"}),
-            "RPR": ({"offset"}, set()),
-            "PRP": ({"guides"}, {"guides"}),
-            "RPP": ({"guide", "slot_angle"}, {"guide"}),
-        }[kind]
-        r.keys(dt, path, allowed | extra[0], required | extra[1])
-        lk = r.array(dt["links"], f"{path}.links", 2)
-        li = need_link(lk[0], f"{path}.links[0]", known=False)
-        lj = need_link(lk[1], f"{path}.links[1]", known=False)
-        jt = r.array(dt["joints"], f"{path}.joints", JOINT_COUNT[kind])
-        new_idx = NEW_JOINTS[kind]
-        joints = tuple(
-            need_point(v, f"{path}.joints[{m}]", known=m not in new_idx) for m, v in enumerate(jt)
-        )
-        if len(set(joints)) != len(joints):
-            raise r.fail(f"{path}.joints", f"joints must be distinct (got {list(joints)})")
-        branch_raw = dt.get("branch", "+")
-        branch_s = r.string(branch_raw, f"{path}.branch", ("+", "-"))
-        branch = 1 if branch_s == "+" else -1
-        lengths: tuple[float, ...] = ()
-        guides: tuple[Guide, ...] = ()
-        offset = 0.0
-        slot_angle = 0.0
-        if kind == "RRR":
-            ls = r.array(dt["lengths"], f"{path}.lengths", 2)
-            lengths = tuple(r.length(v, f"{path}.lengths[{m}]", unit) for m, v in enumerate(ls))
-        elif kind == "RRP":
-            lengths = (r.length(dt["length"], f"{path}.length", unit),)
-            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
-        elif kind == "RPR":
-            offset = r.length(dt.get("offset", 0.0), f"{path}.offset", unit, signed=True)
-        elif kind == "PRP":
-            gs = r.array(dt["guides"], f"{path}.guides", 2)
-            guides = tuple(
-                _guide(r, g, f"{path}.guides[{m}]", link_points, frame_link, unit)
-                for m, g in enumerate(gs)
-            )
-        elif kind == "RPP":
-            guides = (_guide(r, dt["guide"], f"{path}.guide", link_points, frame_link, unit),)
-            slot_angle = math.radians(
-                r.number(dt.get("slot_angle", 90.0), f"{path}.slot_angle")
-            )
-            if abs(math.sin(slot_angle)) < 1e-6:
-                raise r.fail(f"{path}.slot_angle",
-                             "the slot must not be parallel to the guide (got "
-                             f"{dt.get('slot_angle', 90.0)!r}°)")
-        outer = [joints[m] for m in range(len(joints)) if m not in new_idx]
-        if (outer and all(known_points.get(p) == frame_link for p in outer)
-                and all(g.link == frame_link for g in guides)):
-            raise r.fail(f"{path}.joints", "the group is attached to the frame only (joints "
-                         f"{', '.join(outer)} are frame points): it cannot move — attach it "
-                         "to a moving link's point")
-        dyad = Dyad(kind, (li, lj), joints, lengths, guides, offset, slot_angle, branch)
+    for n, dt in enumerate(r.array(data["dyads"], "dyads", minlen=1)):
+        dyad = _dyad(dt, f"dyads[{n}]", r, known, unit)
         dyads.append(dyad)
+        li, lj = dyad.links
         for p in dyad.new_points:
-            known_points[p] = li if kind != "RPP" else lj
+            known.points[p] = li if dyad.kind != "RPP" else lj
         for ln in (li, lj):
-            if ln not in link_points:
-                link_points[ln] = []
-                link_order.append(ln)
+            if ln not in known.link_points:
+                known.link_points[ln] = []
+                known.order.append(ln)
         for ln, ps in zip((li, lj), dyad.points_on_links, strict=True):
             for p in ps:
-                if p not in link_points[ln]:
-                    link_points[ln].append(p)
-        place_points()
+                if p not in known.link_points[ln]:
+                    known.link_points[ln].append(p)
+        points.place(known)
+    return dyads
 
-    if pending:
-        n, pt = pending[0]
-        raise r.fail(f"points[{n}].link", f"link {pt['link']!r} is not a link of this mechanism "
-                     f"(links: {', '.join(link_order)})")
 
-    # -- gravity (its g also turns weights G into masses m = G/g)
+def _dyad(dt: Any, path: str, r: _Reader, known: _Known, unit: float) -> Dyad:
+    """One dyad: its kind, two new links, joints, branch and the geometry its kind needs."""
+    r.table(dt, path)
+    kind = r.string(dt.get("kind"), f"{path}.kind", DYAD_KINDS) if "kind" in dt else None
+    if kind is None:
+        raise r.fail(f"{path}.kind", "missing required key")
+    allowed, required = DYAD_KEYS[kind]
+    r.keys(dt, path, {"kind", "links", "joints", "branch"} | allowed,
+           {"kind", "links", "joints"} | required)
+    lk = r.array(dt["links"], f"{path}.links", 2)
+    li = known.link(lk[0], f"{path}.links[0]", known=False)
+    lj = known.link(lk[1], f"{path}.links[1]", known=False)
+    jt = r.array(dt["joints"], f"{path}.joints", JOINT_COUNT[kind])
+    new_idx = NEW_JOINTS[kind]
+    joints = tuple(
+        known.point(v, f"{path}.joints[{m}]", known=m not in new_idx) for m, v in enumerate(jt)
+    )
+    if len(set(joints)) != len(joints):
+        raise r.fail(f"{path}.joints", f"joints must be distinct (got {list(joints)})")
+    branch_s = r.string(dt.get("branch", "+"), f"{path}.branch", ("+", "-"))
+    branch = 1 if branch_s == "+" else -1
+    lengths, guides, offset, slot_angle = _dyad_geometry(kind, dt, path, r, known, unit)
+    outer = [joints[m] for m in range(len(joints)) if m not in new_idx]
+    if (outer and all(known.points.get(p) == known.frame for p in outer)
+            and all(g.link == known.frame for g in guides)):
+        raise r.fail(f"{path}.joints", "the group is attached to the frame only (joints "
+                     f"{', '.join(outer)} are frame points): it cannot move — attach it "
+                     "to a moving link's point")
+    return Dyad(kind, (li, lj), joints, lengths, guides, offset, slot_angle, branch)
+
+
+def _dyad_geometry(kind: str, dt: dict, path: str, r: _Reader, known: _Known, unit: float
+                   ) -> tuple[tuple[float, ...], tuple[Guide, ...], float, float]:
+    """A dyad's lengths, guides, offset and slot angle (radians), as its kind has them."""
+    lengths: tuple[float, ...] = ()
+    guides: tuple[Guide, ...] = ()
+    offset = 0.0
+    slot_angle = 0.0
+    if kind == "RRR":
+        ls = r.array(dt["lengths"], f"{path}.lengths", 2)
+        lengths = tuple(r.length(v, f"{path}.lengths[{m}]", unit) for m, v in enumerate(ls))
+    elif kind == "RRP":
+        lengths = (r.length(dt["length"], f"{path}.length", unit),)
+        guides = (_guide(r, dt["guide"], f"{path}.guide", known.link_points, known.frame,
+                         unit),)
+    elif kind == "RPR":
+        offset = r.length(dt.get("offset", 0.0), f"{path}.offset", unit, signed=True)
+    elif kind == "PRP":
+        gs = r.array(dt["guides"], f"{path}.guides", 2)
+        guides = tuple(
+            _guide(r, g, f"{path}.guides[{m}]", known.link_points, known.frame, unit)
+            for m, g in enumerate(gs)
+        )
+    elif kind == "RPP":
+        guides = (_guide(r, dt["guide"], f"{path}.guide", known.link_points, known.frame,
+                         unit),)
+        slot_angle = math.radians(r.number(dt.get("slot_angle", 90.0), f"{path}.slot_angle"))
+        if abs(math.sin(slot_angle)) < 1e-6:
+            raise r.fail(f"{path}.slot_angle",
+                         "the slot must not be parallel to the guide (got "
+                         f"{dt.get('slot_angle', 90.0)!r}°)")
+    return lengths, guides, offset, slot_angle
+
+
+def _gravity(data: dict, r: _Reader) -> tuple[float, tuple[float, float]]:
+    """``[gravity]``: g (it also turns weights G into masses m = G/g) and its vector."""
     grav = r.table(data.get("gravity", {}), "gravity")
     g_on = r.boolean(grav.get("enabled", True), "gravity.enabled")
     g = r.number(grav.get("g", 9.81), "gravity.g", nonneg=True, hi=1e3)
     g_ang = math.radians(r.number(grav.get("angle", -90.0), "gravity.angle"))
     gravity = (g * math.cos(g_ang), g * math.sin(g_ang)) if g_on else (0.0, 0.0)
     gx, gy = (0.0 if abs(c) < 1e-12 * max(g, 1.0) else c for c in gravity)
-    gravity = (gx, gy)
+    return g, (gx, gy)
 
-    # -- link properties
-    links: dict[str, LinkProps] = {}
+
+def _masses(data: dict, r: _Reader, known: _Known, crank_link: str, g: float
+            ) -> dict[str, LinkProps]:
+    """``[links]`` (and the crank's own mass keys): each moving link's mass and inertia."""
+    crank_t = data["crank"]
     raw_links = r.table(data.get("links", {}), "links")
     crank_props = {k: crank_t[k] for k in ("mass", "weight", "inertia", "centre")
                    if k in crank_t}
@@ -549,46 +666,53 @@ def _build(data: dict, r: _Reader) -> Mechanism:
         if crank_link in raw_links:
             raise r.fail(f"links.{crank_link}", "crank mass given twice (in [crank] and [links])")
         raw_links[crank_link] = crank_props
+    links: dict[str, LinkProps] = {}
     for ln, props in raw_links.items():
         path = f"links.{ln}"
         r.link(ln, path)
-        if ln not in link_points or ln == frame_link:
+        if ln not in known.link_points or ln == known.frame:
             raise r.fail(path, f"not a moving link of this mechanism (moving links: "
-                         f"{', '.join(x for x in link_order if x != frame_link)})")
-        r.table(props, path)
-        r.keys(props, path, {"mass", "weight", "inertia", "centre"})
-        if "weight" in props:  # G in N, as assignment books often give it: m = G/g
-            if "mass" in props:
-                raise r.fail(f"{path}.weight", "give either 'mass' (kg) or 'weight' (N), "
-                             "not both")
-            if g <= 0:
-                raise r.fail(f"{path}.weight", "a weight needs gravity.g > 0 to give the mass")
-            mass = r.number(props["weight"], f"{path}.weight", nonneg=True, hi=1e10) / g
-        else:
-            mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
-        inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True, hi=1e12)
-        centre = None
-        if "centre" in props:
-            centre = r.name(props["centre"], f"{path}.centre")
-            if centre not in link_points[ln]:
-                raise r.fail(f"{path}.centre", f"point {centre!r} is not on link {ln!r} "
-                             f"(its points: {', '.join(link_points[ln])})")
-        elif mass > 0:
-            raise r.fail(f"{path}.centre", "a link with mass needs its centre of mass point")
-        links[ln] = LinkProps(mass, inertia, centre)
+                         f"{', '.join(x for x in known.order if x != known.frame)})")
+        links[ln] = _link_props(props, path, ln, r, known, g)
+    return links
 
-    # -- output
-    last = dyads[-1]
+
+def _link_props(props: Any, path: str, ln: str, r: _Reader, known: _Known, g: float
+                ) -> LinkProps:
+    """One link's mass (kg, or a weight G in N: m = G/g), inertia and centre of mass."""
+    r.table(props, path)
+    r.keys(props, path, {"mass", "weight", "inertia", "centre"})
+    if "weight" in props:  # G in N, as assignment books often give it: m = G/g
+        if "mass" in props:
+            raise r.fail(f"{path}.weight", "give either 'mass' (kg) or 'weight' (N), not both")
+        if g <= 0:
+            raise r.fail(f"{path}.weight", "a weight needs gravity.g > 0 to give the mass")
+        mass = r.number(props["weight"], f"{path}.weight", nonneg=True, hi=1e10) / g
+    else:
+        mass = r.number(props.get("mass", 0.0), f"{path}.mass", nonneg=True, hi=1e9)
+    inertia = r.number(props.get("inertia", 0.0), f"{path}.inertia", nonneg=True, hi=1e12)
+    centre = None
+    if "centre" in props:
+        centre = known.on_link(props["centre"], f"{path}.centre", ln)
+    elif mass > 0:
+        raise r.fail(f"{path}.centre", "a link with mass needs its centre of mass point")
+    return LinkProps(mass, inertia, centre)
+
+
+def _output(data: dict, r: _Reader, known: _Known, dyads: list[Dyad]) -> Output:
+    """``[output]``: the output link (the last dyad's second by default), its working sense."""
     out_t = r.table(data.get("output", {}), "output")
-    out_link = last.links[1]
+    out_link = dyads[-1].links[1]
     if "link" in out_t:
-        out_link = need_link(out_t["link"], "output.link", known=True)
-        if out_link in (frame_link,):
+        out_link = known.link(out_t["link"], "output.link", known=True)
+        if out_link == known.frame:
             raise r.fail("output.link", "the output cannot be the frame")
     working = 1 if r.string(out_t.get("working", "+"), "output.working", ("+", "-")) == "+" else -1
-    output = Output(out_link, working)
+    return Output(out_link, working)
 
-    # -- positions
+
+def _positions(data: dict, r: _Reader) -> Positions:
+    """``[positions]``: how many plans, where they start, extra positions, the cycle."""
     pos_t = r.table(data.get("positions", {}), "positions")
     count = r.integer(pos_t.get("count", 8), "positions.count", 1, 3600)
     first_raw = pos_t.get("first", "start")
@@ -597,77 +721,46 @@ def _build(data: dict, r: _Reader) -> Mechanism:
     else:
         first = math.radians(r.number(first_raw, "positions.first"))
     number_from = r.integer(pos_t.get("number_from", 1), "positions.number_from", 0, 1)
-    extras: list[ExtraPosition] = []
     labels = {str(number_from + k) for k in range(count)}
-    for n, et in enumerate(r.array(pos_t.get("extra", []), "positions.extra")):
-        path = f"positions.extra[{n}]"
-        r.table(et, path)
-        r.keys(et, path, {"label", "phi", "from", "turn", "stroke"}, {"label"})
-        label = r.string(et["label"], f"{path}.label")
-        if not label.strip():
-            raise r.fail(f"{path}.label", "must not be empty")
-        if _CONTROL.search(label):
-            raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
-        if _MARKUP.search(label) or "/" in label:  # a label is a cell, a heading, a file name
-            raise r.fail(f"{path}.label", f"expected a label without < > & | ` / \\ "
-                         f"(got {label!r})")
-        if label in labels:
-            raise r.fail(f"{path}.label", f"label {label!r} is already used")
-        labels.add(label)
-        ways = [k for k in ("phi", "from", "stroke") if k in et]
-        if len(ways) != 1:
-            raise r.fail(path, "give exactly one of 'phi' (crank angle, °), 'from' (dead centre "
-                         "with 'turn'), 'stroke' (travel fraction of the working stroke)")
-        if "turn" in et and "from" not in et:
-            raise r.fail(f"{path}.turn", "goes with 'from'")
-        if "phi" in et:
-            phi = math.radians(r.number(et["phi"], f"{path}.phi"))
-            extras.append(ExtraPosition(label, phi=phi))
-        elif "from" in et:
-            extras.append(ExtraPosition(
-                label,
-                from_dead_centre=r.string(et["from"], f"{path}.from", ("start", "end")),
-                turn=math.radians(r.number(et.get("turn", 0.0), f"{path}.turn", lo=-360, hi=360)),
-            ))
-        else:
-            extras.append(ExtraPosition(
-                label, stroke=r.number(et["stroke"], f"{path}.stroke", lo=0.0, hi=1.0)))
+    extras = [_extra_position(et, f"positions.extra[{n}]", r, labels)
+              for n, et in enumerate(r.array(pos_t.get("extra", []), "positions.extra"))]
     cycle_deg = r.integer(pos_t.get("cycle", 360), "positions.cycle", 360, 720)
     if cycle_deg not in (360, 720):
         raise r.fail("positions.cycle", f"expected 360 (one turn) or 720 (two turns: a "
                      f"four-stroke process) (got {cycle_deg})")
-    positions = Positions(count, first, number_from, tuple(extras), cycle_deg)
-
-    # -- loads
-    resistances = _loads(r, data, dict(
-        frame_link=frame_link, link_points=link_points, link_order=link_order,
-        known_points=known_points, dyads=dyads, crank=crank, output=output, unit=unit,
-        cycle=cycle_deg))
+    return Positions(count, first, number_from, tuple(extras), cycle_deg)
 
 
-    settings = {
-        sec: data[sec]
-        for sec in ("kinetostatics", "dynamics", "drawing", "title_block", "variant")
-        if sec in data
-    }
-    _check_settings(r, settings)
-
-    return Mechanism(
-        name=name,
-        source=r.source,
-        frame_link=frame_link,
-        frame_points=frame_points,
-        crank=crank,
-        dyads=tuple(dyads),
-        points=tuple(points),
-        links=links,
-        gravity=gravity,
-        resistances=tuple(resistances),
-        positions=positions,
-        output=output,
-        length_unit=unit_name,
-        settings=settings,
-    )
+def _extra_position(et: Any, path: str, r: _Reader, labels: set[str]) -> ExtraPosition:
+    """One ``[[positions.extra]]``: a labelled position by angle, dead centre or stroke."""
+    r.table(et, path)
+    r.keys(et, path, {"label", "phi", "from", "turn", "stroke"}, {"label"})
+    label = r.string(et["label"], f"{path}.label")
+    if not label.strip():
+        raise r.fail(f"{path}.label", "must not be empty")
+    if _CONTROL.search(label):
+        raise r.fail(f"{path}.label", f"expected a one-line label (got {label!r})")
+    if _MARKUP.search(label) or "/" in label:  # a label is a cell, a heading, a file name
+        raise r.fail(f"{path}.label", f"expected a label without < > & | ` / \\ "
+                     f"(got {label!r})")
+    if label in labels:
+        raise r.fail(f"{path}.label", f"label {label!r} is already used")
+    labels.add(label)
+    ways = [k for k in ("phi", "from", "stroke") if k in et]
+    if len(ways) != 1:
+        raise r.fail(path, "give exactly one of 'phi' (crank angle, °), 'from' (dead centre "
+                     "with 'turn'), 'stroke' (travel fraction of the working stroke)")
+    if "turn" in et and "from" not in et:
+        raise r.fail(f"{path}.turn", "goes with 'from'")
+    if "phi" in et:
+        return ExtraPosition(label, phi=math.radians(r.number(et["phi"], f"{path}.phi")))
+    if "from" in et:
+        return ExtraPosition(
+            label,
+            from_dead_centre=r.string(et["from"], f"{path}.from", ("start", "end")),
+            turn=math.radians(r.number(et.get("turn", 0.0), f"{path}.turn", lo=-360, hi=360)),
+        )
+    return ExtraPosition(label, stroke=r.number(et["stroke"], f"{path}.stroke", lo=0.0, hi=1.0))
 
 
 def _guide(r: _Reader, value: Any, path: str, link_points, frame_link: str, unit: float) -> Guide:
@@ -722,24 +815,45 @@ def _rotates_about_frame(link, dyads, crank, known_points, frame_link) -> bool:
 
 def _check_settings(r: _Reader, settings: dict) -> None:
     """Validate the values of the settings that later stages read."""
-    kin = settings.get("kinetostatics", {})
+    _check_kinetostatics(r, settings.get("kinetostatics", {}))
+    dyn = settings.get("dynamics", {})
+    _check_dynamics(r, dyn)
+    if "flywheel" in dyn:
+        _check_flywheel(r, dyn["flywheel"])
+    drw = settings.get("drawing", {})
+    _check_drawing(r, drw)
+    for sec, table in (("kinetostatics", settings.get("kinetostatics", {})), ("drawing", drw)):
+        if "positions" in table:
+            _check_position_labels(r, table["positions"], f"{sec}.positions")
+    for key, value in settings.get("title_block", {}).items():
+        if key in ("sheet", "sheets"):
+            r.integer(value, f"title_block.{key}", 1, 99)
+        else:
+            r.string(value, f"title_block.{key}")
+    var = settings.get("variant", {})
+    if "description" in var:
+        r.string(var["description"], "variant.description")
+
+
+def _check_kinetostatics(r: _Reader, kin: dict) -> None:
+    """``[kinetostatics]``: the neglect rule's share and the two switches."""
     if "neglect_below" in kin:
         r.number(kin["neglect_below"], "kinetostatics.neglect_below", lo=0.0, hi=1.0)
-    if "inertia" in kin:
-        r.boolean(kin["inertia"], "kinetostatics.inertia")
-    if "shift_inertia_force" in kin:
-        r.boolean(kin["shift_inertia_force"], "kinetostatics.shift_inertia_force")
-    dyn = settings.get("dynamics", {})
-    if "delta" in dyn:
-        r.number(dyn["delta"], "dynamics.delta", positive=True, hi=1.0)
-    if "efficiency" in dyn:
-        r.number(dyn["efficiency"], "dynamics.efficiency", positive=True, hi=1.0)
+    for key in ("inertia", "shift_inertia_force"):
+        if key in kin:
+            r.boolean(kin[key], f"kinetostatics.{key}")
+
+
+def _check_dynamics(r: _Reader, dyn: dict) -> None:
+    """``[dynamics]``: δ, η, the crank's inertia, the grids and the motor's choice."""
+    for key in ("delta", "efficiency"):
+        if key in dyn:
+            r.number(dyn[key], f"dynamics.{key}", positive=True, hi=1.0)
     if "crank_inertia" in dyn:
         r.number(dyn["crank_inertia"], "dynamics.crank_inertia", nonneg=True)
-    if "grid" in dyn:
-        r.integer(dyn["grid"], "dynamics.grid", 12, 100000)
-    if "intervals" in dyn:
-        r.integer(dyn["intervals"], "dynamics.intervals", 4, 720)
+    for key, lo, hi in (("grid", 12, 100000), ("intervals", 4, 720)):
+        if key in dyn:
+            r.integer(dyn[key], f"dynamics.{key}", lo, hi)
     if "motor_series" in dyn:
         from ..dynamics import series_names
 
@@ -754,43 +868,39 @@ def _check_settings(r: _Reader, settings: dict) -> None:
         if speed not in SYNC_SPEEDS:
             raise r.fail("dynamics.motor_speed", "expected a synchronous speed at 50 Hz, one "
                          f"of {', '.join(map(str, SYNC_SPEEDS))} rpm (got {speed})")
-    if "flywheel" in dyn:
-        fw = r.table(dyn["flywheel"], "dynamics.flywheel")
-        r.keys(fw, "dynamics.flywheel", {"shape", "shaft", "b_ratio", "h_ratio", "density"})
-        if "shape" in fw:
-            r.string(fw["shape"], "dynamics.flywheel.shape", ("rim", "disc"))
-        if "shaft" in fw:
-            r.string(fw["shaft"], "dynamics.flywheel.shaft", ("crank", "motor"))
-        for key, hi in (("b_ratio", 1.0), ("h_ratio", 0.5), ("density", 30000.0)):
-            if key in fw:
-                r.number(fw[key], f"dynamics.flywheel.{key}", positive=True, hi=hi)
-    drw = settings.get("drawing", {})
+
+
+def _check_flywheel(r: _Reader, value: Any) -> None:
+    """``[dynamics.flywheel]``: its shape, shaft and proportions."""
+    fw = r.table(value, "dynamics.flywheel")
+    r.keys(fw, "dynamics.flywheel", {"shape", "shaft", "b_ratio", "h_ratio", "density"})
+    for key, choices in (("shape", ("rim", "disc")), ("shaft", ("crank", "motor"))):
+        if key in fw:
+            r.string(fw[key], f"dynamics.flywheel.{key}", choices)
+    for key, hi in (("b_ratio", 1.0), ("h_ratio", 0.5), ("density", 30000.0)):
+        if key in fw:
+            r.number(fw[key], f"dynamics.flywheel.{key}", positive=True, hi=hi)
+
+
+def _check_drawing(r: _Reader, drw: dict) -> None:
+    """``[drawing]``: the scales, the reading step, the sheet format and language."""
     for key in ("Kl", "Kv", "Ka", "Kp"):
         if key in drw:
             r.number(drw[key], f"drawing.{key}", positive=True)
     if "reading_mm" in drw:
         r.number(drw["reading_mm"], "drawing.reading_mm", nonneg=True, hi=5.0)
-    if "format" in drw:
-        r.string(drw["format"], "drawing.format", ("A1", "A2", "A3"))
-    if "language" in drw:
-        r.string(drw["language"], "drawing.language", ("ru", "en"))
-    for sec, table in (("kinetostatics", settings.get("kinetostatics", {})), ("drawing", drw)):
-        if "positions" not in table:
-            continue
-        labels = r.array(table["positions"], f"{sec}.positions", minlen=1)
-        for i, lab in enumerate(labels):
-            r.string(lab, f"{sec}.positions[{i}]")
-        if len(set(labels)) != len(labels):
-            raise r.fail(f"{sec}.positions", "expected each position label once")
-    tb = settings.get("title_block", {})
-    for key, value in tb.items():
-        if key in ("sheet", "sheets"):
-            r.integer(value, f"title_block.{key}", 1, 99)
-        else:
-            r.string(value, f"title_block.{key}")
-    var = settings.get("variant", {})
-    if "description" in var:
-        r.string(var["description"], "variant.description")
+    for key, choices in (("format", ("A1", "A2", "A3")), ("language", ("ru", "en"))):
+        if key in drw:
+            r.string(drw[key], f"drawing.{key}", choices)
+
+
+def _check_position_labels(r: _Reader, value: Any, path: str) -> None:
+    """A list of position labels, each given once."""
+    labels = r.array(value, path, minlen=1)
+    for i, lab in enumerate(labels):
+        r.string(lab, f"{path}[{i}]")
+    if len(set(labels)) != len(labels):
+        raise r.fail(path, "expected each position label once")
 
 
 def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
