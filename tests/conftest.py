@@ -9,6 +9,7 @@ reproduction blob.
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 
 import pytest
@@ -17,6 +18,11 @@ from hypothesis import settings
 settings.register_profile("ci", derandomize=True, print_blob=True)
 settings.register_profile("dev", print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "dev"))
+
+# the tests' shared helper modules (norm_measures, message_scan, test_json_contract's
+# validate) are importable by name from any test module, run alone or in the suite
+# (``--import-mode=importlib`` does not put tests/ on sys.path)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 
 @pytest.fixture(scope="session")

@@ -1,0 +1,157 @@
+"""Norm control (issue 18's marks) of the variants nobody wrote an example for
+(``tests/data/variants/*.toml``, discovered: a variant added there is checked the day it is
+added): a two-stroke engine, an in-line compressor, an in-line twin over 720°, a pump with a
+kN diagram, a crusher with a force on the jaw, a four-bar clockwise at 12 rad/s, a shaper
+cutting part of its stroke, a four-bar with a fixed-direction force…
+
+Issue 17 holds the assignment families to the sheets issue's norm control: each variant's
+sheets are measured with the same measures as the examples' (``norm_measures``):
+
+* every moving link drawn in every position of sheet 1 and every scheme of sheet 2;
+* every velocity and acceleration plan's longest vector ≥ 40 mm, their median ≥ 50 mm;
+* no text over another text or crossed by a line on sheets 1, 2 and 3;
+* at most 40 % empty 20×20 mm tiles on each sheet;
+* ``graphplan sheets --page A2`` and ``--page A3`` draw every moving link.
+"""
+
+from __future__ import annotations
+
+import re
+import statistics
+from functools import cache
+from pathlib import Path
+
+import pytest
+from norm_measures import (
+    EMPTY_MAX,
+    LONGEST_MIN,
+    MEDIAN_MIN,
+    drawn_links,
+    empty_share,
+    overlaps,
+    plan_longest,
+)
+
+from graphplan.drawing import dynamics_sheet, kinematics_sheet, kinetostatics_sheet
+from graphplan.model import load
+from graphplan.project import analyze
+
+VARIANTS_DIR = Path(__file__).resolve().parent / "data" / "variants"
+VARIANTS = sorted(p.stem for p in VARIANTS_DIR.glob("*.toml"))
+
+#: Cases not yet at their mark, (variant, sheet, check), strict xfails: the sheets' helpers
+#: (issue 18) remove a case when their change makes it pass. Measured when written: sheet 1
+#: 43–56 % empty, sheet 2 50–74 % (sheet 3 34–40 %); on sheet 2 of the shaper cutting part
+#: of its stroke the Mур(φ) curve crosses its labels 'a' and '9' (DEFECTS.md).
+TODO = {
+    *((n, 1, "filled") for n in VARIANTS),
+    *((n, 2, "filled") for n in VARIANTS),
+    ("shaper_part", 2, "overlaps"),
+    # A3 of an engine (as the engine example's): 14 plans leave too little room on sheet 1,
+    # the kinematic diagrams do not fit their 134×79 mm box
+    ("twin_engine", 1, "A3"),
+    ("two_stroke_engine", 1, "A3"),
+}
+
+
+def todo(request, name: str, n: int, check: str) -> None:
+    if (name, n, check) in TODO:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=(
+            f"issue 18: {check} of sheet {n} of the variant {name} not yet at its mark")))
+
+
+@cache
+def analysis(name: str):
+    return analyze(load(VARIANTS_DIR / f"{name}.toml"))
+
+
+@cache
+def sheet(name: str, n: int):
+    a = analysis(name)
+    if n == 1:
+        return kinematics_sheet(a)
+    if n == 2:
+        return kinetostatics_sheet(a)
+    assert "delta" in a.mech.settings.get("dynamics", {}), f"{name}: a variant without δ"
+    return dynamics_sheet(a)
+
+
+def test_the_variants_are_there():
+    assert len(VARIANTS) >= 8
+
+
+@pytest.mark.parametrize("name", VARIANTS)
+def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(name):
+    a = analysis(name)
+    moving = set(a.mech.moving_links)
+    drawn = drawn_links(sheet(name, 1), "pp-")
+    for k in range(a.kin.n):
+        assert moving <= drawn.get(f"pp-{k}", set()), (k, moving - drawn.get(f"pp-{k}", set()))
+
+
+@pytest.mark.parametrize("name", VARIANTS)
+def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(name):
+    a = analysis(name)
+    moving = set(a.mech.moving_links)
+    drawn = drawn_links(sheet(name, 2), "s2p")
+    assert drawn
+    for fig, links in drawn.items():
+        assert moving <= links, (fig, moving - links)
+
+
+@pytest.mark.parametrize("name", VARIANTS)
+def test_plans_are_large_enough_to_read(request, name):
+    todo(request, name, 1, "plans")
+    longest = plan_longest(sheet(name, 1))
+    assert longest
+    assert min(longest.values()) >= LONGEST_MIN, sorted(longest.items(), key=lambda kv: kv[1])[:3]
+    assert statistics.median(longest.values()) >= MEDIAN_MIN
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+@pytest.mark.parametrize("name", VARIANTS)
+def test_no_text_over_a_line_or_another_text(request, name, n):
+    todo(request, name, n, "overlaps")
+    found = overlaps(sheet(name, n))
+    assert found == [], f"{len(found)} overlaps, e.g. {found[:5]}"
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+@pytest.mark.parametrize("name", VARIANTS)
+def test_sheet_is_filled(request, name, n):
+    todo(request, name, n, "filled")
+    assert empty_share(sheet(name, n)) <= EMPTY_MAX
+
+
+@pytest.mark.parametrize("fmt", ["A2", "A3"])
+@pytest.mark.parametrize("name", VARIANTS)
+def test_every_variant_draws_on_a2_and_a3(request, tmp_path, name, fmt):
+    """`graphplan sheets --page A2/A3`: sheets 1 and 2 on the format asked, every moving link
+    drawn in position 0 of sheet 1 and in a scheme of sheet 2."""
+    from graphplan.outputs import write_project
+
+    todo(request, name, 1, fmt)
+    write_project(VARIANTS_DIR / f"{name}.toml", tmp_path, page=fmt)
+    svg = {n: (tmp_path / f"sheet{n}.svg").read_text(encoding="utf-8") for n in (1, 2)}
+    w, h = PAGE[fmt]
+    for n in (1, 2):
+        assert f'width="{w}"' in svg[n] and f'height="{h}"' in svg[n], n
+    for link in analysis(name).mech.moving_links:
+        assert re.search(rf'id="pp-0-(?:link|slider)-{re.escape(link)}', svg[1]), link
+        assert re.search(rf'id="s2p\d+-(?:link|slider)-{re.escape(link)}', svg[2]), link
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "issue 18 (sheet 3, no owner this session): sheet 3 is drawn on A1 whatever --page says; "
+    "its diagrams' scales are chosen for A1 (469×554 mm of diagrams on the four-bar)"))
+@pytest.mark.parametrize("fmt", ["A2", "A3"])
+def test_sheet_3_takes_the_format_asked(tmp_path, fmt):
+    from graphplan.outputs import write_project
+
+    write_project(VARIANTS_DIR / "fourbar_cw.toml", tmp_path, page=fmt)
+    svg = (tmp_path / "sheet3.svg").read_text(encoding="utf-8")
+    w, h = PAGE[fmt]
+    assert f'width="{w}"' in svg and f'height="{h}"' in svg
+
+
+PAGE = {"A2": ("594mm", "420mm"), "A3": ("420mm", "297mm")}
