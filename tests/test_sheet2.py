@@ -308,3 +308,83 @@ def test_variants_nobody_wrote_draw_on_a1_and_a3(tmp_path, name, subs):
                 k = a.kin.labels.index(lab)
                 assert float(row["Mур, Н·м"].replace(",", ".")) == pytest.approx(
                     a.forces.M_bal[k], rel=1e-4, abs=1e-3)
+
+
+def _figure_paper(sheet, pre: str, kin, k: int):
+    """Model → paper map of one figure of sheet 2 (``pre`` = ``s2p<k>-g<i>``), fitted to
+    its joint circles: paper = o + (x, −y)/Kl (one joint: Kl read off its caption)."""
+    import numpy as np
+
+    from graphplan.drawing import Circle
+
+    joints = {it.id[len(pre) + len("-joint-"):]: it.centre for it in iter_leaves(sheet.items)
+              if isinstance(it, Circle) and (it.id or "").startswith(f"{pre}-joint-")}
+    if not joints:
+        return None
+    names = sorted(joints)
+    m = np.array([kin.pos.points[j][k] for j in names]) * (1, -1)
+    p = np.array([joints[j] for j in names])
+    dm, dp = m - m.mean(axis=0), p - p.mean(axis=0)
+    if len(joints) > 1:
+        s = float(np.sum(dm * dp) / np.sum(dm * dm))  # 1/Kl, least squares
+    else:  # one joint (a group of two slides): Kl as its caption writes it
+        cap = next(it.text for it in iter_leaves(sheet.items) if it.id == f"{pre}-caption")
+        s = 1.0 / float(re.search(r"Kl = ([\d.,]+)", cap).group(1).replace(",", "."))
+    o = p.mean(axis=0) - s * m.mean(axis=0)
+    return lambda xy: o + s * np.asarray(xy, float) * (1, -1)
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_slider_blocks_and_centres_of_mass_sit_where_the_kinematics_puts_them(name):
+    """On every group drawn separately, each slider's block is centred on the joint where the
+    next link is pinned to it (on the guide), and each load (G, Pи, Q) starts or ends at its
+    point as the kinematics places it, a weight at its link's centre of mass. The slotter's
+    ram was drawn ~75 mm above joint C, off rod 4: its block sat on the centre of mass S5
+    (tied with C on the guide's axis), which the variant put 120 mm above C (``along = 120``
+    on a guide directed up; its comment and the tool T say below)."""
+    import numpy as np
+
+    from graphplan.drawing import Arrow, Polyline
+    from graphplan.drawing.linkage import _pair_points
+
+    a = analysed(name)
+    mech, kin, s2 = a.mech, a.kin, a.sheet2
+    sheet = kinetostatics_sheet(a)
+    leaves = list(iter_leaves(sheet.items))
+    checked = 0
+    for k in s2.positions:
+        for i, dyad in enumerate(reversed(mech.dyads)):
+            pre = f"s2p{k}-g{i}"
+            P = _figure_paper(sheet, pre, kin, k)
+            if P is None:
+                continue
+            joints = [j for j, kind in zip(_pair_points(dyad), dyad.kind, strict=False)
+                      if j and kind == "R"]
+            for key, (G, u) in kin.pos.guides.items():
+                slider = key.split("/")[0]
+                if slider not in dyad.links:
+                    continue
+                block = next(it for it in leaves if isinstance(it, Polyline)
+                             and it.id == f"s2p{k}-slider-{slider}-{key.split('/')[1]}")
+                centre = np.mean(block.points, axis=0)
+                on = [j for j in joints if j in mech.points_of(slider)]
+                n = np.array([-u[k][1], u[k][0]])
+                on = [j for j in on if abs(float(np.dot(kin.pos.points[j][k] - G[k], n))) < 1e-9]
+                if on:  # the joint the block carries
+                    assert min(math.dist(centre, P(kin.pos.points[j][k])) for j in on) < 0.05, (
+                        k, slider, centre, [P(kin.pos.points[j][k]) for j in on])
+                    checked += 1
+            arrows = [it for it in leaves if isinstance(it, Arrow)
+                      and re.match(rf"^{pre}-f\d+$", it.id or "")]
+            for ln in dyad.links:
+                lp = mech.links.get(ln)
+                for f in a.loads.forces.get(ln, ()):
+                    if np.hypot(*f.vector[k]) == 0:  # neglected in this position
+                        continue
+                    c = P(f.at[k])
+                    assert min(min(math.dist(c, ar.p0), math.dist(c, ar.p1)) for ar in arrows
+                               ) < 0.05, (k, ln, f.name)
+                    if lp and lp.centre and f.name.startswith("G"):
+                        assert math.dist(c, P(kin.pos.points[lp.centre][k])) < 0.05
+                    checked += 1
+    assert checked > 0

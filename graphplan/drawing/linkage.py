@@ -109,12 +109,24 @@ def _span(pts) -> tuple[Pt, Pt]:
 
 
 def slider_point(mech, kin, k: int, slider: str, G, u) -> str | None:
-    """The point of ``slider`` nearest its guide (G, u) at position k: where its block sits."""
+    """The point of ``slider`` nearest its guide (G, u) at position k: where its block sits.
+
+    Of points equally near the guide (a ram's joint and its centre of mass, both on the
+    guide's axis) the block sits at a joint of the slider's dyad, where the next link is
+    pinned to it, then at any point but a centre of mass: a block drawn at the centre of
+    mass would stand off the rod it is pinned to."""
     names = [p for p in mech.points_of(slider) if p in kin.pos.points]
     if not names:
         return None
     n = np.array([-u[1], u[0]], float)
-    return min(names, key=lambda p: abs(float(np.dot(kin.pos.points[p][k] - G, n))))
+    joints = {j for d in mech.dyads if slider in d.links for j in _pair_points(d) if j}
+    centres = {lp.centre for lp in mech.links.values() if lp.centre}
+
+    def key(p: str) -> tuple[float, bool, bool]:
+        off = abs(float(np.dot(kin.pos.points[p][k] - G, n)))
+        return round(off, 9), p not in joints, p in centres
+
+    return min(names, key=key)
 
 
 def _slider_block(mech, kin, k, slider, G, u, P) -> tuple[Pt, ...] | None:
