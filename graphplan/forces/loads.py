@@ -185,13 +185,15 @@ def diagram_value(diagram, travel, signed: bool = False) -> Array:
     s = np.asarray(travel, float)
     out = np.full(s.shape, -np.inf)
     for (s0, f0), (s1, f1) in pairwise(diagram):
+        if f0 == 0 and f1 == 0:  # a zero piece: the clip at 0 below gives its value anyway
+            continue
         if s1 - s0 <= JUMP_TOL:
-            val = np.full(s.shape, max(f0, f1))
+            val = max(f0, f1)
             inside = np.abs(s - 0.5 * (s0 + s1)) <= JUMP_TOL + 0.5 * (s1 - s0)
         else:
             val = f0 + (f1 - f0) * (s - s0) / (s1 - s0)
             inside = (s >= s0 - JUMP_TOL) & (s <= s1 + JUMP_TOL)
-        out = np.where(inside, np.maximum(out, val), out)
+        np.maximum(out, val, out=out, where=inside)
     return np.where(np.isfinite(out), np.clip(out, 0.0, None), 0.0)
 
 
@@ -223,7 +225,8 @@ def _travel_of(res: Resistance, mech: Mechanism, cycle: Cycle) -> LinkTravel:
 
 def _first_start(res: Resistance, mech: Mechanism, cycle: Cycle, lt: LinkTravel) -> float:
     """τ of the travel link's first start dead centre at or after the load's phase."""
-    t0 = float(cycle_travel(mech, cycle, lt.dead_centres[0]))
+    # cycle_travel of one angle: Python's float % is numpy's np.mod, bit for bit
+    t0 = ((float(lt.dead_centres[0]) - cycle.origin) * mech.crank.sense) % cycle.period
     two_pi = 2 * math.pi
     return t0 + two_pi * math.ceil((res.phase - t0) / two_pi - 1e-12)
 
@@ -256,13 +259,19 @@ def load_values(res: Resistance, mech: Mechanism, cycle: Cycle, phi, q_travel=No
     lt = _travel_of(res, mech, cycle)
     k = stroke_index(res, mech, cycle, tau)
     x = lt.fraction(q_travel)
+    signed = res.sense == "diagram"
+    loaded = [(m, d) for m, d in enumerate(res.stroke_diagrams(round(cycle.period / math.pi)))
+              if d is not None]
+    if len(loaded) == 1:  # one loaded stroke (the classical case): no merging of strokes
+        m, d = loaded[0]
+        size = np.where(k == m, diagram_value(d, x, signed=signed) * res.maximum - res.offset,
+                        0.0)
+        return size, np.where(k % 2 == 0, 1.0, -1.0)
     val = np.zeros_like(tau)
     on = np.zeros(tau.shape, bool)
-    for m, d in enumerate(res.stroke_diagrams(round(cycle.period / math.pi))):
-        if d is None:
-            continue
+    for m, d in loaded:
         sel = k == m
-        val = np.where(sel, diagram_value(d, x, signed=res.sense == "diagram"), val)
+        val = np.where(sel, diagram_value(d, x, signed=signed), val)
         on |= sel
     size = np.where(on, val * res.maximum - res.offset, 0.0)
     return size, np.where(k % 2 == 0, 1.0, -1.0)
@@ -543,37 +552,76 @@ def group_size(mech: Mechanism, kin: Kinematics, links) -> Array:
 
 
 def _neglect(mech, kin, forces, moments, frac) -> dict[str, NDArray[np.bool_]]:
-    """Drop (in place) the loads below ``frac`` of the largest of their group."""
+    """Drop (in place) the loads below ``frac`` of the largest of their group.
+
+    The sizes of a group's loads are one (k, N) array: its largest per position is one
+    reduction and the drops one comparison (the same values as load by load)."""
     neglected: dict[str, NDArray[np.bool_]] = {}
     if frac <= 0:
         return neglected
     groups = [(mech.crank.link,), *(d.links for d in mech.dyads)]
     for links in groups:
-        sizes = {}
-        ell = None  # the group's size, needed only for its couples
-        for ln in links:
-            for f in forces[ln]:
-                sizes[f.name] = np.abs(as_complex(f.vector))
-            if moments[ln] and ell is None:
-                ell = group_size(mech, kin, links)
-            for m in moments[ln]:
-                sizes[m.name] = np.abs(m.moment) / ell
-        if not sizes:
+        fl = [f for ln in links for f in forces[ln]]
+        ml = [m for ln in links for m in moments[ln]]
+        if not (fl or ml):
             continue
-        biggest = reduce(np.maximum, sizes.values())
-        limit = frac * biggest
+        names = [f.name for f in fl] + [m.name for m in ml]
+        if len(set(names)) < len(names):  # a name twice: the later load's size counts
+            _neglect_by_name(mech, kin, links, forces, moments, frac, neglected)
+            continue
+        rows = []
+        if fl:
+            rows.append(np.abs(np.stack([as_complex(f.vector) for f in fl])))
+        if ml:
+            ell = group_size(mech, kin, links)  # the group's size, needed only for couples
+            rows.append(np.abs(np.stack([m.moment for m in ml])) / ell)
+        sizes = rows[0] if len(rows) == 1 else np.concatenate(rows)
+        limit = frac * sizes.max(axis=0)
+        drop = (sizes < limit) & (sizes > 0)
+        hit = drop.any(axis=1).tolist()
+        if not any(hit):
+            continue
+        k = 0
         for ln in links:
             for n, f in enumerate(forces[ln]):
-                drop = (sizes[f.name] < limit) & (sizes[f.name] > 0)
-                if drop.any():
-                    forces[ln][n] = replace(f, vector=np.where(drop[:, None], 0.0, f.vector))
-                    neglected[f.name] = drop
+                if hit[k]:
+                    forces[ln][n] = ForceLoad(f.name, f.link, f.kind, f.point, f.at,
+                                              np.where(drop[k][:, None], 0.0, f.vector))
+                    neglected[f.name] = drop[k]
+                k += 1
+        for ln in links:
             for n, m in enumerate(moments[ln]):
-                drop = (sizes[m.name] < limit) & (sizes[m.name] > 0)
-                if drop.any():
-                    moments[ln][n] = replace(m, moment=np.where(drop, 0.0, m.moment))
-                    neglected[m.name] = drop
+                if hit[k]:
+                    moments[ln][n] = MomentLoad(m.name, m.link, m.kind,
+                                                np.where(drop[k], 0.0, m.moment))
+                    neglected[m.name] = drop[k]
+                k += 1
     return neglected
+
+
+def _neglect_by_name(mech, kin, links, forces, moments, frac, neglected) -> None:
+    """:func:`_neglect` of one group whose loads repeat a name (sizes kept by name)."""
+    sizes = {}
+    ell = None
+    for ln in links:
+        for f in forces[ln]:
+            sizes[f.name] = np.abs(as_complex(f.vector))
+        if moments[ln] and ell is None:
+            ell = group_size(mech, kin, links)
+        for m in moments[ln]:
+            sizes[m.name] = np.abs(m.moment) / ell
+    limit = frac * reduce(np.maximum, sizes.values())
+    for ln in links:
+        for n, f in enumerate(forces[ln]):
+            drop = (sizes[f.name] < limit) & (sizes[f.name] > 0)
+            if drop.any():
+                forces[ln][n] = replace(f, vector=np.where(drop[:, None], 0.0, f.vector))
+                neglected[f.name] = drop
+        for n, m in enumerate(moments[ln]):
+            drop = (sizes[m.name] < limit) & (sizes[m.name] > 0)
+            if drop.any():
+                moments[ln][n] = replace(m, moment=np.where(drop, 0.0, m.moment))
+                neglected[m.name] = drop
 
 
 def point_velocity(mech: Mechanism, kin: Kinematics, link: str, at) -> Array:
