@@ -48,6 +48,16 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
     ``formats`` are the sheets' formats (:data:`graphplan.render.formats.FORMATS`; SVG text,
     the others bytes), ``dpi`` the resolution of the PNG previews.
     """
+    from .render import PreviewPool, parse_formats, resolve
+
+    # the PNG previews are drawn by worker processes (where there are any) while the
+    # tables and the next sheets are made; collected at the end
+    png = "png" in parse_formats(formats)
+    with PreviewPool(3 if png else 0) as pool:
+        return resolve(_project_files(analysis, lang, precision, formats, dpi, pool))
+
+
+def _project_files(analysis, lang, precision, formats, dpi, pool) -> dict:
     from .drawing import kinematics_sheet, kinetostatics_sheet
     from .render import DEFAULT_DPI, sheet_files
     from .reports import forces_csv, forces_markdown, plans_csv, plans_markdown
@@ -57,7 +67,7 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
     dpi = DEFAULT_DPI if dpi is None else dpi
 
     def sheets(named) -> dict[str, str | bytes]:
-        return sheet_files(named, formats, dpi=dpi)
+        return sheet_files(named, formats, dpi=dpi, pool=pool)
 
     out = {
         **sheets({"sheet1": kinematics_sheet(analysis, lang=lang),

@@ -581,21 +581,20 @@ def _neglect(mech, kin, forces, moments, frac) -> dict[str, NDArray[np.bool_]]:
         hit = drop.any(axis=1).tolist()
         if not any(hit):
             continue
-        k = 0
-        for ln in links:
+        kf, km = 0, len(fl)  # rows: the forces link by link, then the couples
+        for ln in links:  # link by link, its forces then its couples (the report's order)
             for n, f in enumerate(forces[ln]):
-                if hit[k]:
+                if hit[kf]:
                     forces[ln][n] = ForceLoad(f.name, f.link, f.kind, f.point, f.at,
-                                              np.where(drop[k][:, None], 0.0, f.vector))
-                    neglected[f.name] = drop[k]
-                k += 1
-        for ln in links:
+                                              np.where(drop[kf][:, None], 0.0, f.vector))
+                    neglected[f.name] = drop[kf]
+                kf += 1
             for n, m in enumerate(moments[ln]):
-                if hit[k]:
+                if hit[km]:
                     moments[ln][n] = MomentLoad(m.name, m.link, m.kind,
-                                                np.where(drop[k], 0.0, m.moment))
-                    neglected[m.name] = drop[k]
-                k += 1
+                                                np.where(drop[km], 0.0, m.moment))
+                    neglected[m.name] = drop[km]
+                km += 1
     return neglected
 
 

@@ -28,6 +28,7 @@ from .formats import FORMATS, check_formats, parse_formats, sheet_files, write_e
 from .pdf import CREATOR, font_folders, pdf_bytes, svg_to_pdf_bytes, write_pdf
 from .png import DEFAULT_DPI, check_dpi, png_bytes, png_size, write_png
 from .raster import svg_to_png
+from .workers import JOBS_ENV, PreviewPool, resolve
 
 __all__ = [
     "APPID",
@@ -42,10 +43,12 @@ __all__ = [
     "FLAGS",
     "FORMATS",
     "GOST_LINETYPES",
+    "JOBS_ENV",
     "LAYER_DESCRIPTIONS",
     "PACKAGES",
     "TEXT_STYLES",
     "MissingExtraError",
+    "PreviewPool",
     "check_dpi",
     "check_formats",
     "dxf_bytes",
@@ -63,6 +66,7 @@ __all__ = [
     "render_svg_png",
     "require",
     "require_format",
+    "resolve",
     "sheet_files",
     "svg_to_pdf_bytes",
     "svg_to_png",

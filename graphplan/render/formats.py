@@ -29,6 +29,7 @@ from ..errors import InputError
 from ..files import write_atomic
 from .extra import EXTRA, PACKAGES, MissingExtraError, require_format
 from .png import DEFAULT_DPI, check_dpi
+from .workers import PreviewPool, resolve
 
 #: Export formats, in the order their files are listed.
 FORMATS: tuple[str, ...] = ("svg", "dxf", "pdf", "png")
@@ -64,7 +65,8 @@ def check_formats(formats: Iterable[str], engine: str | None = None) -> None:
 
 
 def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), *,
-                dpi: float = DEFAULT_DPI, engine: str | None = None) -> dict[str, str | bytes]:
+                dpi: float = DEFAULT_DPI, engine: str | None = None,
+                pool: PreviewPool | None = None) -> dict[str, str | bytes]:
     """File name → content of every sheet in every format (nothing is written here).
 
     Parameters
@@ -78,6 +80,12 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
     engine : str, optional
         Engine of the PDF and PNG: None (``$GRAPHPLAN_EXPORT_ENGINE``, else typst and
         resvg) or ``"cairo"``.
+    pool : PreviewPool, optional
+        Worker processes for the PNG previews (:mod:`graphplan.render.workers`), shared
+        with the caller: the PNGs are then left *pending* in the result, for the caller
+        to :func:`~graphplan.render.workers.resolve` when its other work is done.
+        Without one, the previews of several sheets are drawn in workers of their own
+        (where there are workers) and the result holds only values.
 
     Returns
     -------
@@ -97,14 +105,24 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
     if "png" in fmts:
         dpi = check_dpi(dpi)
     check_formats(fmts, engine)
+    if pool is None:
+        with PreviewPool(len(sheets) if "png" in fmts else 0) as own:
+            return resolve(sheet_files(sheets, fmts, dpi=dpi, engine=engine, pool=own))
     from ..render.svg import render_svg
     from .dxf import dxf_bytes
     from .pdf import svg_to_pdf_bytes
-    from .png import png_bytes
+    from .png import png_bytes, png_size_check, svg_to_png_bytes
 
     out: dict[str, str | bytes] = {}
     for name, sheet in sheets.items():
         svg = render_svg(sheet) if {"svg", "pdf", "png"} & set(fmts) else None
+        png = None
+        if "png" in fmts:  # handed to a worker first: it draws while the rest is made
+            if pool.workers:
+                png_size_check(sheet, dpi)
+                png = pool.submit(svg_to_png_bytes, svg, dpi, engine)
+            else:
+                png = png_bytes(sheet, dpi, svg_text=svg, engine=engine)
         for fmt in fmts:
             if fmt == "svg":
                 out[f"{name}.svg"] = svg  # type: ignore[assignment]
@@ -113,7 +131,7 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
             elif fmt == "pdf":
                 out[f"{name}.pdf"] = svg_to_pdf_bytes(svg, engine)  # type: ignore[arg-type]
             else:
-                out[f"{name}.png"] = png_bytes(sheet, dpi, svg_text=svg, engine=engine)
+                out[f"{name}.png"] = png  # type: ignore[assignment]
     return out
 
 

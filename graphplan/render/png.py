@@ -75,9 +75,8 @@ def png_size(sheet: Sheet, dpi: float = DEFAULT_DPI) -> tuple[int, int]:
     return (round(sheet.page.width * dpi / 25.4), round(sheet.page.height * dpi / 25.4))
 
 
-def png_bytes(sheet: Sheet, dpi: float = DEFAULT_DPI, svg_text: str | None = None, *,
-              engine: str | None = None) -> bytes:
-    """PNG preview of ``sheet`` (``svg_text``: its SVG if already rendered).
+def png_size_check(sheet: Sheet, dpi: float) -> float:
+    """``dpi`` checked (:func:`check_dpi`) and the preview's size with it.
 
     Raises
     ------
@@ -88,6 +87,19 @@ def png_bytes(sheet: Sheet, dpi: float = DEFAULT_DPI, svg_text: str | None = Non
     w, h = png_size(sheet, dpi)
     if max(w, h) > MAX_SIDE_PX:
         raise InputError(f"PNG dpi {dpi:g} gives {w}×{h} px; at most {MAX_SIDE_PX} px a side")
+    return dpi
+
+
+def png_bytes(sheet: Sheet, dpi: float = DEFAULT_DPI, svg_text: str | None = None, *,
+              engine: str | None = None) -> bytes:
+    """PNG preview of ``sheet`` (``svg_text``: its SVG if already rendered).
+
+    Raises
+    ------
+    InputError
+        If ``dpi`` is not positive or a side would exceed :data:`MAX_SIDE_PX`.
+    """
+    dpi = png_size_check(sheet, dpi)
     if svg_text is None:
         from ..render.svg import render_svg
 
@@ -102,5 +114,5 @@ def write_png(sheet: Sheet, path: str | Path, dpi: float = DEFAULT_DPI,
     return write_atomic(path, png_bytes(sheet, dpi, svg_text, engine=engine), protect=protect)
 
 
-__all__ = ["DEFAULT_DPI", "MAX_SIDE_PX", "check_dpi", "png_bytes", "png_size", "svg_to_png_bytes",
-           "write_png"]
+__all__ = ["DEFAULT_DPI", "MAX_SIDE_PX", "check_dpi", "png_bytes", "png_size", "png_size_check",
+           "svg_to_png_bytes", "write_png"]
