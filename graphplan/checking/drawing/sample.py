@@ -132,13 +132,13 @@ def _layout(ref, labels, plant: Plant | None):
     return out
 
 
-def _letters(pts: dict) -> list[tuple[str, np.ndarray, np.ndarray]]:
-    """One text per place (names of coincident points joined by commas), with the
-    direction to set it off in: away from the middle of the plan."""
+def _letters(pts: dict, merge: float = 0.3) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """One text per place (names of points closer than ``merge`` mm joined by commas),
+    with the direction to set it off in: away from the middle of the plan."""
     groups: list[tuple[list[str], np.ndarray]] = []
     for name, xy in pts.items():
         for g in groups:
-            if np.hypot(*(g[1] - xy)) < 0.3:
+            if np.hypot(*(g[1] - xy)) < merge:
                 g[0].append(name)
                 break
         else:
@@ -155,8 +155,13 @@ def _letters(pts: dict) -> list[tuple[str, np.ndarray, np.ndarray]]:
 
 def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
                   plant: Plant | None = None, origin=(5000.0, -3000.0),
-                  inches: bool = False) -> Path:
-    """Draw the plans of ``labels`` of a variant as a student's DXF or PDF (module doc)."""
+                  inches: bool = False, leaders: float = 0.0) -> Path:
+    """Draw the plans of ``labels`` of a variant as a student's DXF or PDF (module doc).
+
+    ``leaders`` (DXF): every letter set this many mm farther out than usual and joined
+    to its point by a thin leader line that stops 1.5 mm short of the point (выноска);
+    the pole's letters (with those of every point at the pole) set below the pole, under
+    two short direction lines drawn through it."""
     from ..checks import reference_for
 
     ref = reference_for(Path(variant))
@@ -165,7 +170,7 @@ def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
     if fmt == "pdf":
         _pdf(plans, path)
     else:
-        _dxf(plans, path, np.asarray(origin, float), inches)
+        _dxf(plans, path, np.asarray(origin, float), inches, leaders)
     return path
 
 
@@ -182,7 +187,7 @@ def _cells(plans):
         yield p, np.array([20.0 - min(xs) + w * col, 20.0 - min(ys) + h * (1 - row)])
 
 
-def _dxf(plans, path: Path, origin: np.ndarray, inches: bool) -> None:
+def _dxf(plans, path: Path, origin: np.ndarray, inches: bool, leaders: float = 0.0) -> None:
     import ezdxf
 
     doc = ezdxf.new("R2013")
@@ -234,12 +239,64 @@ def _dxf(plans, path: Path, origin: np.ndarray, inches: bool) -> None:
         for A, B in chain:
             msp.add_lwpolyline([X(A), X(A + 0.5 * (B - A)), X(B)],
                                dxfattribs={"layer": "ПЛАНЫ", "color": 1})
-        for text, xy, out in _letters(pts):
+        boxes: list[tuple[float, float, float, float]] = []  # texts on leaders so far
+        # the plan's lines as points 0.5 mm apart: a letter on a leader is set clear of them
+        drawn = [pts[a] + t * (pts[b] - pts[a]) for a, b in segs
+                 for t in np.linspace(0.0, 1.0, 2 + int(np.hypot(*(pts[b] - pts[a])) / 0.5))]
+        drawn += [a + t * (b - a) for a, b in lines
+                  for t in np.linspace(0.0, 1.0, 2 + int(np.hypot(*(b - a)) / 0.5))]
+        drawn_xy = np.array(drawn) if drawn else np.zeros((0, 2))
+        # on leaders, points closer than 1 mm take one group of letters (one leader)
+        for text, xy, out in _letters(pts, 1.0 if leaders else 0.3):
+            at_pole = pole in text.split(", ")
+            far = 1.5
             # set off outwards from the plan's middle, as a draftsman keeps letters clear
             att = (7 if out[1] >= 0 else 1) if out[0] >= 0 else (9 if out[1] >= 0 else 3)
+            if leaders and at_pole:
+                out = np.array([0.0, -1.0])  # under the pole, below its direction lines
+                for ang in (0.0, 70.0):
+                    u = np.array([np.cos(np.radians(ang)), np.sin(np.radians(ang))])
+                    msp.add_line(X(c + xy - 8.0 * u), X(c + xy + 8.0 * u),
+                                 dxfattribs={"layer": "Построения"})
+                far, att = 6.0, 8  # top centre
+            elif leaders:
+                # the text farther out, its middle on the leader's line, and no text over
+                # another where points crowd (the leader made longer)
+                hw, hh = 0.35 * 3.0 * len(text), 1.5
+
+                def clear(o, lead, hw=hw, hh=hh, xy=xy, drawn_xy=drawn_xy, boxes=boxes):
+                    edge = min(hw / max(abs(float(o[0])), 1e-9),
+                               hh / max(abs(float(o[1])), 1e-9))
+                    far = 1.0 + lead + 0.7 + edge
+                    cx, cy = xy + far * o
+                    line = [xy + t * o for t in np.linspace(1.5, 1.0 + lead, 12)]
+                    ok = not any((abs(cx - bx) < hw + bw + 0.5 and abs(cy - by) < hh + bh + 0.5)
+                                 or any(abs(q[0] - bx) < bw + 0.5 and abs(q[1] - by) < bh + 0.5
+                                        for q in line) for bx, by, bw, bh in boxes)
+                    ok = ok and not np.any((abs(drawn_xy[:, 0] - cx) < hw + 0.3) &
+                                           (abs(drawn_xy[:, 1] - cy) < hh + 0.3))
+                    return ok, far, float(cx), float(cy)
+
+                tries = [(turn, leaders + 2.0 * j) for j in range(6)
+                         for turn in (0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0)]
+                for turn, lead in tries:
+                    r = np.radians(turn)
+                    o = np.array([out[0] * np.cos(r) - out[1] * np.sin(r),
+                                  out[0] * np.sin(r) + out[1] * np.cos(r)])
+                    ok, far, cx, cy = clear(o, lead)
+                    if ok:
+                        break
+                if not ok:
+                    o, lead = out, leaders
+                    _ok, far, cx, cy = clear(o, lead)
+                out = o
+                boxes.append((float(cx), float(cy), hw, hh))
+                att = 5
+                # a leader from just off the point out to the text (GOST 2.316)
+                msp.add_line(X(c + xy + 1.5 * out), X(c + xy + (1.0 + lead) * out),
+                             dxfattribs={"layer": "Построения"})
             m = msp.add_mtext(text, dxfattribs={"char_height": 3.0 * k, "layer": "ПЛАНЫ"})
-            m.set_location(X(c + xy + 1.5 * out), attachment_point=att)
-        del pole
+            m.set_location(X(c + xy + far * out), attachment_point=att)
     doc.saveas(path)
 
 

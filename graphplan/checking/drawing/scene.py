@@ -10,6 +10,8 @@ between them, arrowheads, and the letters placed near the points.
   split into its names, and each name is given to the nearest node within reach of the
   text (a few letter heights), preferring a node where lines meet over the loose end of
   a construction line.
+  A text joined to its point by a leader line (a short line with no arrowhead running
+  away from the text) names the point at the leader's other end.
 * **Groups**: lines that touch (an end on another line, or a shared end) are one group
   — one plan, unless the sheet draws plans over each other.
 """
@@ -30,6 +32,10 @@ TOUCH_MM = 0.3
 """A node this close to a line lies on it (mm)."""
 ARROW_MM = 7.0
 """Largest arrowhead (mm): a line is carried on to a tip at most this far."""
+LEADER_MM = 40.0
+"""Longest leader line (выноска) from a letter to its point (mm)."""
+LEADER_GAP_MM = 3.5
+"""A leader may stop this far short of its point (mm)."""
 OPTION_H = 2.0
 """Nodes within this many letter heights of a letter's nearest node are kept as its
 other options (for a letter placed between two points)."""
@@ -381,11 +387,137 @@ class Scene:
                 break
 
     def _overshoot(self, n: int) -> bool:
-        """A loose end of a line that runs on past a point (a construction line drawn
-        through a point and a little beyond it)."""
-        seg = self.nodes[n].segments[0]
-        return any(seg in on for on in self.on_segment if on) if not hasattr(
-            self, "_interior") else bool(self._interior.get(seg))
+        """A loose end of lines that run on past a point (construction lines drawn
+        through a point and a little beyond it — one line, or several ending together,
+        like the direction lines drawn through a pole): no arrowhead here or on them,
+        and each runs through another node near this end."""
+        nd = self.nodes[n]
+        if nd.tip:
+            return False
+        if nd.ends == 1:
+            return bool(self._interior.get(nd.segments[0]))
+        for i in nd.segments:
+            if any(self.heads[i]):
+                return False
+            s = self.segments[i]
+            near = min((math.hypot(self.nodes[m].x - nd.x, self.nodes[m].y - nd.y)
+                        for m in self._interior.get(i, ())), default=math.inf)
+            if near > max(10.0, 0.35 * s.length):
+                return False
+        return True
+
+    def _leaders(self) -> tuple[dict[int, tuple[int, float]], set[int]]:
+        """Leader lines (выноски): a short thin line with no arrowhead and nothing on it, one
+        free end at a text's box, running away from the text. The text names the point at
+        the leader's other end — where it touches other lines, or the node nearest that
+        end (a leader stops a little short of its point). Returns, per text (by its index
+        in the drawing), the node named and the leader's length, and the leaders' own
+        loose ends (no point is there)."""
+        named: dict[int, tuple[int, float]] = {}
+        own: set[int] = set()
+        cell = 5.0
+        # a leader is drawn as a thin line: none thicker than the thinnest lines drawn
+        thin = min((s.width for s in self.segments if s.length > 1.0), default=0.0)
+        for ti, t in enumerate(self.drawing.texts):
+            if not is_names(t.text):
+                continue
+            half_w = 0.35 * t.height * len(t.text)
+            a = math.radians(t.angle)
+            ca, sa = math.cos(a), math.sin(a)
+
+            def box_d(x: float, y: float, t=t, ca=ca, sa=sa, half_w=half_w) -> float:
+                u = (x - t.x) * ca + (y - t.y) * sa
+                v = -(x - t.x) * sa + (y - t.y) * ca
+                return math.hypot(max(abs(u) - half_w, 0.0), max(abs(v) - 0.5 * t.height, 0.0))
+
+            best: tuple[float, int, float, int, int] | None = None
+            r = int((half_w + LEADER_MM) // cell) + 1
+            ci, cj = int(t.x // cell), int(t.y // cell)
+            seen: set[int] = set()
+            for di in range(-r, r + 1):
+                for dj in range(-r, r + 1):
+                    for i in self._seg_grid.get((ci + di, cj + dj), ()):
+                        if i in seen:
+                            continue
+                        seen.add(i)
+                        s = self.segments[i]
+                        if not 1.0 <= s.length <= LEADER_MM or any(self.heads[i]) or \
+                                s.width > 1.2 * thin + 1e-6 or self._crossed(i):
+                            continue
+                        na, nb = self.seg_nodes[i]
+                        da, db = box_d(s.x1, s.y1), box_d(s.x2, s.y2)
+                        if db < da:
+                            na, nb, da, db = nb, na, db, da
+                        near, far = self.nodes[na], self.nodes[nb]
+                        # one end at the text's box, the line running away from the text
+                        if da > 0.5 * t.height + 0.3 or db < da + 1.0 or \
+                                (far.x - near.x) * (near.x - t.x) + \
+                                (far.y - near.y) * (near.y - t.y) <= 0 or \
+                                near.ends != 1 or near.passes or near.tip:
+                            continue
+                        target = self._leader_target(nb, na, far, near)
+                        if target is None:
+                            continue
+                        if best is None or da < best[0]:
+                            best = (da, target, s.length, na, nb)
+            if best is not None:
+                named[ti] = (best[1], best[2])
+                own.add(best[3])
+                if best[4] != best[1]:
+                    own.add(best[4])
+        return named, own
+
+    def _crossed(self, i: int) -> bool:
+        """Whether a point lies on line i: a node where lines meet or an arrowhead points
+        (not a line drawn along it, not another line's loose end just touching it)."""
+        for m in self._interior.get(i, ()):
+            nd = self.nodes[m]
+            if nd.tip:
+                return True
+            if nd.ends < 2:
+                continue
+            # the lines ending here, as unit vectors pointing away from the node
+            out = []
+            for j in nd.segments:
+                q = self.segments[j]
+                sgn = 1.0 if math.hypot(q.x1 - nd.x, q.y1 - nd.y) < \
+                    math.hypot(q.x2 - nd.x, q.y2 - nd.y) else -1.0
+                out.append((sgn * (q.x2 - q.x1) / q.length, sgn * (q.y2 - q.y1) / q.length))
+            ox, oy = out[0]
+            if all(abs(ox * qy - oy * qx) <= 0.02 for qx, qy in out[1:]) and \
+                    any(ox * qx + oy * qy < 0 for qx, qy in out[1:]):
+                continue  # pieces of one straight line meeting on it
+            return True
+        return False
+
+    def _leader_target(self, nb: int, na: int, far: Node, near: Node) -> int | None:
+        """The node a leader from ``near`` to ``far`` points at (see :meth:`_leaders`)."""
+        others = [i for i in far.segments if set(self.seg_nodes[i]) != {na, nb}]
+        if far.tip or len(others) >= 2 or any(any(self.heads[i]) for i in others):
+            return nb  # drawn to the point itself
+        L = math.hypot(far.x - near.x, far.y - near.y)
+        ux, uy = (far.x - near.x) / L, (far.y - near.y) / L
+        reach = LEADER_GAP_MM
+        ci, cj = math.floor(far.x / SNAP_MM), math.floor(far.y / SNAP_MM)
+        k = int(reach / SNAP_MM) + 1
+        best: tuple[float, int] | None = None
+        for di in range(-k, k + 1):
+            for dj in range(-k, k + 1):
+                for m in self._grid.get((ci + di, cj + dj), ()):
+                    if m in (na, nb):
+                        continue
+                    nd = self.nodes[m]
+                    dx, dy = nd.x - far.x, nd.y - far.y
+                    d = math.hypot(dx, dy)
+                    if d > reach or dx * ux + dy * uy < -0.3 * d:
+                        continue  # too far, or behind the leader's end
+                    across = abs(-dx * uy + dy * ux)
+                    score = 0.5 * (dx * ux + dy * uy) + 3.0 * across  # aimed at it
+                    if best is None or score < best[0]:
+                        best = (score, m)
+        if best is not None:
+            return best[1]
+        return nb if far.passes or others else None
 
     def is_join(self, n: int) -> bool:
         """Whether node n is only where pieces of one straight line meet (a line split in
@@ -416,8 +548,9 @@ class Scene:
         grid: dict[tuple[int, int], list[int]] = {}
         for n, nd in enumerate(self.nodes):
             grid.setdefault((int(nd.x // cell), int(nd.y // cell)), []).append(n)
+        leaders, leader_ends = self._leaders()
         cands: list[tuple[Text, list[tuple[float, int, float]]]] = []
-        for t in self.drawing.texts:
+        for ti, t in enumerate(self.drawing.texts):
             if not is_names(t.text):
                 continue
             names = split_names(t.text)
@@ -433,6 +566,8 @@ class Scene:
             for di in range(-r, r + 1):
                 for dj in range(-r, r + 1):
                     for n in grid.get((ci + di, cj + dj), ()):
+                        if n in leader_ends:
+                            continue  # a leader's own end: no point is there
                         nd = self.nodes[n]
                         u = (nd.x - t.x) * ca + (nd.y - t.y) * sa
                         v = -(nd.x - t.x) * sa + (nd.y - t.y) * ca
@@ -449,7 +584,7 @@ class Scene:
                         if d > reach:
                             continue
                         cost = d - 0.25 * t.height * min(nd.degree - 1, 2)
-                        if nd.ends == 1 and not nd.tip and self._overshoot(n):
+                        if self._overshoot(n):
                             cost += 2.5 * t.height
                         elif self.is_join(n):  # where one line's pieces meet: no point
                             cost += 1.0 * t.height
@@ -460,6 +595,9 @@ class Scene:
                         elif nd.tip:
                             cost -= 0.3 * t.height
                         lst.append((cost, n, d))
+            if ti in leaders:  # the leader's point before any point near the text
+                n, length = leaders[ti]
+                lst = [(-1.0 * t.height, n, length), *(c for c in lst if c[1] != n)]
             lst.sort()
             cands.append((t, lst))
         cands.sort(key=lambda c: c[1][0][0] if c[1] else math.inf)
