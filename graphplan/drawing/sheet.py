@@ -31,7 +31,7 @@ from dataclasses import KW_ONLY, dataclass, field
 import numpy as np
 import shapely
 from shapely import affinity
-from shapely.geometry import LinearRing, LineString, MultiLineString, Point, Polygon, box
+from shapely.geometry import LinearRing, LineString, MultiLineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import InputError, LayoutError
@@ -438,7 +438,9 @@ def text_box(text: Text) -> Polygon:
     adv = fonts.text_width(text.text, h)
     lean = h * math.tan(math.radians(SLANT_DEG)) if text.italic else 0.0
     x0 = {"start": x, "middle": x - adv / 2, "end": x - adv}[text.anchor]
-    poly = box(x0, y - h, x0 + adv + lean, y + 0.3 * h)
+    # shapely.box: the polygon of shapely.geometry.box (same vertices, same order), built
+    # in one call instead of from a list of tuples (text_box is in every label's search)
+    poly = shapely.box(x0, y - h, x0 + adv + lean, y + 0.3 * h)
     if text.rotate_deg:
         poly = affinity.rotate(poly, -text.rotate_deg, origin=(x, y))
     return poly

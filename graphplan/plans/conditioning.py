@@ -447,8 +447,19 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
                 out["Mур"] = p.M_bal
         return out
 
+    lever_base: list = []  # the unshifted probe's velocity plan and the readings it took
+
     def run_lever(reader):
-        lv = zhukovsky_lever(mech, kin, loads, k, kl, kv, reader)
+        plan = None  # a shifted arm of the lever reuses the unshifted velocity plan
+        if isinstance(reader, _Probe):
+            if lever_base and 0 <= lever_base[1] <= reader.shift:
+                plan, nv = lever_base
+                reader.calls.extend(range(nv))
+            else:
+                plan = velocity_plan(mech, kin, k, kl, kv, reader)
+                if reader.shift < 0:
+                    lever_base[:] = (plan, len(reader.calls))
+        lv = zhukovsky_lever(mech, kin, loads, k, kl, kv, reader, plan=plan)
         return {"Mур": lv.M_bal}
 
     f0, drawn, bounds, same = _bounds(run_plans, precision, kind=lambda q: q == "Mур")

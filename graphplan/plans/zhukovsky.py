@@ -257,8 +257,8 @@ class _LinkImages:
 
 
 def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: int, kl: Scale,
-                    kv: Scale, reader: Reader = EXACT, *, reference: float | None = None
-                    ) -> Lever:
+                    kv: Scale, reader: Reader = EXACT, *, reference: float | None = None,
+                    plan: Plan | None = None) -> Lever:
     """Build Zhukovsky's lever of position k and read the balancing moment off it.
 
     Governing equations (module docstring): the plan turned +90° (CCW) about p,
@@ -284,6 +284,10 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
     reference : float, optional
         M_ур from the force plans (e.g. ``solve_forces(...).M_bal[k]``), N·m: the lever
         reports its discrepancy against it.
+    plan : Plan, optional
+        The velocity plan of position k at ``kl``, ``kv`` already built with a reader that
+        read it as ``reader`` would (the error bounds' probes whose shifted reading is an
+        arm of the lever reuse the unshifted plan); built here by default.
 
     Returns
     -------
@@ -293,7 +297,8 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
         loads = compute_loads(mech, kin)
     if loads.phi.shape != kin.phi.shape or not np.array_equal(loads.phi, kin.phi):
         raise ValueError("zhukovsky_lever: the loads were computed for other positions")
-    plan = velocity_plan(mech, kin, k, kl, kv, reader)
+    if plan is None:
+        plan = velocity_plan(mech, kin, k, kl, kv, reader)
     cr = mech.crank
     pos = position_mm(kin, k, kl.per_mm, cr.pivot)
     origin = kin.pos.points[cr.pivot][k]
