@@ -36,7 +36,7 @@ from norm_measures import (
     plan_longest,
 )
 
-from graphplan.drawing import Text, iter_leaves, kinematics_sheet, kinetostatics_sheet
+from graphplan.drawing import Text, iter_leaves, kinematics_sheet, kinetostatics_sheet, text_box
 from graphplan.model import load
 from graphplan.project import analyze
 
@@ -281,6 +281,9 @@ def test_every_example_draws_on_a2_and_a3(request, tmp_path, name, fmt):
     a = analysis(name)
     for link in a.mech.moving_links:
         assert re.search(rf'id="pp-0-(?:link|slider)-{re.escape(link)}', svg), link
+    if "delta" in a.mech.settings.get("dynamics", {}):  # sheet 3 on the same format
+        svg3 = (tmp_path / "sheet3.svg").read_text(encoding="utf-8")
+        assert f'width="{w}"' in svg3 and f'height="{h}"' in svg3
 
 
 # ------------------------------------------- variants nobody wrote an example for
@@ -333,3 +336,87 @@ def test_scales_print_without_powers_of_ten(name):
     scales = [t for t in texts if re.match(r"^(План положений\s+)?K", t)]
     assert len(scales) >= 4
     assert not [t for t in texts if "·10" in t or "e-0" in t]
+
+
+# ----------------------------------------------------------- sheet 3 on A2 and A3
+
+PSI_READABLE = (20.0, 70.0)  #: ψmin and ψmax of the energy–mass diagram's tangents, degrees
+
+
+@cache
+def sheet3_on(name: str, fmt: str):
+    from graphplan.drawing import dynamics_sheet
+    from graphplan.paper import Page
+
+    a = analysis(name)
+    if "delta" not in a.mech.settings.get("dynamics", {}):
+        pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
+    return dynamics_sheet(a, page=Page(fmt))
+
+
+@pytest.mark.parametrize("fmt", ["A2", "A3"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_sheet_3_on_a2_and_a3(name, fmt):
+    """Sheet 3 on the format asked (issue 18: "A1, A2 and A3 work for every example"): every
+    line and letter inside the frame and off the title block, no text over a line or a text,
+    the tangents at tens of degrees at that format's own scales (the ones the sheet prints),
+    the flywheel's views and dimensions clear of every other block, and the table of values
+    drawn or said where it went."""
+    from graphplan.drawing import item_geometry
+    from graphplan.paper import Page
+
+    sh = sheet3_on(name, fmt)
+    page = Page(fmt)
+    assert sh.page == page
+    f, tb = page.frame, page.title_block_rect
+    frame = shapely.box(f.x0, f.y0, f.x1, f.y1)
+    block = shapely.box(tb.x0, tb.y0, tb.x1, tb.y1).buffer(-0.1)
+    geoms = {}
+    for it in iter_leaves(sh.items):
+        g = text_box(it) if isinstance(it, Text) else item_geometry(it)
+        if g is not None and not g.is_empty:
+            geoms[id(it)] = (it, g)
+    outside = [it.id or type(it).__name__ for it, g in geoms.values()
+               if not frame.contains(g) or g.intersects(block)]
+    assert outside == []
+    found = overlaps(sh)
+    assert found == [], f"{len(found)} overlaps, e.g. {found[:5]}"
+    fw = analysis(name).unit_on(page).flywheel
+    assert PSI_READABLE[0] <= fw.psi_min < fw.psi_max <= PSI_READABLE[1]
+    texts = [it.text for it in iter_leaves(sh.items) if isinstance(it, Text)]
+    psi = f"ψmax = {fw.psi_max:.1f}°,  ψmin = {fw.psi_min:.1f}°".replace(".", ",")
+    assert psi in texts
+    assert any(t.startswith("KT = ") and t.endswith("Дж/мм") for t in texts)
+    views = [g for it, g in geoms.values() if (it.id or "").startswith("s3-fw")]
+    assert views
+    box = shapely.box(*shapely.union_all(views).bounds)
+    others = [it.id or type(it).__name__ for it, g in geoms.values()
+              if not (it.id or "").startswith("s3-fw") and g.intersects(box)]
+    assert others == []
+    assert any(t.startswith("Значения в положениях") for t in texts)
+
+
+@pytest.mark.parametrize("fmt", ["A2", "A3"])
+@pytest.mark.parametrize("name", ["press", "shaper"])
+def test_flywheel_on_a2_and_a3_after_gost_2_307(name, fmt):
+    """The flywheel at the GOST reduction the format allows: ⌀ outer, ⌀ inner and b in whole
+    mm; a number wider than the space between its extension lines stands on the dimension
+    line drawn on past the arrow (GOST 2.307), not across the extension lines."""
+    from graphplan.drawing import Line
+    from graphplan.drawing.sheet import text_width
+
+    sh = sheet3_on(name, fmt)
+    s = analysis(name).unit_on(sh.page).mounted
+    by_id = {it.id: it for it in iter_leaves(sh.items) if it.id}
+    assert by_id["s3-fw-dim-out-t"].text == f"⌀{round((s.D + s.h) * 1000)}"
+    assert by_id["s3-fw-dim-in-t"].text == f"⌀{round((s.D - s.h) * 1000)}"
+    num = by_id["s3-fw-dim-b-t"]
+    assert num.text == f"{round(s.b * 1000)}"
+    x0, x1 = by_id["s3-fw-ext-b0"].p0[0], by_id["s3-fw-ext-b1"].p0[0]
+    if text_width(num) + 1.0 > x1 - x0:  # on the shelf, right of the extension line b1
+        shelf = by_id["s3-fw-dim-b-shelf"]
+        assert isinstance(shelf, Line) and shelf.p0[0] == pytest.approx(x1)
+        assert text_box(num).bounds[0] > x1
+    else:
+        assert "s3-fw-dim-b-shelf" not in by_id
+        assert x0 < text_box(num).bounds[0] and text_box(num).bounds[2] < x1

@@ -141,9 +141,6 @@ def test_every_variant_draws_on_a2_and_a3(request, tmp_path, name, fmt):
         assert re.search(rf'id="s2p\d+-(?:link|slider)-{re.escape(link)}', svg[2]), link
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "issue 18 (sheet 3, no owner this session): sheet 3 is drawn on A1 whatever --page says; "
-    "its diagrams' scales are chosen for A1 (469×554 mm of diagrams on the four-bar)"))
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 def test_sheet_3_takes_the_format_asked(tmp_path, fmt):
     from graphplan.outputs import write_project

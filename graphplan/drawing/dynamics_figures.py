@@ -26,6 +26,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from shapely import LineString, union_all
 
 from ..units import fmt
 from .labels import LabelRequest, place_labels
@@ -41,6 +42,7 @@ from .sheet import (
     item_geometry,
     iter_leaves,
     text_box,
+    text_width,
 )
 
 THIN = Style(0.25)
@@ -109,16 +111,48 @@ class Block:
         keep = [text_box(t) for t in iter_leaves(self.items) if isinstance(t, Text)]
         texts = place_labels(self.labels, obstacles, layer=LAYER, id_prefix=ident,
                              merge_mm=0.5, max_radius=10.0, keep_out=[*keep, *keep_out])
-        return self.items + texts
+        return _broken_under(self.items, [text_box(t) for t in texts if isinstance(t, Text)]) \
+            + texts
+
+
+def _broken_under(items: list, boxes: list) -> list:
+    """The thin straight ordinates (two-point lines across φ axes, where the intervals are
+    closer than a position's number is wide) interrupted where a number still stands on
+    them, as a drafter leaves a gap in a thin line for a number; other lines untouched."""
+    if not boxes:
+        return items
+    inner = union_all([b.buffer(-0.15) for b in boxes])  # a line through a number's box
+    gaps = union_all([b.buffer(0.4) for b in boxes])
+    out: list = []
+    for it in items:
+        if not (isinstance(it, Polyline) and len(it.points) == 2 and it.style == THIN
+                and abs(it.points[0][0] - it.points[1][0]) < 1e-9):
+            out.append(it)
+            continue
+        line = LineString(it.points)
+        if not line.intersects(inner):
+            out.append(it)
+            continue
+        rest = line.difference(gaps)
+        parts = getattr(rest, "geoms", [rest])
+        out += [Polyline(tuple((float(x), float(y)) for x, y in g.coords), it.style,
+                         layer=it.layer, id=it.id)
+                for g in parts if not g.is_empty and g.length > 0.3]
+    return out
 
 
 def _axes(b: Block, x0: float, y0: float, x_from: float, x_to: float, y_lo: float,
-          y_hi: float, ylabel: str, xlabel: str = "φ", left: bool = False) -> None:
+          y_hi: float, ylabel: str, xlabel: str = "φ", left: bool = False,
+          beyond: bool = False) -> None:
     """Abscissa from x_from to x_to at y0 and ordinate from y_lo up to y_hi at x0, arrows;
-    the ordinate's letters right of its arrow (``left``: left of it)."""
+    the ordinate's letters right of its arrow (``left``: left of it), the abscissa's above
+    its arrow (``beyond``: past its tip)."""
     b.arrow((x_from, y0), (x_to, y0))
     b.arrow((x0, y_lo), (x0, y_hi))
-    b.text((x_to - 1.0, y0 - 2.0), xlabel, TEXT_H, "end")
+    if beyond:
+        b.text((x_to + 1.0, y0 + 0.5 * TEXT_H), xlabel, TEXT_H)
+    else:
+        b.text((x_to - 1.0, y0 - 2.0), xlabel, TEXT_H, "end")
     if left:
         b.text((x0 - 2.0, y_hi + 2.0), ylabel, TEXT_H, "end")
     else:
@@ -247,26 +281,31 @@ def unit_parts(u):
     return u.flywheel, u.model
 
 
-def _magnify(width: float) -> float:
-    """Magnification of a JII(φ) only ``width`` mm wide: 1, 2, 2.5, 4, 5, 10 … ×."""
-    if width >= MIN_READ or width <= 0:
+def _magnify(width: float, least: float = MIN_READ) -> float:
+    """Magnification of a JII(φ) only ``width`` mm wide (narrower than ``least``): 1, 2,
+    2.5, 4, 5, 10 … ×."""
+    if width >= least or width <= 0:
         return 1.0
     for k in (2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 25.0, 40.0, 50.0, 100.0):
-        if width * k >= MIN_READ:
+        if width * k >= least:
             return k
     return 100.0
 
 
-def energy_mass_width(u) -> float:
-    """Width of the energy–mass block (both diagrams and their letters), mm."""
+def energy_mass_width(u, least: float = MIN_READ) -> float:
+    """Width of the energy–mass block (both diagrams and their letters), mm; ``least`` the
+    narrowest JII(φ) drawn unmagnified (:data:`MIN_READ` on A1)."""
     fw, m = unit_parts(u)
     W = float(m.inertia.I_var.max()) / fw.KI
-    W2 = W * _magnify(W)
+    W2 = W * _magnify(W, least)
     return LEFT_B + max(W + 16.0, W2 + 8.0, 46.0)
 
 
-def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> list:
-    """The energy–mass diagram level with ΔT(φ) and JII(φ) turned above it."""
+def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
+                      least: float = MIN_READ, width: float | None = None) -> list:
+    """The energy–mass diagram level with ΔT(φ) and JII(φ) turned above it (``least`` as
+    in :func:`energy_mass_width`; JII(φ)'s scales in two lines where they are wider than
+    ``width``)."""
     w = WORDS[lang]
     fw, m = unit_parts(u)
     KJ, KT = fw.KI, fw.KT
@@ -280,18 +319,36 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> l
     bot_T = float(yT.max())
     y_k, y_l = y0 - fw.k_mm, y0 - fw.l_mm
     x_far = xJ0 + W + 12.0
+    # JII above its axis unless a tangent runs through the letters there (k or l near the
+    # axis): then past the arrow's tip
+    xs = np.linspace(x_far + 1.0 - text_width(Text((0.0, 0.0), "JII", TEXT_H, layer=LAYER)),
+                     x_far + 1.0, 5)
+    ys = [yk - tan * (xs - xJ0) for yk, tan in ((y_k, fw.tan_max), (y_l, fw.tan_min))]
+    crossed = any(bool(np.any((y > y0 - 6.0) & (y < y0 - 0.5))) for y in ys)
     _axes(b, xJ0, y0, xJ0 - 3.0, x_far + 2.0, max(bot_T, y_l) + 4.0,
-          min(top_T, y_k) - 9.0, f"ΔT, {w['J']}", "JII", left=True)
+          min(top_T, y_k) - 9.0, f"ΔT, {w['J']}", "JII", left=True, beyond=crossed)
     b.line(np.column_stack((xI, yT)), MAIN)
     pos_I = xJ0 + np.interp(m.moment.pos_tau, m.tau, m.inertia.I_var) / KJ
     pos_T = y0 - np.interp(m.moment.pos_tau, m.tau, fw.work.dT) / KT
     for x, y in zip(pos_I, pos_T, strict=True):
         b.dot((x, y))
+    # captions above the diagram, under JII(φ)
+    yc = geo["T_top"] - 17.0
+    caption_texts = [Text((x_left, yc + i * 5.0), _say(s, lang), SMALL_H, "start", 0.0,
+                          layer=LAYER) for i, s in enumerate((
+            f"KJ = {fmt(KJ, 4)} {w['kgm2']}/{w['mm']}", f"KT = {fmt(KT, 4)} {w['J']}/{w['mm']}",
+            "tg ψ = KJ·ω²·(1 ± δ)/(2·KT)",
+            f"ψmax = {fw.psi_max:.1f}°,  ψmin = {fw.psi_min:.1f}°"))]
+    captions = union_all([text_box(t).buffer(-0.15) for t in caption_texts])
     # the tangents: ΔT = b + k·JII, drawn from the ΔT axis past the curve
     for yk, tan, psi, name, angle_name in ((y_k, fw.tan_max, fw.psi_max, "k", "ψmax"),
                                            (y_l, fw.tan_min, fw.psi_min, "l", "ψmin")):
         length = x_far - xJ0
-        b.line(((xJ0, yk), (x_far, yk - tan * length)))
+        reach = length  # a steep tangent stops under the captions above the diagram
+        if tan > 0 and LineString(((xJ0, yk), (x_far, yk - tan * length))).intersects(
+                captions):
+            reach = (yk - geo["T_top"] - 1.0) / tan
+        b.line(((xJ0, yk), (xJ0 + reach, yk - tan * reach)))
         b.dot((xJ0, yk), 0.6)
         b.labels.insert(0, LabelRequest((xJ0, yk), name, TEXT_H, "kl",
                                         150.0 if name == "k" else -150.0))
@@ -306,19 +363,16 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> l
     b.line(((xJ0 - 1.0, y_l), (xd - 2.0, y_l)))
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_k), THIN, 3.5, 1.0, layer=LAYER))
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_l), THIN, 3.5, 1.0, layer=LAYER))
-    b.text((xd - 1.0, (y_k + y_l) / 2), _say(f"kl = {fw.segment_mm:.1f} {w['mm']}", lang),
-           SMALL_H, "middle", 90.0)
+    kl = _say(f"kl = {fw.segment_mm:.1f} {w['mm']}", lang)
+    short = text_width(Text((0.0, 0.0), kl, SMALL_H, layer=LAYER)) + 2 * 3.5 + 2.0 > \
+        abs(y_l - y_k)  # the arrowheads reach the number: it stands clear of them
+    b.text((xd - (2.0 if short else 1.0), (y_k + y_l) / 2), kl, SMALL_H, "middle", 90.0)
     for x, y, lab in zip(pos_I, pos_T, m.moment.labels, strict=True):
         b.label((x, y), lab, SMALL_H, 0.0)
-    # captions above the diagram, under JII(φ)
-    yc = geo["T_top"] - 17.0
-    for i, s in enumerate((
-            f"KJ = {fmt(KJ, 4)} {w['kgm2']}/{w['mm']}", f"KT = {fmt(KT, 4)} {w['J']}/{w['mm']}",
-            "tg ψ = KJ·ω²·(1 ± δ)/(2·KT)",
-            f"ψmax = {fw.psi_max:.1f}°,  ψmin = {fw.psi_min:.1f}°")):
-        b.text((x_left, yc + i * 5.0), _say(s, lang), SMALL_H)
+    for t in caption_texts:
+        b.items.append(t)
     # JII(φ) turned 90°, φ downwards, above the diagram
-    k = _magnify(W)
+    k = _magnify(W, least)
     KJ2 = KJ / k
     space = geo["T_top"] - y_top - 16.0 - 24.0
     L2 = float(min(240.0, 12.0 * math.floor(space / 12.0)))
@@ -341,7 +395,14 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str) -> l
         cap = (f"JII(φ): KJ = {fmt(KJ2, 4)} {w['kgm2']}/{w['mm']}"
                + (f" ({w['mag']} {fmt(k)}×)" if k > 1 else "")
                + f", Kφ = {fmt(Kphi2, 4)} {w['rad']}/{w['mm']}")
-        b.text((x_left, y_top + 4.0), _say(cap, lang), SMALL_H)
+        cap = _say(cap, lang)
+        cut = cap.find(", Kφ")
+        if width is not None and cut > 0 and text_width(
+                Text((0.0, 0.0), cap, SMALL_H, layer=LAYER)) > width:  # two lines
+            b.text((x_left, y_top + 2.5), cap[:cut + 1], SMALL_H)
+            b.text((x_left, y_top + 6.0), cap[cut + 2:], SMALL_H)
+        else:
+            b.text((x_left, y_top + 4.0), cap, SMALL_H)
     return b.finish("s3-em-label")
 
 
@@ -372,7 +433,8 @@ def omega_items(u, box: Rect, lang: str) -> list:
                                    (width_mm - 30.0) / float(deg[-1])),
                            **_font("0123456789()", SMALL_H))
         ax.grid(True, color="black", lw=0.25 * MM)
-        ax.yaxis.set_major_locator(MaxNLocator(5))
+        # at most 5 values of ω, 8 mm apart at least (a low plot on a small format)
+        ax.yaxis.set_major_locator(MaxNLocator(min(5, max(2, int((height_mm - 22.0) / 8.0)))))
         for lab in ax.get_yticklabels():
             lab.set(**_font("0123456789.", SMALL_H))
         ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", SMALL_H)["fontsize"])

@@ -13,7 +13,10 @@
 One notation, the method's: J for moments of inertia (Jпр reduced, JI its constant
 part, JII the variable one, Jм the flywheel, Jкр the crank, Jрот·u² the rotor reduced
 to the crank); Pс = Mд·ω1 the mean power of the resistance, Pдв.тр = Pс/η the power
-the motor must give. Sheet 3 is A1 whatever ``drawing.format`` says for sheets 1 and 2.
+the motor must give. Sheet 3 takes the format of sheets 1 and 2 (``drawing.format``,
+``--page``): its diagrams' scales are chosen for that format
+(:class:`graphplan.dynamics.DiagramSize`), so the sheet, ``dynamics.*.md`` and the JSON
+agree.
 The diagrams are the sheet's own items (:mod:`graphplan.drawing.dynamics_figures`); the
 numbers come from :func:`graphplan.dynamics.machine.machine_unit`, the same as in
 ``dynamics.*.md`` and the JSON report.
@@ -45,6 +48,7 @@ from .sheet import (
     Style,
     Text,
     table_items,
+    text_width,
 )
 from .sheet1 import title_block
 
@@ -135,7 +139,7 @@ def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
 def _scale_ratio(need: float) -> float:
     """The smallest GOST 2.302 reduction 1:n with n ≥ need."""
     for n in (1, 2, 2.5, 4, 5, 10, 15, 20, 25, 40, 50, 75, 100, 200, 400, 500, 800, 1000):
-        if n >= need:
+        if n >= need * (1.0 - 1e-9):  # a box sized for 1:n gives n back, not the next one
             return float(n)
     return float(math.ceil(need / 1000.0) * 1000)
 
@@ -145,7 +149,8 @@ def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]
 
     The arrows' tips touch the extension lines at p0 and p1; the number stands above the
     line (``side`` = +1: on the left of p0→p1, as read), parallel to it. Between ends
-    closer than two arrows the arrows are drawn outside, pointing in.
+    closer than two arrows the arrows are drawn outside, pointing in; a number wider than
+    the space between the extension lines stands on the dimension line drawn on past p1.
     """
     (x0, y0), (x1, y1) = p0, p1
     length = math.hypot(x1 - x0, y1 - y0)
@@ -165,11 +170,17 @@ def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]
                         layer="dimensions", id=f"{ident}-b"),
                   Line((x0, y0), (x1, y1), DIM, layer="dimensions", id=f"{ident}-l")]
     angle = math.degrees(math.atan2(-(y1 - y0), x1 - x0))
+    mx, my = (x0 + x1) / 2, (y0 + y1) / 2
+    tw = text_width(Text((0.0, 0.0), text, 3.5, layer="dimensions"))
+    if tw + 1.0 > length:  # no room between the extension lines: the number stands on the
+        out = (ARROW_L + 2.0 if length < 2.5 * ARROW_L else 0.0) + 1.0  # dimension line
+        mx, my = x1 + ux * (out + tw / 2), y1 + uy * (out + tw / 2)  # drawn on past p1
+        items.append(Line((x1, y1), (x1 + ux * (out + tw + 1.0), y1 + uy * (out + tw + 1.0)),
+                          DIM, layer="dimensions", id=f"{ident}-shelf"))
     if angle <= -90.0 or angle > 90.0:  # numbers read from the bottom or the right
         angle = (angle + 180.0) % 360.0
         ux, uy = -ux, -uy
     nx, ny = uy, -ux  # "above" the line as read
-    mx, my = (x0 + x1) / 2, (y0 + y1) / 2
     gap = 0.3 * 3.5 + 0.8  # the number's descenders clear of the line
     items.append(Text((mx + nx * gap * side, my + ny * gap * side), text, 3.5, "middle",
                       angle % 360.0, layer="dimensions", id=f"{ident}-t"))
@@ -312,10 +323,15 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
             f"{'материал: сталь' if ru else 'material: steel'}"
             if u_density(u) == 7800.0 else ""]
     x_data = right + 10.0 + 9.0 * len(dims) + 6.0
-    if box.x1 - x_data >= 60.0:
-        for i, line in enumerate(d for d in data if d):
-            items.append(Text((x_data, cy - 3.0 * LINE + i * 2 * LINE),
-                              decimal_comma(line) if ru else line, 3.5, layer="text",
+    data = [decimal_comma(d) if ru else d for d in data if d]
+    widest = max(text_width(Text((0.0, 0.0), d, 3.5, layer="text")) for d in data)
+    if box.x1 - x_data >= max(60.0, widest):
+        # a line apart beside a small flywheel, its top above the note under the views
+        pitch = 2 * LINE if R_out >= 26.0 else LINE
+        first = cy - 3.0 * LINE if R_out >= 26.0 else \
+            min(cy - 2 * LINE, cy + R_out + 4.5 - (len(data) - 1) * LINE)
+        for i, line in enumerate(data):
+            items.append(Text((x_data, first + i * pitch), line, 3.5, layer="text",
                               id=f"s3-fw-data-{i}"))
     return items
 
@@ -328,9 +344,38 @@ def u_density(u: MachineUnit) -> float:
     return round(s.mass / vol, 6) if vol > 0 else 0.0
 
 
+def wrap_line(line: str, width: float, height: float = RESULT_H) -> list[str]:
+    """``line`` broken after its ``;``, ``,`` or before a ``(`` into pieces no wider than
+    ``width`` mm at ``height`` where it can be (a piece without a break stays whole); the
+    pieces after the first indented."""
+    def wide(s: str) -> float:
+        return text_width(Text((0.0, 0.0), s, height, layer="text"))
+
+    if wide(line) <= width:
+        return [line]
+    cuts = [i + 1 for i, c in enumerate(line) if c in ";," and line[i + 1:i + 2] == " "]
+    cuts += [i for i, c in enumerate(line) if c == "(" and i > 0]
+    for i in sorted(cuts, reverse=True):
+        head, tail = line[:i].rstrip(), "   " + line[i:].lstrip()
+        if wide(head) <= width:
+            return [head, *wrap_line(tail, width, height)]
+    return [line]
+
+
+def _page_of(analysis) -> Page:
+    """The variant's ``drawing.format`` (A1 when it gives none)."""
+    return Page(analysis.mech.settings.get("drawing", {}).get("format", "A1"))
+
+
 def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
                    unit: MachineUnit | None = None) -> Sheet:
-    """Sheet 3 of the project for ``analysis`` (see the module docstring).
+    """Sheet 3 of the project for ``analysis`` (see the module docstring), on ``page``
+    (default: the variant's ``drawing.format``), its diagrams at the scales of that format
+    (:meth:`graphplan.project.Project.unit_on`) unless ``unit`` is given.
+
+    On A2 and A3 the blocks keep their places at smaller scales; where the table of values
+    at the positions leaves ω(φ) and the flywheel too little room (A3) it is moved to
+    ``dynamics.*.md`` and the sheet says so.
 
     Raises
     ------
@@ -338,6 +383,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
         When the diagrams at their scales do not fit the page.
     """
     from .dynamics_figures import (
+        MIN_READ,
         energy_mass_items,
         energy_mass_width,
         omega_items,
@@ -345,34 +391,53 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
     )
 
     mech = analysis.mech
-    page = page or Page("A1")
-    u = unit or analysis.unit or machine_unit(analysis)  # the last: the error without δ
+    page = page or _page_of(analysis)
+    if unit is not None:
+        u = unit
+    elif "delta" in mech.settings.get("dynamics", {}) and hasattr(analysis, "unit_on"):
+        u = analysis.unit_on(page)
+    else:
+        u = machine_unit(analysis)  # the error without δ
     w = WORDS[lang]
     f = page.frame
     tb = page.title_block_rect
+    a1 = page.format == "A1"
+    kw = min(1.0, f.width / 816.0)  # the format against A1's frame
+    kh = min(1.0, f.height / 584.0)
     x0, y0 = f.x0 + 4.0, f.y0 + 18.0
     items: list[Item] = []
     work, geo = work_items(u, x0, y0, lang)
     xB = geo["right"] + 4.0
-    wB = energy_mass_width(u)
+    least = MIN_READ * kw
+    wB = energy_mass_width(u, least)
     xC = xB + wB + GAP
-    if geo["bottom"] > f.y1 - 2.0 or f.x1 - 4.0 - xC < 200.0:
+    lines = results_lines(u, lang)
+    if not a1:  # long lines broken where the column is narrower than they are
+        lines = [p for line in lines for p in wrap_line(line, f.x1 - 4.0 - xC)]
+    widest = max(text_width(Text((0, 0), s, RESULT_H, layer="text")) for s in lines)
+    need_w = 200.0 if a1 else max(widest, 120.0)
+    if geo["bottom"] > f.y1 - 2.0 or f.x1 - 4.0 - xC < need_w:
         raise LayoutError(f"sheet 3: the diagrams at their scales need {xC - x0:.0f}×"
                           f"{geo['bottom'] - y0:.0f} mm; the {page.format} sheet has no room "
                           "(choose fewer dynamics.intervals)")
     items += work
     top = f.y0 + 4.0  # right of graph 26 the columns start at the frame
-    items += energy_mass_items(u, xB, top, geo, lang)
+    items += energy_mass_items(u, xB, top, geo, lang, least, None if a1 else wB + GAP - 2.0)
     right = Rect(xC, top, f.x1 - 4.0, tb.y0 - GAP)
     rows = position_rows(u, lang)
     header = list(TABLE_WORDS[lang]["cols"])
     table_h = CAPTION + 7.0 * (len(rows) + 1)
-    lines = results_lines(u, lang)
     results_h = CAPTION + 3.0 + len(lines) * LINE
+    omega_min = 80.0 if a1 else 60.0 * kh  # ω(φ) is read down to this height
+    fw_min = 70.0 if a1 else 90.0 * kh
     free = right.height - table_h - results_h - 3 * GAP
-    if free < 150.0:
+    moved = not a1 and free < omega_min + fw_min
+    if moved:  # the table goes to dynamics.*.md: one line says where
+        table_h = CAPTION
+        free = right.height - table_h - results_h - 3 * GAP
+    if free < (150.0 if a1 else omega_min + fw_min):
         raise LayoutError("sheet 3: no room for ω(φ) and the flywheel beside the diagrams")
-    fw_h = flywheel_height(u, right.width, free - 80.0)
+    fw_h = flywheel_height(u, right.width, free - omega_min)
     om_h = min(free - fw_h, 170.0)
     items += omega_items(u, Rect(right.x0, right.y0, right.x1, right.y0 + om_h), lang)
     fw_box = Rect(right.x0, right.y0 + om_h + GAP, right.x1, right.y0 + om_h + GAP + fw_h)
@@ -385,7 +450,11 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
         items.append(Text((right.x0, ry + CAPTION + 5.0 + i * LINE), line, RESULT_H,
                           layer="text", id=f"s3-result-{i}"))
     fit = fit_columns(header, rows, right.width)
-    if fit.shown == fit.total:  # the columns share the whole width of the place
+    if moved:
+        note = f"{w['table']}: dynamics.{lang}.md"
+        items.append(Text((right.x0, ty + 5.0), note, RESULT_H, layer="text",
+                          id="s3-table-title"))
+    elif fit.shown == fit.total:  # the columns share the whole width of the place
         stretch = right.width / sum(fit.widths)
         items.append(Text((right.x0, ty + 5.0), w["table"], 5.0, layer="text",
                           id="s3-table-title"))

@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 
 from ..errors import InputError
 from ..units import nice_ceil
-from .reduction import RIM_SPEED_LIMIT, DynamicModel, DynamicsError, Solved, _model
+from .reduction import MAX_POLE_MM, RIM_SPEED_LIMIT, DynamicModel, DynamicsError, Solved, _model
 from .settings import STEEL
 from .work import WorkDiagrams, work_diagrams
 
@@ -174,7 +174,7 @@ def flywheel(obj: Solved | DynamicModel, delta: float | None = None, *,
              KT: float | None = None, shape: str = "rim",
              ratio: float = 1.0, b_ratio: float = 0.2, h_ratio: float = 0.1,
              density: float = STEEL, I_rotor: float = 0.0, length_mm: float = 240.0,
-             height_mm: float = 60.0) -> Flywheel:
+             height_mm: float = 60.0, max_pole_mm: float = MAX_POLE_MM) -> Flywheel:
     """The flywheel moment of inertia for the non-uniformity δ (method B.4.7–10).
 
     Parameters
@@ -198,7 +198,7 @@ def flywheel(obj: Solved | DynamicModel, delta: float | None = None, *,
     I_rotor : float
         Rotating masses of the drive reduced to the crank (the motor's rotor ``J_рот·u²``),
         kg·m²: part of the constant inertia, so the flywheel needs that much less.
-    length_mm, height_mm : float
+    length_mm, height_mm, max_pole_mm : float
         Size of the work diagrams (:func:`work_diagrams`); they fix KA (and KT = KA
         unless ``KT`` is given).
 
@@ -218,7 +218,8 @@ def flywheel(obj: Solved | DynamicModel, delta: float | None = None, *,
         raise InputError(f"{m.source}: dynamics.delta must be in (0, 1) (got {delta!r})")
     if not (math.isfinite(width_mm) and width_mm > 0):
         raise InputError(f"flywheel: width_mm must be positive (got {width_mm!r})")
-    wd = work_diagrams(m, intervals, length_mm=length_mm, height_mm=height_mm)
+    wd = work_diagrams(m, intervals, length_mm=length_mm, height_mm=height_mm,
+                       max_pole_mm=max_pole_mm)
     w = m.omega1
     I_var, I_const = m.inertia.I_var, m.inertia.I_const
     dT = wd.dT

@@ -34,7 +34,7 @@ from ..errors import InputError
 from ..units import nice_ceil
 from .flywheel import Flywheel, FlywheelSize, flywheel, flywheel_size
 from .motor import MotorChoice, choose_motor, required_power
-from .reduction import DynamicModel, Solved, dynamic_model
+from .reduction import MAX_POLE_MM, DynamicModel, Solved, dynamic_model
 from .settings import DynamicsSettings
 from .simulation import Simulation, simulate
 from .work import work_diagrams
@@ -57,13 +57,14 @@ def round_scale(value: float) -> float:
     return nice_ceil(value, SCALE_SERIES)
 
 
-def _room_for_dT(wd, M) -> float:
-    """What :data:`SPANS_HEIGHT` leaves to ΔT after the drawn Mс (with Mд) and Aс, Aд."""
+def _room_for_dT(wd, M, spans: float = SPANS_HEIGHT) -> float:
+    """What ``spans`` (:data:`SPANS_HEIGHT` on A1) leaves to ΔT after the drawn Mс (with Mд)
+    and Aс, Aд."""
     yM, yMd = np.concatenate((wd.yM_mm, M / wd.KM)), wd.M_d / wd.KM
     m_mm = max(float(yM.max()), yMd, 0.0) - min(float(yM.min()), 0.0)
     every = np.concatenate((wd.A_c / wd.KA, wd.A_d / wd.KA, wd.yA_mm, [-wd.yA_mm[-1], 0.0]))
     a_mm = float(every.max() - every.min())
-    return max(SPANS_HEIGHT - m_mm - a_mm, 100.0)
+    return max(spans - m_mm - a_mm, 0.2 * spans)
 
 
 PSI_MAX_DEG = 70.0  #: the upper tangent's angle ψmax at most this
@@ -95,21 +96,26 @@ def energy_mass_scales(dT_span: float, I_span: float, omega: float, delta: float
     return KT, KJ
 
 
-def _sheet3_scales(m, intervals: int, size: dict) -> tuple[dict, float, float]:
+def _sheet3_scales(m, intervals: int, size: dict, diagrams: DiagramSize
+                   ) -> tuple[dict, float, float]:
     """The height of Mс(φ) and Aс(φ) (``size``), KT and KJ that fill sheet 3's column of
-    diagrams best: the drawn Mс, Aс and ΔT together as near :data:`SPANS_HEIGHT` as the
-    round scales allow (KM, H and KT are rounded, so a taller Mс and Aс may leave ΔT and
-    the energy–mass diagram more or less), ΔT at least 200 mm tall."""
+    diagrams best: the drawn Mс, Aс and ΔT together as near ``diagrams.spans_mm``
+    (:data:`SPANS_HEIGHT` on A1) as the round scales allow (KM, H and KT are rounded, so a
+    taller Mс and Aс may leave ΔT and the energy–mass diagram more or less), ΔT at least
+    two fifths of the spans tall (200 mm on A1)."""
     best = None
-    for h in range(int(size["height_mm"]), int(size["height_mm"]) + 61, 10):
+    spans = diagrams.spans_mm
+    step = max(1, round(10 * diagrams.height_mm / DIAGRAM_HEIGHT))  # 10 mm on A1
+    for h in range(int(size["height_mm"]), int(size["height_mm"]) + 6 * step + 1, step):
         trial = {**size, "height_mm": float(h)}
         wd = work_diagrams(m, intervals, **trial)
         extent = _extent_with_intercepts(wd.dT, m.inertia.I_var, m.omega1, m.delta)
-        room = _room_for_dT(wd, m.moment.M)
+        room = _room_for_dT(wd, m.moment.M, spans)
         KT, KJ = energy_mass_scales(extent, float(np.ptp(np.append(m.inertia.I_var, 0.0))),
-                                    m.omega1, m.delta, height_mm=room)
-        drawn = SPANS_HEIGHT - room + extent / KT
-        if best is None or (extent / KT >= 200.0 and drawn > best[0] + 1.0):
+                                    m.omega1, m.delta, height_mm=room,
+                                    width_mm=diagrams.energy_width_mm)
+        drawn = spans - room + extent / KT
+        if best is None or (extent / KT >= 0.4 * spans and drawn > best[0] + 1.0):
             best = (drawn, trial, KT, KJ)
     assert best is not None  # seven heights tried
     return best[1], best[2], best[3]
@@ -126,21 +132,31 @@ def _extent_with_intercepts(dT, I_var, omega: float, delta: float) -> float:
 
 @dataclass(frozen=True, slots=True)
 class DiagramSize:
-    """The abscissa L of the work diagrams and the drawn span of Mс and of Aс with Aд, mm."""
+    """The abscissa L of the work diagrams, the drawn span of Mс and of Aс with Aд, the
+    drawn spans of Mс, Aс and ΔT stacked together, the widest JII of the energy–mass
+    diagram and the farthest pole distance H, mm (A1's by default)."""
 
     length_mm: float = DIAGRAM_LENGTH
     height_mm: float = DIAGRAM_HEIGHT
+    spans_mm: float = SPANS_HEIGHT
+    energy_width_mm: float = ENERGY_WIDTH
+    max_pole_mm: float = MAX_POLE_MM
 
     @classmethod
-    def for_frame(cls, frame_width_mm: float) -> DiagramSize:
-        """A1's in proportion to a sheet's frame width (A1's frame: 816 mm), L a multiple
-        of 48 mm (whole-mm intervals for 24 and 48 of them)."""
+    def for_frame(cls, frame_width_mm: float, frame_height_mm: float = 584.0) -> DiagramSize:
+        """A1's in proportion to a sheet's frame (A1's frame: 816×584 mm), never larger:
+        L a multiple of 48 mm (whole-mm intervals for 24 and 48 of them), the stacked
+        spans the frame's height less the room of the three diagrams' axes and letters
+        (84 mm), JII and H as wide as the frame's width allows (H a multiple of 5 mm)."""
         k = min(1.0, frame_width_mm / 816.0)
         return cls(48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k),
-                   float(math.floor(DIAGRAM_HEIGHT * k)))
+                   float(math.floor(DIAGRAM_HEIGHT * min(1.0, frame_height_mm / 584.0))),
+                   min(SPANS_HEIGHT, frame_height_mm - 84.0),
+                   float(math.floor(ENERGY_WIDTH * k)),
+                   5.0 * math.floor(MAX_POLE_MM * k / 5.0))
 
 
-SHEET3_DIAGRAMS = DiagramSize.for_frame(816.0)  #: sheet 3 is A1 whatever sheets 1 and 2 are
+SHEET3_DIAGRAMS = DiagramSize.for_frame(816.0)  #: sheet 3 on A1
 
 
 @dataclass(frozen=True, slots=True)
@@ -255,7 +271,8 @@ def machine_unit(analysis: Solved, *, model: DynamicModel | None = None,
 
     ``analysis`` gives the mechanism, its kinematics and its ``[dynamics]`` settings
     (:class:`~graphplan.dynamics.settings.DynamicsSettings`); ``diagrams`` the size of the
-    work diagrams the graphical integration is drawn at (sheet 3's, A1).
+    work diagrams the graphical integration is drawn at (sheet 3's on A1 by default;
+    :meth:`DiagramSize.for_frame` for another format).
 
     Raises
     ------
@@ -273,7 +290,8 @@ def machine_unit(analysis: Solved, *, model: DynamicModel | None = None,
         raise InputError(f"{mech.source}: dynamics.delta is missing (the coefficient of speed "
                          "non-uniformity δ, e.g. delta = 0.1): sheet 3 needs it")
     intervals = s.intervals_for(m.period)
-    size = {"length_mm": diagrams.length_mm, "height_mm": diagrams.height_mm}
+    size = {"length_mm": diagrams.length_mm, "height_mm": diagrams.height_mm,
+            "max_pole_mm": diagrams.max_pole_mm}
     eta = s.eta
     # Mд = −Aс(2π)/2π does not depend on the flywheel: the motor is chosen before it
     M_const = work_diagrams(m, intervals, **size).M_d
@@ -288,7 +306,7 @@ def machine_unit(analysis: Solved, *, model: DynamicModel | None = None,
     fws = s.flywheel
     shaft, shape = fws.shaft, fws.shape
     b_ratio, h_ratio, density = fws.b_ratio, fws.h_ratio, fws.density
-    size, KT, KJ = _sheet3_scales(m, intervals, size)
+    size, KT, KJ = _sheet3_scales(m, intervals, size, diagrams)
     fw = flywheel(m, intervals=intervals, shape=shape, b_ratio=b_ratio, h_ratio=h_ratio,
                   density=density, I_rotor=I_rotor, KI=KJ, KT=KT, **size)
     u = choice.u if (shaft == "motor" and choice is not None) else 1.0

@@ -88,7 +88,8 @@ def _cumtrapz(y: Array, x: Array) -> Array:
 
 def work_diagrams(obj: Solved | DynamicModel, intervals: int = 24, *,
                   length_mm: float = 240.0, height_mm: float = 60.0,
-                  reading_mm: float | None = None) -> WorkDiagrams:
+                  reading_mm: float | None = None,
+                  max_pole_mm: float = MAX_POLE_MM) -> WorkDiagrams:
     """Integrate Mс graphically (method of chords) and exactly; Mд, Aд and ΔT.
 
     Parameters
@@ -100,8 +101,9 @@ def work_diagrams(obj: Solved | DynamicModel, intervals: int = 24, *,
     length_mm, height_mm : float
         Abscissa L of one turn and the largest drawn span of the Mс and Aс diagrams, mm.
         ``KM = nice_ceil(span Mс/height)``; H is the pole distance that draws the span of
-        Aс and Aд together ``height`` mm, rounded down to 5 mm (to 1 mm below 5 mm); where
-        H would exceed :data:`MAX_POLE_MM`, KM is made coarser until it does not.
+        Aс and Aд together ``height`` mm, rounded down to 5 mm (to 1 mm below 10 mm); where
+        H would exceed ``max_pole_mm`` (:data:`MAX_POLE_MM`, A1's), KM is made coarser
+        until it does not.
     reading_mm : float, optional
         Drafting precision to which the ordinates y_M and y_A are read; default exact.
 
@@ -137,10 +139,10 @@ def work_diagrams(obj: Solved | DynamicModel, intervals: int = 24, *,
     KM = nice_ceil(float(np.ptp(np.append(M, 0.0))) / height_mm)
     span_A = float(np.ptp(np.concatenate((A_c, A_d, [0.0]))))  # Aс below, Aд above the axis
     ideal = span_A / (Kphi * KM * height_mm)
-    if ideal > MAX_POLE_MM:  # the pole would sit far left: a coarser KM brings it in
-        KM = nice_ceil(span_A / (Kphi * MAX_POLE_MM * height_mm))
+    if ideal > max_pole_mm:  # the pole would sit far left: a coarser KM brings it in
+        KM = nice_ceil(span_A / (Kphi * max_pole_mm * height_mm))
         ideal = span_A / (Kphi * KM * height_mm)
-    step = 5.0 if ideal >= 5.0 else 1.0
+    step = 5.0 if ideal >= 10.0 else 1.0  # a short pole (a small sheet) to the mm
     H = math.floor(ideal / step + 1e-9) * step
     if not H >= 1.0:
         raise LayoutError(f"{m.source}: the pole distance H of the work diagram would be "

@@ -109,12 +109,20 @@ class Project:
     @cached_property
     def unit(self) -> MachineUnit | None:
         """The machine unit of sheet 3 (flywheel, motor, simulation), when the variant gives
-        ``dynamics.delta``; else None."""
+        ``dynamics.delta``; else None. Its scales (Kφ, KM, H, KA, KT, KJ) are those of sheet 3
+        on the variant's ``drawing.format``."""
         if "delta" not in self.mech.settings.get("dynamics", {}):
             return None
-        from ..dynamics import machine_unit
+        return self.unit_on(Page(self.mech.settings.get("drawing", {}).get("format", "A1")))
 
-        return machine_unit(self)
+    def unit_on(self, page: Page) -> MachineUnit:
+        """The machine unit with its diagrams sized for sheet 3 on ``page`` (solved once per
+        format)."""
+        from ..dynamics import DiagramSize, machine_unit
+
+        f = page.frame
+        return self.stage(("unit", page.format), lambda: machine_unit(
+            self, diagrams=DiagramSize.for_frame(f.width, f.height)))
 
     def stage(self, key: Hashable, solve: Callable[[], _T]) -> _T:
         """A stage of a higher layer (a report's readings at a precision) solved once per
