@@ -205,7 +205,9 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
     the figure. The s diagram shows the exact curve (main line) with the node
     ordinates and the chords between them; the v and a diagrams show the exact curve
     (thin) and the method of chords: the pole P1 (P2) at H1 (H2) mm left of the
-    origin, its rays parallel to the chords, and the points and polyline so obtained.
+    origin, its rays parallel to the chords, the ordinates their heights are transferred
+    to (the middle of each interval for v, the nodes for a), and the points and polyline
+    so obtained.
 
     Raises
     ------
@@ -296,8 +298,9 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
                         lw=MAIN * MM)
             else:
                 ax.plot(d.node_deg, chords, "-k", lw=MAIN * MM)
-            ax.plot((d.mid_deg, d.node_deg)[k - 1], chords, "o", color="black",
-                    markersize=1.0 * MM, lw=0)
+            at = (d.mid_deg, d.node_deg)[k - 1]  # where each ray's height is transferred
+            ax.vlines(at, 0.0, chords, colors="black", lw=THIN * MM)
+            ax.plot(at, chords, "o", color="black", markersize=1.0 * MM, lw=0)
         kphi = f"Kφ = {plain(d.Kphi, 4)} {t['rad']}/{t['mm']}"
         fig.text((x0 + 2) / width_mm, 1 - 1.5 / height_mm, kphi, ha="left", va="top",
                  **_font(kphi, SMALL_H))

@@ -204,7 +204,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     obstacles = [g for it in iter_leaves(items) if (g := item_geometry(it)) is not None
                  and not isinstance(it, Hatch)]
     w = WORDS[lang]
-    col = sc.layout.diagrams  # the left column: the caption keeps to its width
+    col = sc.layout.column or sc.layout.diagrams  # the caption keeps to the left column
     cap_text = f"{w['positions']}   {_units(sc.kl.basis, lang)}"
     cap_h = next((h for h in (5.0, 3.5, 2.5)
                   if text_width(Text((0, 0), cap_text, h, layer="text")) <= col.x1 - box.x0),
@@ -563,7 +563,7 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                         ident="plans-table", title_id="table-title", notes=notes)
 
 
-DIAGRAM_LENGTH_MAX = 300.0  #: longest abscissa of one cycle on sheet 1, mm
+DIAGRAM_LENGTH_MAX = 400.0  #: longest abscissa of one cycle on sheet 1, mm
 DIAGRAM_HEIGHT_MAX = 100.0  #: tallest of the three diagrams, mm
 
 

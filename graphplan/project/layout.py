@@ -68,6 +68,7 @@ class Sheet1Layout:
     structure: Rect | None = None  #: the block of the structural analysis
     schemes: tuple[Rect, ...] = ()  #: the mechanism in each analysed position, its ω and ε
     groups: Rect | None = None  #: the structural scheme: the Assur groups drawn apart
+    column: Rect | None = None  #: the left column the plan of positions heads
 
     @property
     def cells(self) -> tuple[Rect, ...]:
@@ -143,11 +144,42 @@ def _place(x0: float, y0: float, width: float, boxes: list[tuple[float, float]],
     return [r for r in out if r is not None], y
 
 
+SCHEME_ROOM = 12.0  #: kept round a scheme in its cell for its arrows and letters, mm
+
+
+def _tiled(region: Rect, aspects: list[float]) -> list[Rect]:
+    """Cells for figures of the given aspects (width/height) in reading order, in as many
+    rows as make the smallest figure largest, each row's cells as wide as their figures
+    ask (the row's width shared in their proportion), the rows of equal height."""
+    best: tuple[float, list[Rect]] | None = None
+    n = len(aspects)
+    for n_rows in range(1, n + 1):
+        per = math.ceil(n / n_rows)
+        rows = [list(range(i, min(i + per, n))) for i in range(0, n, per)]
+        rh = (region.height - GAP * (len(rows) - 1)) / len(rows)
+        inner_h = rh - CAPTION - 2 * SCHEME_ROOM
+        out, worst = [], math.inf
+        for r, row in enumerate(rows):
+            total = sum(aspects[i] for i in row)
+            x = region.x0
+            y = region.y0 + r * (rh + GAP)
+            for i in row:
+                w = region.width * aspects[i] / total
+                out.append(Rect(x, y, x + w, y + rh))
+                x += w
+                side = min((w - 2 * SCHEME_ROOM) / aspects[i], inner_h)
+                worst = min(worst, side)
+        if best is None or worst > best[0]:
+            best = (worst, out)
+    return best[1] if best else []
+
+
 def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
                   v_shapes: tuple[tuple[float, float], ...],
                   a_shapes: tuple[tuple[float, float], ...] = (),
                   longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1,
-                  scheme_aspect: float = 1.0, groups_aspect: float = 2.0) -> Sheet1Layout:
+                  scheme_aspect: float = 1.0, groups_aspect: float = 2.0,
+                  sizes: tuple[float, float] | None = None) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
     The left column holds the plan of positions and under it the kinematic diagrams (the
@@ -161,6 +193,12 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     enough for them and the diagrams, else after the plans. The defining vectors are made
     as long as the place allows (neither plan's longest vector over VECTOR_HARD,
     ``longest`` per mm of it); the height left grows the schemes, then every row.
+
+    ``sizes``: the defining vectors (pa, πa, mm) the plans are drawn at, once their scales
+    are chosen. Each cell is then made as large as its plan at that size needs, and the
+    height the plans leave under them on the right, when it holds the kinematic diagrams,
+    takes them (as long as that band is wide), the schemes moving to the left column under
+    the plan of positions, grown to its foot.
     Raises LayoutError when the plan of positions leaves no room.
     """
     f = page.frame
@@ -266,8 +304,26 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     table = Rect(gx0, f.y1 - 4.0 - table_h, tbx - GAP, f.y1 - 4.0)
     scales = Rect(tbx, f.y1 - tb_h - GAP / 2 - SCALES_BLOCK, f.x1 - 4.0, f.y1 - tb_h - GAP / 2)
     structure = Rect(tbx, scales.y0 - struct_h, f.x1 - 4.0, scales.y0)
+    column = Rect(x0, top, x0 + left_w, f.y1 - 4.0)
+    if sizes is not None and not beside:
+        # the plans at their scales, each cell as large as its plan needs; the diagrams in
+        # the band they leave, the schemes under the plan of positions
+        sv, sa = sizes
+        boxes = [_cell_size(sh, sv) for sh in v_shapes] + [_cell_size(sh, sa) for sh in a_shapes]
+        used, rows = _shelves(gx0, gy0, W, boxes)
+        h_left, _ = _shelves(0.0, 0.0, left_w, extras(left_w))
+        rest = f.y1 - 4.0 - (plan_box.y1 + GAP)
+        band = H - used - GAP
+        aspects = [scheme_aspect] * n_s + [groups_aspect]
+        fits = all(b[0] <= W + 1e-9 for b in boxes)
+        if fits and band >= dmin_h and dmin_w <= W and h_left <= rest:
+            cells, bottom = _place(gx0, gy0, W, boxes, rows)
+            schemes = _tiled(Rect(x0, plan_box.y1 + GAP, x0 + left_w, f.y1 - 4.0), aspects)
+            diagrams = Rect(gx0, bottom + GAP, gx1, gy1)
+            v_cells, a_cells = tuple(cells[:len(v_shapes)]), tuple(cells[len(v_shapes):])
     return Sheet1Layout(page, plan_box, diagrams, v_cells, a_cells, table, scales, size,
-                        structure, tuple(schemes[:n_s]), schemes[n_s] if schemes else None)
+                        structure, tuple(schemes[:n_s]), schemes[n_s] if schemes else None,
+                        column)
 
 
 @dataclass(frozen=True, slots=True)

@@ -293,6 +293,11 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
                    quantity=f"a{cr.pin}", defining=aa,
                    segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
                    series=PLAN_SERIES)
+    # the cells cut again round the plans at the scales chosen: the place they leave to
+    # the diagrams and the schemes
+    sizes = (va / kv.per_mm, aa / ka.per_mm if a_shapes else 0.0)
+    layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
+                           len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes)
     return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc)
 
 
