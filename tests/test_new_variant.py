@@ -53,3 +53,41 @@ def test_new_never_overwrites_and_names_the_families(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "expected one of" in err and "press" in err and "engine" in err
     assert not (tmp_path / "x.toml").exists()
+
+
+#: Latin words a Russian template may hold in its comments: key names, values, units, kinds
+_ALLOWED = re.compile(r"^(?:[a-z_]+|[A-Z][a-z]?\d*|graphplan|TOML|UTF|RRR|RRP|RPR|PRP|RPP|"
+                      r"mm|kN|ccw|cw|docs|variant|format|ru|md|stroke|crank|rim|disc|motor|"
+                      r"working|idle|both|resists|drives|diagram|start|end|MPa|kPa|Pa|bar|"
+                      r"true|false)$")
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+def test_a_russian_new_variant_has_no_english_prose(family, tmp_path):
+    """Under --lang ru the file is Russian (issue 23): the example's English comments and
+    description are not copied (before: the slotter's file carried 21 English comment lines
+    and an English description); each dyad's joints are explained for its kind (before:
+    «точка стойки и имя новой точки кривошипа» — the crank's — over every dyad)."""
+    out = tmp_path / f"{family}.toml"
+    assert main(["new", family, "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    for line in text.splitlines():
+        if "#" not in line:
+            continue
+        comment = line.split("#", 1)[1]
+        # "# key: explanation": the key is a name; the explanation's words must be Russian
+        comment = re.sub(r"^\s*\[?[\w.]+\]?\s*[:—]", "", comment)
+        words = [w for w in re.findall(r"[A-Za-z]{3,}", comment) if not _ALLOWED.match(w)]
+        english = [w for w in words if w.lower() == w and len(w) > 3]
+        assert len(english) <= 1, (family, line)
+    desc = re.search(r'^description = "(.*)"$', text, re.M)
+    assert desc and re.search("[а-яё]{4,}", desc[1]) and not re.search(r"[a-z]{4,}", desc[1])
+    kinds = re.findall(r'^kind = "(RRR|RRP|RPR|PRP|RPP)"', text, re.M)
+    joints = re.findall(r"^# joints: (.*)$", text, re.M)
+    assert len(joints) == len(kinds) + 1  # the crank's, then each dyad's
+    assert "кривошипа" in joints[0]
+    for kind, what in zip(kinds, joints[1:], strict=True):
+        assert "кривошипа" not in what, (kind, what)
+        n = {"RRR": 3, "RRP": 2, "RPR": 2, "PRP": 1, "RPP": 2}[kind]
+        assert what.index("]") > 0 and what[:what.index("]")].count(",") == n - 1, (kind, what)
+    assert load(out).dyads == load(bundled_example(family)).dyads

@@ -124,3 +124,29 @@ def test_russian_reports_name_the_dyad_kinds_as_russian_textbooks_do():
     ru, en = structure_text(p, "ru"), structure_text(p, "en")
     assert "вид ВПВ (3)" in ru and "вид ВВП (2)" in ru and "RPR" not in ru
     assert "kind RPR (3)" in en and "ВПВ" not in en
+
+
+def test_russian_reports_letter_the_pairs_and_their_class_as_russian_textbooks_do():
+    """Issue 23: under --lang ru the pairs are В (вращательная) and П (поступательная), the
+    lower pairs p5 of class V and the higher p4 of class IV; no R/P, no Latin dyad kind
+    anywhere in the structure and cycle sections (the slotter: 5 revolute, 2 prismatic)."""
+    import re
+
+    from graphplan.files import bundled_example
+    from graphplan.project import solve_project
+    from graphplan.reports.tables import cycle_text, structure_text
+
+    p = solve_project(g.load(bundled_example("slotter")))
+    ru = structure_text(p, "ru") + "\n" + cycle_text(p, "ru")
+    en = structure_text(p, "en") + "\n" + cycle_text(p, "en")
+    pairs_ru = [ln.strip() for ln in ru.splitlines() if re.match(r"  [ВП] ", ln)]
+    pairs_en = [ln.strip() for ln in en.splitlines() if re.match(r"  [RP] ", ln)]
+    assert len(pairs_ru) == len(pairs_en) == p.structure.p5 == 7
+    assert sum(ln.startswith("В ") for ln in pairs_ru) == 5  # O1, A, O3, B, C
+    assert sum(ln.startswith("П ") for ln in pairs_ru) == 2  # block in slot 2-3, ram 5-6
+    assert "В O1 (6-1) — вращательная" in pairs_ru and "П (2-3) — поступательная" in pairs_ru
+    assert "p5 = 7 низших пар V класса" in ru and "p4 = 0 высших пар IV класса" in ru
+    assert "группа Ассура II класса 2-го порядка" in ru
+    assert "ВПВ(2-3)" in ru and "ВВП(4-5)" in ru  # the conditioning lines too
+    assert not re.search(r"\b[RP] |\b[RP]{3}\b", ru), ru
+    assert "R O1 (6-1) — revolute" in pairs_en and "RPR(2-3)" in en and "В " not in en

@@ -17,7 +17,7 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from ..kinematics import output_coordinate
-from ..plans import Plan, Reader, acceleration_plan, velocity_plan
+from ..plans import Plan
 from ..project import (
     CAPTION,
     PLAN_MARGIN,
@@ -518,17 +518,14 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
     w = WORDS[lang]
     items: list[Item] = []
     items += position_plan_items(analysis, sc, lang)
-    reader = Reader(precision)
-    vps = {}
     for c, k in enumerate(sc.plans):
-        vps[k] = vp = velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
+        vp = analysis.velocity_plan(k, precision, page)  # the lessons' plan too
         cell = sc.layout.v_cells[c]
         items += plan_items(vp, cell, f"{w['velocity']}, {w['pos']} {kin.labels[k]}", f"vp{k}",
                             leaders=PLAN_LEADERS)
         items += ill_mark_items(vp, cell, f"vp{k}", lang)
     for c, k in enumerate(sc.acc_plans):
-        vp = vps.get(k) or velocity_plan(mech, kin, k, sc.kl, sc.kv, reader)
-        ap = acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp, reader)
+        ap = analysis.acceleration_plan(k, precision, page)
         cell = sc.layout.a_cells[c]
         items += plan_items(ap, cell, f"{w['acceleration']}, {w['pos']} {kin.labels[k]}",
                             f"ap{k}", leaders=PLAN_LEADERS)

@@ -31,13 +31,11 @@ import shapely
 from shapely.geometry import Point
 
 from ..forces import reaction_name
-from ..plans import force_plans, zhukovsky_lever
 from ..project import (
     CAPTION,
     GROUP_EQ_ROOM,
     group_links,
     sheet2_positions,
-    sheet2_scales,
     sheet2_table_header,
     split_table,
 )
@@ -413,9 +411,8 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     """Sheet 2 of the project for ``analysis`` (see the module docstring)."""
     mech, kin = analysis.mech, analysis.kin
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    loads, forces = analysis.loads, analysis.forces
-    own_page = page.format != mech.settings.get("drawing", {}).get("format", "A1")
-    s2 = sheet2_scales(mech, kin, forces, analysis.cycle, page) if own_page else analysis.sheet2
+    forces = analysis.forces
+    s2 = analysis.sheet2_on(page)
     kl = s2.kl
     assert kl is not None and s2.kl_crank is not None and s2.layout is not None  # all set
     w = WORDS[lang]
@@ -426,10 +423,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     figures = group_links(mech)
     for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
-        plans = force_plans(mech, kin, forces, loads, k, kl, room_mm=s2.room_mm)
-        if s2.kl_crank.per_mm != kl.per_mm:  # the crank's arms read on its own drawing
-            plans = (*plans[:-1], force_plans(mech, kin, forces, loads, k, s2.kl_crank,
-                                              room_mm=s2.room_mm)[-1])
+        plans = analysis.force_plans(k, page)  # the crank's arms at kl_crank; the lessons' too
         for i, (fp, links) in enumerate(zip(plans, figures, strict=True)):
             fig_kl = s2.kl_crank if i == len(figures) - 1 else kl
             items += _group_items(analysis, fp, k, links, cells[2 * i], fig_kl.per_mm, ident,
@@ -448,8 +442,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
                                  {q: f"{q}*" for q in _short_notes(fp, lang)})
             items += notes
             items += ill_mark_items(fp, cell, f"{ident}-fp{i}", lang)
-        lever = zhukovsky_lever(mech, kin, loads, k, kl, s2.lever_kv(kin, k),
-                                reference=float(forces.M_bal[k]))
+        lever = analysis.lever(k, page)
         kv = _units(lever.plan.scale.basis, lang)
         pos = f"{w['pos']} {kin.labels[k]}"
         items += _plan_items(lever, cells[-1], (f"{w['lever']}, {pos}, {kv}",

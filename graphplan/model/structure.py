@@ -33,6 +33,13 @@ class Pair:
         where = f" {self.joint}" if self.joint else ""
         return f"{self.kind}{where} ({self.links[0]}-{self.links[1]})"
 
+    @property
+    def label_ru(self) -> str:
+        """The pair as Russian textbooks letter it: ``В O1 (6-1)`` (вращательная),
+        ``П (2-3)`` (поступательная)."""
+        where = f" {self.joint}" if self.joint else ""
+        return f"{russian_kind(self.kind)}{where} ({self.links[0]}-{self.links[1]})"
+
 
 _RU_PAIRS = str.maketrans("RP", "ВП")
 

@@ -188,6 +188,46 @@ KEYS: dict[str, tuple[str, str]] = {
     "scale": ("масштаб изображения", "the scale"),
 }
 
+#: The families' one-line descriptions in Russian (the bundled examples' are English)
+DESCRIPTION_RU = {
+    "compressor": "Двухцилиндровый V-образный компрессор: кривошип, два шатуна и поршня на одном "
+                  "пальце (ВВП, ВВП); силы газов по индикаторным диаграммам",
+    "crusher": "Щековая дробилка: эксцентрик, шатун и задняя распорная плита (ВВВ), передняя "
+               "распорная плита и подвижная щека (ВВВ); момент сопротивления камня на щеке",
+    "engine": "Четырёхтактный одноцилиндровый двигатель: кривошип, шатун, поршень (ВВП); сила "
+              "газов по индикаторной диаграмме за 720°",
+    "fourbar": "Кривошипно-коромысловый четырёхзвенник с моментом сопротивления на коромысле "
+               "(диада ВВВ)",
+    "offset_slider": "Дезаксиальный кривошипно-ползунный механизм ножовочной пилы, кривошип "
+                     "вращается по часовой стрелке (K = 1,10)",
+    "press": "Центральный кривошипно-ползунный механизм пресса (курсовой проект по ТММ)",
+    "pump": "Поршневой насос простого действия: кривошип, шатун, плунжер (ВВП); давления "
+            "всасывания и нагнетания за два хода",
+    "scotch_yoke": "Кулисный (синусный) механизм плунжерного насоса: одна диада ВПП",
+    "shaper": "Поперечно-строгальный станок: кривошип, качающаяся кулиса (ВПВ), шатун и ползун "
+              "(ВВП); H = 0,4 м, K = 1,5",
+    "shaper_prp": "Поперечно-строгальный станок, привод кулиса–камень–ползун: ВПВ, затем ПВП; "
+                  "H = 0,4 м, K = 1,5",
+    "sixbar_press": "Кривошипно-коленный пресс: диада ВВВ, затем диада ВВП на коленном шарнире",
+    "slotter": "Долбёжный станок: кривошип, качающаяся кулиса (ВПВ), шатун и вертикальный "
+               "долбяк (ВВП); H = 150 мм, K = 1,5",
+}
+
+#: A dyad's joints, by its kind (docs/variant-format.md §3)
+JOINTS = {
+    "RRR": ("[A, B, C]: A — точка соседнего звена звена i, B — новый внутренний шарнир, "
+            "C — точка соседнего звена звена j (например, опора на стойке)",
+            "[A, B, C]: A on the neighbour of link i, B the new inner joint, C on the "
+            "neighbour of link j (e.g. a frame pivot)"),
+    "RRP": ("[A, B]: A — существующая точка, B — новый шарнир ползуна",
+            "[A, B]: A an existing point, B the slider's new joint"),
+    "RPR": ("[A, C]: A — палец, несущий камень (существует), C — опора кулисы",
+            "[A, C]: A the pin carrying the block, C the slotted link's pivot"),
+    "PRP": ("[B]: новый палец, соединяющий звенья i и j", "[B]: the new pin joining i and j"),
+    "RPP": ("[A, D]: A — палец, несущий камень, D — новая точка звена j на его направляющей",
+            "[A, D]: A the pin carrying the block, D link j's new point on its guide"),
+}
+
 HEADER = {
     "ru": """# Вариант задания graphplan — заготовка семейства «{family}».
 # Измените числа на данные своего варианта и проверьте механизм:
@@ -249,7 +289,12 @@ def variant_template(family: str, *, lang: str = "ru", name: str = "variant.toml
     out = [HEADER[lang].format(family=fam, name=name)]
     stem = re.sub(r"[^\w-]", "_", name.removesuffix(".toml")) or fam
     section = ""
+    kind = ""
     for line in source.splitlines():
+        if lang == "ru":  # the example's own comments are English: the Russian file explains
+            if line.lstrip().startswith("#"):  # every key itself
+                continue
+            line = _drop_comment(line)
         m = _SECTION.match(line)
         if m and not line.lstrip().startswith("#"):
             section = m.group(1)
@@ -261,10 +306,29 @@ def variant_template(family: str, *, lang: str = "ru", name: str = "variant.toml
             continue
         k = _KEY.match(line)
         if k and not line.lstrip().startswith("#"):
+            if section == "dyads" and k.group(2) == "kind":
+                kind = line.split("=", 1)[1].strip().strip('"')
             what = _explain(section, k.group(2), lang)
+            if section == "dyads" and k.group(2) == "joints" and kind in JOINTS:
+                what = JOINTS[kind][0 if lang == "ru" else 1]
             if what:
                 out.append(f"{k.group(1)}# {k.group(2)}: {what}")
             if section == "variant" and k.group(2) == "name":  # the new file's own name
                 line = f'name = "{stem}"'
+            if section == "variant" and k.group(2) == "description" and lang == "ru":
+                line = f'description = "{DESCRIPTION_RU.get(fam, fam)}"'
         out.append(line)
-    return "\n".join(out) + "\n"
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(out)) + "\n"  # where comments were dropped
+
+
+def _drop_comment(line: str) -> str:
+    """``line`` without its trailing ``# comment`` (a ``#`` inside a string is kept)."""
+    quote = ""
+    for i, ch in enumerate(line):
+        if quote:
+            quote = "" if ch == quote else quote
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            return line[:i].rstrip()
+    return line

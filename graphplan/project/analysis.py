@@ -19,11 +19,12 @@ from typing import TYPE_CHECKING, TypeVar
 from ..kinematics import Cycle, Kinematics, analyse_cycle, sweep
 from ..model import Mechanism, Structure, analyse
 from ..paper import Page
-from ..plans import acceleration_plan, velocity_plan
+from ..plans import Reader, acceleration_plan, velocity_plan
 
 if TYPE_CHECKING:
     from ..dynamics import MachineUnit
     from ..forces import Forces, Loads, MomentCurve
+    from ..plans import ForcePlan, Lever, Plan
     from .scales import Sheet1Scales, Sheet2Scales
 
 _T = TypeVar("_T")
@@ -85,7 +86,7 @@ class Project:
         per format, like every stage)."""
         from .scales import sheet_scales
 
-        if page.format == self.mech.settings.get("drawing", {}).get("format", "A1"):
+        if page.format == self._format:
             return self.sheet1
         return self.stage(("sheet1", page.format), lambda: sheet_scales(
             self.mech, self.kin, page, cycle=self.cycle, forces=self.forces))
@@ -96,6 +97,74 @@ class Project:
         from .scales import sheet2_scales
 
         return sheet2_scales(self.mech, self.kin, self.forces, self.cycle)
+
+    def sheet2_on(self, page: Page) -> Sheet2Scales:
+        """Sheet 2's layout on another format than the variant's (solved once per format)."""
+        from .scales import sheet2_scales
+
+        if page.format == self._format:
+            return self.sheet2
+        return self.stage(("sheet2", page.format), lambda: sheet2_scales(
+            self.mech, self.kin, self.forces, self.cycle, page))
+
+    @property
+    def _format(self) -> str:
+        return str(self.mech.settings.get("drawing", {}).get("format", "A1"))
+
+    # --- the plans of a position, as the sheets draw them and the lessons teach them -----
+
+    def velocity_plan(self, k: int, precision: float = 0.0, page: Page | None = None) -> Plan:
+        """Sheet 1's velocity plan of position k at sheet 1's Kl and Kv, built once: sheet 1
+        draws it, the velocity lesson teaches it (``precision``: the draftsman's reading, mm;
+        0 exact)."""
+        fmt = self._format if page is None else page.format
+        sc = self.sheet1 if page is None else self.sheet1_on(page)
+        return self.stage(("velocity_plan", k, precision, fmt), lambda: velocity_plan(
+            self.mech, self.kin, k, sc.kl, sc.kv, Reader(precision)))
+
+    def acceleration_plan(self, k: int, precision: float = 0.0, page: Page | None = None
+                          ) -> Plan:
+        """Sheet 1's acceleration plan of position k (its Kl, Ka), on :meth:`velocity_plan`."""
+        fmt = self._format if page is None else page.format
+        sc = self.sheet1 if page is None else self.sheet1_on(page)
+        return self.stage(("acceleration_plan", k, precision, fmt), lambda: acceleration_plan(
+            self.mech, self.kin, k, sc.kl, sc.ka, self.velocity_plan(k, precision, page),
+            Reader(precision)))
+
+    def force_plans(self, k: int, page: Page | None = None) -> tuple[ForcePlan, ...]:
+        """Sheet 2's force plans of position k, the groups from the last to the first and then
+        the crank, built once: the groups' arms read at sheet 2's Kl, the crank's at its own
+        (``kl_crank``: a short crank is drawn larger); sheet 2 draws them, the force lesson
+        teaches them."""
+        from ..plans import force_plans
+
+        s2 = self.sheet2 if page is None else self.sheet2_on(page)
+        kl, kl_crank = s2.kl, s2.kl_crank
+        assert kl is not None and kl_crank is not None  # sheet2_scales sets both
+
+        def solve() -> tuple[ForcePlan, ...]:
+            plans = force_plans(self.mech, self.kin, self.forces, self.loads, k, kl,
+                                room_mm=s2.room_mm)
+            if kl_crank.per_mm != kl.per_mm:
+                plans = (*plans[:-1], force_plans(self.mech, self.kin, self.forces, self.loads,
+                                                  k, kl_crank, room_mm=s2.room_mm)[-1])
+            return plans
+
+        fmt = self._format if page is None else page.format
+        return self.stage(("force_plans", k, fmt), solve)
+
+    def lever(self, k: int, page: Page | None = None) -> Lever:
+        """Sheet 2's Zhukovsky lever of position k (its Kl, the lever's Kv), built once and
+        compared with the force plans' Mур."""
+        from ..plans import zhukovsky_lever
+
+        s2 = self.sheet2 if page is None else self.sheet2_on(page)
+        kl = s2.kl
+        assert kl is not None  # sheet2_scales sets it
+        fmt = self._format if page is None else page.format
+        return self.stage(("lever", k, fmt), lambda: zhukovsky_lever(
+            self.mech, self.kin, self.loads, k, kl, s2.lever_kv(self.kin, k),
+            reference=float(self.forces.M_bal[k])))
 
     @cached_property
     def curve(self) -> MomentCurve:

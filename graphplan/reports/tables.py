@@ -10,14 +10,18 @@ import math
 from typing import SupportsFloat
 
 from ..geometry import norm
+from ..model import russian_kind
 from ..project import Analysis
 
 TEXT = {
     "en": {
         "structure": "1. Structural analysis",
-        "pairs": "Kinematic pairs (lower, class 5)",
+        "pairs": "Kinematic pairs: p5 = {p5} lower pairs of class V (R revolute, P prismatic), "
+                 "p4 = {p4} higher pairs of class IV",
+        "R": "revolute",
+        "P": "prismatic",
         "groups": "Assur groups, in the order of attachment",
-        "group": "group {formula}: links {links}, kind {kind} ({num}), class II, order 2",
+        "group": "Assur group of class II, order 2, {formula}: links {links}, kind {kind} ({num})",
         "initial": "initial mechanism I({frame},{crank}): frame {frame}, crank {crank}",
         "formula": "formula of structure",
         "cycle": "2. Cycle of the output link {link}",
@@ -38,9 +42,13 @@ TEXT = {
     },
     "ru": {
         "structure": "1. Структурный анализ",
-        "pairs": "Кинематические пары (низшие, 5-го класса)",
+        "pairs": "Кинематические пары: p5 = {p5} низших пар V класса (В — вращательная, "
+                 "П — поступательная), p4 = {p4} высших пар IV класса",
+        "R": "вращательная",
+        "P": "поступательная",
         "groups": "Группы Ассура в порядке присоединения",
-        "group": "группа {formula}: звенья {links}, вид {kind} ({num}), II класс, 2 порядок",
+        "group": ("группа Ассура II класса 2-го порядка {formula}: звенья {links}, "
+                  "вид {kind} ({num})"),
         "initial": "начальный механизм I({frame},{crank}): стойка {frame}, кривошип {crank}",
         "formula": "формула строения",
         "cycle": "2. Цикл выходного звена {link}",
@@ -83,9 +91,10 @@ def structure_text(a: Analysis, lang: str = "en") -> str:
     """Section 1: mobility by Chebyshev's formula, pairs, Assur groups."""
     t = TEXT[lang]
     st, m = a.structure, a.mech
-    lines = [t["structure"], "", st.mobility_equation, "", t["pairs"] + ":"]
+    lines = [t["structure"], "", st.mobility_equation, "",
+             t["pairs"].format(p5=st.p5, p4=st.p4) + ":"]
     for p in st.pairs:
-        lines.append(f"  {p.label}")
+        lines.append(f"  {p.label_ru if lang == 'ru' else p.label} — {t[p.kind]}")
     lines += ["", t["groups"] + ":",
               "  " + t["initial"].format(frame=m.frame_link, crank=m.crank.link)]
     for g in st.groups:
@@ -115,7 +124,8 @@ def cycle_text(a: Analysis, lang: str = "en") -> str:
     else:
         lines.append(t["nodead"])
     for name, (s, ang) in cy.min_conditioning.items():
-        lines.append(t["cond"].format(name=name, s=s, a=math.degrees(ang) % 360))
+        lines.append(t["cond"].format(name=russian_kind(name) if lang == "ru" else name, s=s,
+                                      a=math.degrees(ang) % 360))
     return "\n".join(lines)
 
 

@@ -80,14 +80,13 @@ def _with_scheme(analysis, k: int, les: Lesson) -> Lesson:
     """``les`` with the mechanism at position k beside its plan, each step's links in colour."""
     import dataclasses
 
-    from ..drawing import mechanism_scheme
-    from .scheme import step_links
+    from .scheme import lesson_scheme, step_links
 
     mech = analysis.mech
     steps = tuple(dataclasses.replace(s, links=step_links(
         mech, s.equation, s.text.get("en", ""), les.panels[s.panel].title.get("en", "")))
         for s in les.steps)
-    return dataclasses.replace(les, steps=steps, scheme=mechanism_scheme(analysis, k))
+    return dataclasses.replace(les, steps=steps, scheme=lesson_scheme(analysis, k))
 
 
 def page_name(plan: str, position: str | None) -> str:

@@ -23,7 +23,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..forces import reaction_name
-from ..plans import ForcePlan, Step, force_plans, position_mm, unit_vector
+from ..plans import ForcePlan, Step, position_mm, unit_vector
 from .captions import WORDS, group_name, num, shown
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -35,11 +35,9 @@ _MOMENT = re.compile(r"ΣM_(?P<c>[^(\s]+)\(link (?P<links>[^)]+)\): (?P<rest>.*?
 def forces_lesson(analysis, k: int) -> Lesson:
     """The force plans of position k as a lesson (module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    sc, loads = analysis.sheet1, analysis.loads
-    plans = force_plans(mech, kin, analysis.forces, loads, k, sc.kl,
-                        room_mm=analysis.sheet2.room_mm)
+    s2, loads = analysis.sheet2, analysis.loads
+    plans = analysis.force_plans(k)  # sheet 2's own plans of position k
     label = kin.labels[k]
-    P = position_mm(kin, k, sc.kl.per_mm, mech.crank.pivot)
     origin = np.asarray(kin.pos.points[mech.crank.pivot][k], float)
     panels: list[Panel] = []
     steps: list[LessonStep] = []
@@ -47,18 +45,21 @@ def forces_lesson(analysis, k: int) -> Lesson:
     for fp in plans:
         links = _plan_links(mech, fp)
         crank = fp.group.startswith("crank")
+        kl = s2.kl_crank if crank else s2.kl  # as sheet 2 draws the group or the crank
+        assert kl is not None  # sheet2_scales sets both
+        P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
         name = {"ru": f"кривошип {mech.crank.link}" if crank else group_name(fp.group, "ru"),
                 "en": f"crank {mech.crank.link}" if crank else group_name(fp.group, "en")}
         scheme = len(panels)
         panels.append(Panel(f"scheme-{fp.group}", {
             "ru": f"Схема: {name['ru']}, {WORDS['ru']['position']} {label}",
-            "en": f"Scheme: {name['en']}, {WORDS['en']['position']} {label}"}, sc.kl.basis))
+            "en": f"Scheme: {name['en']}, {WORDS['en']['position']} {label}"}, kl.basis))
         plan_panel = len(panels)
         panels.append(Panel(f"plan-{fp.group}", {
             "ru": f"План сил: {name['ru']}, {WORDS['ru']['position']} {label}",
             "en": f"Force plan: {name['en']}, {WORDS['en']['position']} {label}"},
             fp.scale.basis))
-        forces_on = _forces_on(mech, loads, k, links, known, origin, sc.kl.per_mm)
+        forces_on = _forces_on(mech, loads, k, links, known, origin, kl.per_mm)
         pts = np.array([P[p] for ln in links for p in mech.points_of(ln) if p in P])
         arrow = max(ARROW_MM, ARROW_SHARE * float(np.max(np.ptp(pts, axis=0))))
         context_done = False
@@ -68,7 +69,7 @@ def forces_lesson(analysis, k: int) -> Lesson:
             if m:
                 marks = [] if context_done else _scheme_context(mech, kin, k, P, links)
                 context_done = True
-                marks += _moment_marks(fp, m, forces_on, P, origin, sc.kl.per_mm, arrow)
+                marks += _moment_marks(fp, m, forces_on, P, origin, kl.per_mm, arrow)
                 steps.append(_moment_step(len(steps) + 1, scheme, fp, s, m, forces_on, marks))
             else:
                 steps.append(_plan_step(len(steps) + 1, plan_panel, fp, s, labelled))
@@ -79,7 +80,9 @@ def forces_lesson(analysis, k: int) -> Lesson:
     steps = [replace(s, panel=remap[s.panel]) for s in steps]
     title = {lang: f"{WORDS[lang]['forces']} — {mech.name}, {WORDS[lang]['position']} {label}"
              for lang in ("ru", "en")}
-    scales = (sc.kl.basis, *dict.fromkeys(fp.scale.basis for fp in plans))
+    kls = (s2.kl.basis,) if s2.kl_crank is None or s2.kl_crank == s2.kl else (
+        s2.kl.basis, s2.kl_crank.basis.replace("Kl", f"Kl({mech.crank.link})", 1))
+    scales = (*kls, *dict.fromkeys(fp.scale.basis for fp in plans))
     return Lesson("forces", mech.name, mech.source, label, title, tuple(panels), tuple(steps),
                   scales)
 

@@ -21,7 +21,7 @@ import re
 
 import numpy as np
 
-from ..plans import Plan, Step, acceleration_plan, velocity_plan
+from ..plans import Plan, Step
 from .captions import WORDS, ZERO_MM, num, shown, unit
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -31,13 +31,12 @@ _POINT = re.compile(r"[A-Z][a-z]*\d*")
 def plan_lesson(analysis, k: int, kind: str) -> Lesson:
     """The lesson of the velocity (``kind="velocity"``) or acceleration plan of position k.
 
-    The scales are those of sheet 1 (:func:`graphplan.project.scales.sheet_scales`) and the
-    construction is exact, as on the sheet.
+    The plan is sheet 1's own (:meth:`graphplan.project.Project.velocity_plan`: its Kl, Kv, Ka,
+    exact), so the lesson teaches the very plan the sheet draws.
     """
     mech, kin = analysis.mech, analysis.kin
     sc = analysis.sheet1
-    vp = velocity_plan(mech, kin, k, sc.kl, sc.kv)
-    plan = vp if kind == "velocity" else acceleration_plan(mech, kin, k, sc.kl, sc.ka, vp)
+    plan = analysis.velocity_plan(k) if kind == "velocity" else analysis.acceleration_plan(k)
     label = kin.labels[k]
     scale = plan.scale
     panel = Panel(kind, {lang: f"{WORDS[lang][kind]}, {WORDS[lang]['position']} {label}"

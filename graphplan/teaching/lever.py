@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..plans import Lever, zhukovsky_lever
+from ..plans import Lever
 from .captions import WORDS, num, unit
 from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 
@@ -23,9 +23,8 @@ from .model import Lesson, LessonStep, Mark, Panel, Result, Term
 def lever_lesson(analysis, k: int) -> Lesson:
     """Zhukovsky's lever of position k as a lesson (module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    sc = analysis.sheet1
-    lever = zhukovsky_lever(mech, kin, analysis.loads, k, sc.kl, analysis.sheet2.lever_kv(kin, k),
-                            reference=float(analysis.forces.M_bal[k]))
+    kl = analysis.sheet2.kl
+    lever = analysis.lever(k)  # sheet 2's own lever of position k
     label = kin.labels[k]
     panel = Panel("lever", {lang: f"{WORDS[lang]['zhukovsky']}, {WORDS[lang]['position']} "
                                   f"{label}" for lang in ("ru", "en")},
@@ -72,7 +71,7 @@ def lever_lesson(analysis, k: int) -> Lesson:
     title = {lang: f"{WORDS[lang]['zhukovsky']} — {mech.name}, {WORDS[lang]['position']} "
                    f"{label}" for lang in ("ru", "en")}
     return Lesson("zhukovsky", mech.name, mech.source, label, title, (panel,), tuple(steps),
-                  (sc.kl.basis, lever.plan.scale.basis, lever.kf.basis))
+                  (kl.basis, lever.plan.scale.basis, lever.kf.basis))
 
 
 def _balance_notes(lever: Lever) -> list[dict[str, str]]:

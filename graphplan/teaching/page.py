@@ -87,7 +87,7 @@ body.js:not(.all) section.step { border-bottom: 0; }
 .fig { min-width: 0; }
 .fig svg { display: block; width: 100%; height: auto; max-height: 74vh; }
 figure.mech { margin: .8rem 0 0; }
-figure.mech svg { display: block; width: 100%; max-width: 22rem; height: auto; max-height: 30vh; }
+figure.mech svg { display: block; width: 100%; max-width: 22rem; height: auto; max-height: 60vh; }
 figure.mech figcaption { color: var(--muted); font-size: .85rem; }
 .cap h2 { font-size: 1.1rem; margin: .2rem 0 .6rem; font-weight: normal; color: var(--accent); }
 .where { color: var(--muted); margin: 0; font-size: .9rem; }

@@ -83,3 +83,50 @@ def step_links(mech, equation: str, text: str, panel_title: str = "") -> tuple[s
 
 
 __all__ = ["step_links"]
+
+
+#: The lesson's scheme: this wide; as tall as the mechanism needs, within these bounds (mm)
+SCHEME_WIDTH_MM = 120.0
+SCHEME_HEIGHT_MM = (90.0, 240.0)
+
+
+def lesson_scheme(analysis, k: int) -> tuple:
+    """The mechanism at position k for the column beside a lesson's plan, readable however
+    tall it is.
+
+    :func:`graphplan.drawing.mechanism_scheme` fits the mechanism in a box; a box of a fixed
+    shape shrinks a tall machine (a shaper's rocker, a slotter's ram, a six-bar press) until
+    its crank is a few mm and the letters of O1, A, B, O3 sit on each other. Here the box is
+    as tall as the mechanism's shape asks (within :data:`SCHEME_HEIGHT_MM`), and the letters
+    are placed again, clear of each other and of the links
+    (:func:`graphplan.drawing.place_labels`, letters of coincident points written as one).
+    """
+    import numpy as np
+
+    from ..drawing import (
+        Group,
+        LabelRequest,
+        Text,
+        item_geometry,
+        mechanism_scheme,
+        place_labels,
+    )
+
+    mech, kin = analysis.mech, analysis.kin
+    pts = np.array([p[k] for p in kin.pos.points.values()]
+                   + [np.asarray(v, float) for v in mech.frame_points.values()])
+    ext = np.maximum(np.ptp(pts, axis=0), 1e-9)
+    lo, hi = SCHEME_HEIGHT_MM
+    height = float(min(hi, max(lo, SCHEME_WIDTH_MM * ext[1] / ext[0])))
+    items = mechanism_scheme(analysis, k, SCHEME_WIDTH_MM, height)
+    labels = [it for it in items if isinstance(it, Text)
+              and (it.id or "").startswith("scheme-label-")]
+    rest = [it for it in items if it not in labels]
+    obstacles = [g for it in rest if not isinstance(it, Group)
+                 and (g := item_geometry(it)) is not None]
+    # mechanism_scheme writes a letter at (x + 2, y − 2) of its point: the point is back there
+    reqs = [LabelRequest((t.pos[0] - 2.0, t.pos[1] + 2.0), t.text, t.height, group="scheme")
+            for t in labels]
+    placed = place_labels(reqs, obstacles, layer=labels[0].layer if labels else "scheme",
+                          id_prefix="scheme-label", merge_mm=0.5)
+    return (*rest, *placed)
