@@ -2,7 +2,7 @@
 
 Run from the repository root (``pip install -e '.[bench]'`` first)::
 
-    python -m benchmarks              # the full run, 10–20 minutes on 2 cores
+    python -m benchmarks              # the full run, about 3–4 minutes on 2 quiet cores
     python -m benchmarks --quick      # 36 positions, 3 repetitions: a smoke test
 
 It writes ``benchmarks/results.json`` and the charts ``docs/img/bench-speed-accuracy``,
@@ -335,9 +335,8 @@ def targets(results: dict) -> list[dict]:
                               "(median, numpy)", "value_ms": t,
                     "limit_ms": TARGETS["full_cycle_ms"], "met": t <= TARGETS["full_cycle_ms"],
                     "bound_by": "per-call overhead of numpy on arrays of 360 (≈1 µs a call, a "
-                                "few hundred calls) and LAPACK's batched 6×6 solve and "
-                                "determinant (one small factorisation per position): see "
-                                "profile_press"})
+                                "few hundred calls; each dyad's equilibrium is solved in "
+                                "closed form, no factorisation): see profile_press"})
     for name, m in mech.items():
         g_t = m["methods"]["graphplan analytic"]["time"]["kinematics_cycle"]["median_s"]
         d = m["methods"].get("pylinkage step_with_derivatives")
