@@ -15,6 +15,8 @@ import math
 import re
 from dataclasses import dataclass
 
+from .numbers import plain
+
 UNITS_RU: dict[str, str] = {
     "mm": "мм", "m": "м", "m/s": "м/с", "m/s²": "м/с²", "N": "Н", "N·m": "Н·м", "N·mm": "Н·мм",
     "J": "Дж", "kg·m²": "кг·м²", "rad/s": "рад/с", "rad/s²": "рад/с²", "W": "Вт", "kg": "кг",
@@ -53,7 +55,6 @@ def nice_ceil(value: float, series: tuple[float, ...] = SERIES) -> float:
     raise AssertionError("unreachable")  # pragma: no cover
 
 
-_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 _LETTER = "A-Za-zА-Яа-яЁёΑ-Ωα-ω"
 #: A quantity's symbol and its index, written as a subscript on a drawing (GOST 2.304's
 #: indices): vB, vBA, lO1A, h21, R12, ω1, S3, Mур, Aс, Pдв.тр, Jпр, JII, KM, Kφ, Kl. Capital
@@ -66,12 +67,6 @@ _SUBSCRIPT = re.compile(
     r"|(?P<s3>[RFGMmhωεφψSPTJnva])(?P<i3>[0-9]{1,3})"
     r"|(?P<s4>K)(?P<i4>[a-zφ])"
     rf")(?![{_LETTER}0-9])")
-
-
-def decimal_comma(text: str) -> str:
-    """Numbers of ``text`` with the decimal comma Russian drawings use (GOST 2.304):
-    ``"Kφ = 0.0218"`` → ``"Kφ = 0,0218"`` (only a point between two digits)."""
-    return _DECIMAL_POINT.sub(",", text)
 
 
 def subscript_runs(text: str) -> list[tuple[str, bool]]:
@@ -91,53 +86,6 @@ def subscript_runs(text: str) -> list[tuple[str, bool]]:
         at = m.end()
     runs.append((text[at:], False))
     return [r for r in runs if r[0]]
-
-
-def finite(x: float, where: str) -> float:
-    """``x`` as a float, or ValueError: no NaN or infinity may reach ``where`` (a table, a
-    report)."""
-    x = float(x)
-    if not math.isfinite(x):
-        raise ValueError(f"a non-finite number ({x!r}) reached {where}")
-    return x
-
-
-def csv_number(x: float | None, where: str) -> str:
-    """A number for scripts (a CSV cell): repr precision, a dot decimal, never ``-0.0``;
-    empty for None."""
-    return "" if x is None else repr(finite(x, where) + 0.0)  # + 0.0: no "-0.0"
-
-
-def fmt(x: float, digits: int = 6) -> str:
-    """A number as a student writes it: no trailing zeros, up to ``digits`` significant."""
-    if x == 0:
-        return "0"
-    s = f"{x:.{digits}g}"
-    if "e" in s:
-        mant, exp = s.split("e")
-        return f"{mant}·10^{int(exp)}"
-    return s
-
-
-def plain(x: float, digits: int = 6, *, sign: bool = False) -> str:
-    """``x`` to ``digits`` significant figures as a student writes it, never with an
-    exponent: no trailing zeros (``0.4608``, ``364220``, ``0.00001234``); ``sign`` writes
-    ``+`` before a positive number (as ``{x:+g}``). Values that are not finite: ``str(x)``.
-    """
-    x = float(x)
-    if not math.isfinite(x):
-        return str(x)
-    lead = "+" if sign and x > 0 else ""
-    if x == 0:
-        return lead + "0"
-    s = f"{x:.{digits}g}"
-    if "e" in s:
-        mag = math.floor(math.log10(abs(float(s))))
-        dec = max(0, digits - 1 - mag)
-        s = f"{float(s):.{dec}f}"
-        if "." in s:
-            s = s.rstrip("0").rstrip(".")
-    return lead + s
 
 
 @dataclass(frozen=True, slots=True)

@@ -26,7 +26,8 @@ ROOT = Path(__file__).resolve().parent.parent / "graphplan"
 
 #: Layers, lowest first; a package's rank is its index (checking and teaching share one).
 LAYERS: tuple[tuple[str, ...], ...] = (
-    ("errors", "units", "geometry", "files", "paper", "console", "safe_text", "i18n"),
+    ("errors", "numbers", "units", "geometry", "files", "paper", "console", "safe_text",
+     "i18n"),
     ("model",),
     ("kinematics",),
     ("forces",),

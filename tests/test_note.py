@@ -118,8 +118,8 @@ def test_the_lines_are_the_projects_own_calculation(press):
     # the dynamics of sheet 3 with its decimal comma: the flywheel's J and the motor's power
     from graphplan.dynamics import machine_unit
     from graphplan.model import load
+    from graphplan.numbers import fmt
     from graphplan.project import analyze
-    from graphplan.units import fmt
 
     unit = machine_unit(analyze(load(ROOT / "examples" / "press.toml")))
     shown = " ".join(b.text for b in note.blocks if isinstance(b, Formula))

@@ -32,7 +32,8 @@ from graphplan.drawing import (
     table_items,
 )
 from graphplan.errors import GraphplanError, LayoutError
-from graphplan.render.svg import num, render_svg, write_svg
+from graphplan.numbers import trimmed as num
+from graphplan.render.svg import render_svg, write_svg
 
 NS = {"svg": "http://www.w3.org/2000/svg"}
 SVG = "{http://www.w3.org/2000/svg}"

@@ -294,7 +294,7 @@ def test_notation_is_the_methods(unit):
 
 
 def fmt_ru(x, digits):
-    from graphplan.units import fmt
+    from graphplan.numbers import fmt
 
     return fmt(x, digits).replace(".", ",")
 

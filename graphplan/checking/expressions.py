@@ -50,6 +50,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from ..numbers import general
 from .errors import ExpressionError, UnreadableError
 from .units import Unit, fold, split_unit
 
@@ -444,7 +445,7 @@ def value(node: Node, env: dict[str, float] | None = None) -> float:
         try:
             out = FUNCTIONS[node.fn](x)
         except (ValueError, ZeroDivisionError, OverflowError):
-            raise UnreadableError(f"{node.fn}({_g(x)}) is not defined") from None
+            raise UnreadableError(f"{node.fn}({general(x)}) is not defined") from None
         return _finite(out, node.fn)
     a, b = value(node.a, env), value(node.b, env)
     op = node.op
@@ -456,17 +457,13 @@ def value(node: Node, env: dict[str, float] | None = None) -> float:
         return _finite(a * b, "a product")
     if op == "/":
         if b == 0:
-            raise UnreadableError(f"division by zero ({_g(a)}/0)")
+            raise UnreadableError(f"division by zero ({general(a)}/0)")
         return _finite(a / b, "a quotient")
     try:  # "^"
         out = math.pow(a, b)
     except (ValueError, OverflowError, ZeroDivisionError):
-        raise UnreadableError(f"{_g(a)}^{_g(b)} is not a finite real number") from None
+        raise UnreadableError(f"{general(a)}^{general(b)} is not a finite real number") from None
     return _finite(out, "a power")
-
-
-def _g(x: float) -> str:
-    return f"{x:.6g}"
 
 
 def _finite(x: float, what: str) -> float:
@@ -533,7 +530,7 @@ _PREC = {"+": 1, "-": 1, "*": 2, "/": 2, "^": 4}
 
 def _show(node: Node, outer: int) -> str:
     if isinstance(node, Num):
-        return node.text if node.text else _g(node.value)
+        return node.text if node.text else general(node.value)
     if isinstance(node, Sym):
         return node.name
     if isinstance(node, Neg):

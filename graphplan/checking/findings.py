@@ -35,7 +35,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..units import finite
+from ..numbers import finite
 
 VERDICTS = ("ok", "inaccurate", "wrong", "not compared")
 KINDS = ("arithmetic", "consistency", "unit", "scale", "sign", "other-variant", "lever-arm",

@@ -45,6 +45,7 @@ from typing import Any
 
 import numpy as np
 
+from ..numbers import written as _fmt  # numbers as a student writes them
 from .expressions import evaluate
 from .reference import Reference
 from .units import fold
@@ -58,22 +59,6 @@ KIND_OF_FAULT = {"arithmetic": "arithmetic", "scale": "scale", "other": "other-v
                  "label": "label", "segment-for-force": "scale",
                  "coriolis-left-out": "coriolis", "normal": "arithmetic",
                  "load": "arithmetic"}
-
-
-def _fmt(x: float, digits: int = 5, decimals: int | None = None) -> str:
-    """A number as a student writes it: decimal comma, ``digits`` significant digits."""
-    if decimals is not None:
-        s = f"{x:.{decimals}f}"
-    elif x == 0:
-        s = "0"
-    else:
-        mag = math.floor(math.log10(abs(x)))
-        s = f"{x:.{max(0, digits - 1 - mag)}f}"
-        if "." in s:
-            s = s.rstrip("0").rstrip(".")
-    if s.startswith("-") and float(s) == 0:
-        s = s[1:]
-    return s.replace(".", ",")
 
 
 class Drafting:

@@ -2,31 +2,8 @@
 
 from __future__ import annotations
 
-import math
-
+from ..numbers import report as num  # the checker's reports' numbers
 from ..units import UNITS_RU, unit_text
-
-
-def num(x: float | None, lang: str = "en", digits: int = 5) -> str:
-    """A number with ``digits`` significant digits, no exponent for everyday sizes, a
-    decimal comma in Russian."""
-    if x is None:
-        return "—"
-    if not math.isfinite(x):
-        raise ValueError(f"a non-finite number ({x!r}) reached a report")
-    if x == 0:
-        return "0"
-    mag = math.floor(math.log10(abs(x)))
-    if -4 <= mag < 9:
-        dec = max(0, digits - 1 - mag)
-        s = f"{x:.{dec}f}"
-        if "." in s:
-            s = s.rstrip("0").rstrip(".")
-    else:
-        s = f"{x:.{digits - 1}e}"
-    if s in ("-0", "−0"):
-        s = "0"
-    return s.replace(".", ",") if lang == "ru" else s
 
 
 def qty(x: float | None, unit: str, lang: str = "en", digits: int = 5) -> str:

@@ -1,5 +1,6 @@
 """Sheets, renderer-independent: items, frame, title block, fonts, labels, figures, sheets 1–3."""
 
+from ..numbers import decimal_comma
 from ..paper import FORMATS, GRAPH26_SIZE, MARGIN, MARGIN_LEFT, TITLE_BLOCK_SIZE, Page, Rect
 from .dynamics_figures import (
     BELOW,
@@ -11,7 +12,6 @@ from .dynamics_figures import (
     Block,
     energy_mass_items,
     energy_mass_width,
-    num,
     omega_items,
     unit_parts,
     work_items,
@@ -54,7 +54,7 @@ from .fonts import (
     uncovered_chars,
 )
 from .labels import LabelRequest, merge_coincident, place_labels
-from .mpl_items import MIN_WIDTH, decimal_comma, figure_items
+from .mpl_items import MIN_WIDTH, figure_items
 from .scheme import mechanism_scheme, scheme_links
 from .sheet import (
     DASHDOT,
@@ -238,7 +238,6 @@ __all__ = [
     "merge_coincident",
     "missing_chars",
     "moment_figure",
-    "num",
     "omega_items",
     "place_labels",
     "plan_items",

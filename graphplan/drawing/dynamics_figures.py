@@ -28,9 +28,9 @@ from dataclasses import dataclass
 import numpy as np
 from shapely import LineString, union_all
 
-from ..units import fmt
+from ..numbers import fmt, sheet_text
 from .labels import LabelRequest, place_labels
-from .mpl_items import MM, decimal_comma, figure_items
+from .mpl_items import MM, figure_items
 from .sheet import (
     Arc,
     Arrow,
@@ -65,16 +65,6 @@ WORDS = {
            "omega_none": "Check: ω(φ) without a flywheel",
            "mag": "magnified", "em": "Energy–mass diagram ΔT(JII)"},
 }
-
-
-def num(x: float, digits: int, lang: str) -> str:
-    """``fmt`` with the decimal comma on a Russian sheet."""
-    s = fmt(x, digits)
-    return decimal_comma(s) if lang == "ru" else s
-
-
-def _say(text: str, lang: str) -> str:
-    return decimal_comma(text) if lang == "ru" else text
 
 
 @dataclass
@@ -194,7 +184,7 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     _axes(b, x0, y0, x0 - H - 3.0, x_end + 10.0, y0 - lo + 3.0, y0 - hi - 8.0,
           f"Mс, Mд, {w['Nm']}")
     b.text((x0 + 4.0 + 30.0, y0 - hi - 6.0),
-           _say(f"KM = {fmt(KM, 4)} {w['Nm']}/{w['mm']},  H = {fmt(H)} {w['mm']},  "
+           sheet_text(f"KM = {fmt(KM, 4)} {w['Nm']}/{w['mm']},  H = {fmt(H)} {w['mm']},  "
                 f"Kφ = {fmt(Kphi, 4)} {w['rad']}/{w['mm']}", lang), SMALL_H)
     b.line(np.column_stack((x_tau, y0 - yM)))
     stairs = []
@@ -233,7 +223,7 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     _axes(b, x0, y0, x0 - 3.0, x_end + 10.0, y0 - lo + 3.0, y0 - hi - 8.0,
           f"Aс, Aд, {w['J']}")
     b.text((x0 + 34.0, y0 - hi - 6.0),
-           _say(f"KA = Kφ·KM·H = {fmt(KA, 4)} {w['J']}/{w['mm']}", lang), SMALL_H)
+           sheet_text(f"KA = Kφ·KM·H = {fmt(KA, 4)} {w['J']}/{w['mm']}", lang), SMALL_H)
     b.line(np.column_stack((x_tau, y0 - yAc)))
     b.line(np.column_stack((x_tau, y0 - yAd)))
     b.line(np.column_stack((xn, y0 - wd.yA_mm)), MAIN)
@@ -260,7 +250,7 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     _axes(b, x0, y0, x0 - 3.0, x_end + 10.0, y0 - lo + 3.0, y0 - hi - 8.0,
           f"ΔT, {w['J']}")
     b.text((x0 + 24.0, y0 - hi - 6.0),
-           _say(f"ΔT = Aд + Aс;  KT = {fmt(KT, 4)} {w['J']}/{w['mm']} "
+           sheet_text(f"ΔT = Aд + Aс;  KT = {fmt(KT, 4)} {w['J']}/{w['mm']} "
                 f"(KA/KT = {fmt(KA / KT, 4)})", lang), SMALL_H)
     b.line(np.column_stack((x_tau, y0 - yT)))
     b.line(np.column_stack((xn, y0 - yTg)), MAIN)
@@ -334,7 +324,7 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
         b.dot((x, y))
     # captions above the diagram, under JII(φ)
     yc = geo["T_top"] - 17.0
-    caption_texts = [Text((x_left, yc + i * 5.0), _say(s, lang), SMALL_H, "start", 0.0,
+    caption_texts = [Text((x_left, yc + i * 5.0), sheet_text(s, lang), SMALL_H, "start", 0.0,
                           layer=LAYER) for i, s in enumerate((
             f"KJ = {fmt(KJ, 4)} {w['kgm2']}/{w['mm']}", f"KT = {fmt(KT, 4)} {w['J']}/{w['mm']}",
             "tg ψ = KJ·ω²·(1 ± δ)/(2·KT)",
@@ -363,7 +353,7 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
     b.line(((xJ0 - 1.0, y_l), (xd - 2.0, y_l)))
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_k), THIN, 3.5, 1.0, layer=LAYER))
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_l), THIN, 3.5, 1.0, layer=LAYER))
-    kl = _say(f"kl = {fw.segment_mm:.1f} {w['mm']}", lang)
+    kl = sheet_text(f"kl = {fw.segment_mm:.1f} {w['mm']}", lang)
     short = text_width(Text((0.0, 0.0), kl, SMALL_H, layer=LAYER)) + 2 * 3.5 + 2.0 > \
         abs(y_l - y_k)  # the arrowheads reach the number: it stands clear of them
     b.text((xd - (2.0 if short else 1.0), (y_k + y_l) / 2), kl, SMALL_H, "middle", 90.0)
@@ -395,7 +385,7 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
         cap = (f"JII(φ): KJ = {fmt(KJ2, 4)} {w['kgm2']}/{w['mm']}"
                + (f" ({w['mag']} {fmt(k)}×)" if k > 1 else "")
                + f", Kφ = {fmt(Kphi2, 4)} {w['rad']}/{w['mm']}")
-        cap = _say(cap, lang)
+        cap = sheet_text(cap, lang)
         cut = cap.find(", Kφ")
         if width is not None and cut > 0 and text_width(
                 Text((0.0, 0.0), cap, SMALL_H, layer=LAYER)) > width:  # two lines
@@ -449,4 +439,4 @@ def omega_items(u, box: Rect, lang: str) -> list:
     return [group]
 
 
-__all__ = ["energy_mass_items", "energy_mass_width", "num", "omega_items", "work_items"]
+__all__ = ["energy_mass_items", "energy_mass_width", "omega_items", "work_items"]

@@ -25,8 +25,8 @@ import numpy as np
 from ..errors import LayoutError
 from ..kinematics import Cycle
 from ..model import Mechanism
+from ..numbers import plain
 from ..plans import MIN_NODES, KinematicDiagrams, kinematic_diagrams
-from ..units import plain
 from . import fonts
 
 MM = 72 / 25.4  #: points per millimetre

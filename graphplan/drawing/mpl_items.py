@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from ..units import decimal_comma
+from ..numbers import decimal_comma
 from . import fonts
 from .sheet import TEXT_HEIGHTS, Group, Item, Polyline, Style, Text
 
@@ -190,4 +190,4 @@ def figure_items(fig, origin, *, layer: str = "diagrams", id: str, lang: str = "
     return Group(tuple(rec.items), layer=layer, id=id)
 
 
-__all__ = ["MIN_WIDTH", "MM", "decimal_comma", "figure_items"]
+__all__ = ["MIN_WIDTH", "MM", "figure_items"]

@@ -439,7 +439,7 @@ def structure_lines(analysis, lang: str) -> list[str]:
     formula of structure, each Assur group (class, order, kind), the stroke H of a sliding
     output or the swing ψ of a rocking one with the time ratio K, and the crank angles of
     the working and idle strokes."""
-    from .mpl_items import decimal_comma
+    from ..numbers import decimal_comma
 
     w = STRUCTURE_WORDS[lang]
     st, cy, mech = analysis.structure, analysis.cycle, analysis.mech

@@ -16,8 +16,9 @@ import math
 import numpy as np
 import shapely
 
+from ..numbers import plain
 from ..project import CAPTION
-from ..units import nice_ceil, plain
+from ..units import nice_ceil
 from .labels import LabelRequest, place_labels
 from .linkage import (
     JOINT_R,

@@ -31,6 +31,7 @@ import shapely
 from shapely.geometry import Point
 
 from ..forces import reaction_name
+from ..numbers import fmt
 from ..project import (
     CAPTION,
     GROUP_EQ_ROOM,
@@ -39,7 +40,7 @@ from ..project import (
     sheet2_table_header,
     split_table,
 )
-from ..units import Scale, fmt
+from ..units import Scale
 from .labels import LabelRequest, place_labels
 from .sheet import (
     MAIN,

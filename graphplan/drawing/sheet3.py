@@ -28,11 +28,10 @@ import math
 
 from ..dynamics import MachineUnit, machine_unit
 from ..errors import LayoutError
+from ..numbers import fmt, sheet_text
 from ..project import CAPTION, GAP, fit_columns, titled_table
 from ..reports import T as TABLE_WORDS
 from ..reports import position_rows
-from ..units import fmt
-from .mpl_items import decimal_comma
 from .sheet import (
     MAIN,
     THIN,
@@ -74,7 +73,7 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
     ru = lang == "ru"
     if mc is None:  # driven by its loads (an engine): the constant moment is the consumer's
         lines = _engine_lines(u, lang)
-        return [decimal_comma(s) for s in lines] if ru else lines
+        return [sheet_text(x, lang) for x in lines]
     mo = mc.motor
     kg_m2 = "кг·м²" if ru else "kg·m²"
     rot = ("Jрот нет в каталоге" if ru else "Jрот not in the catalogue") \
@@ -99,7 +98,7 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
         f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
         *_flywheel_lines(u, "JI − Jкр − Jрот·u²", lang),
     ]
-    return [decimal_comma(s) for s in lines] if ru else lines
+    return [sheet_text(x, lang) for x in lines]
 
 
 def _flywheel_lines(u: MachineUnit, what: str, lang: str) -> list[str]:
@@ -225,7 +224,7 @@ def _no_flywheel_lines(u: MachineUnit, lang: str) -> list[str]:
              f"{'δ без маховика' if ru else 'δ without a flywheel'} = "
              f"{u.simulation.delta_actual:.4f} ≤ {fw.delta:g} "
              f"({'моделирование' if ru else 'simulation'}); Jм = 0."]
-    return [decimal_comma(x) for x in lines] if ru else lines
+    return [sheet_text(x, lang) for x in lines]
 
 
 def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
@@ -246,7 +245,7 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     shaft = TABLE_WORDS[lang]["shaft_" + u.shaft]
     title = (f"{w['flywheel']} ({w[s.shape]}, {shaft}), {w['mass']} "
              f"{fmt(s.mass, 4)} {'кг' if ru else 'kg'}")
-    items: list[Item] = [Text((box.x0, box.y0 + 5.0), decimal_comma(title) if ru else title,
+    items: list[Item] = [Text((box.x0, box.y0 + 5.0), sheet_text(title, lang),
                               5.0, layer="text", id="s3-fw-title")]
     D_out = s.D + (s.h if s.shape == "rim" else 0.0)
     D_in = s.D - s.h if s.shape == "rim" else 0.0
@@ -310,7 +309,7 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     items += dimension((sx, yd), (sx + b, yd), f"{round(s.b * 1000)}", "s3-fw-dim-b")
     note = (f"М 1:{fmt(n)};  {w['speed']} v = ω·D/2 = {fmt(s.speed, 3)} м/с"
             + ("" if s.speed_ok else " > 40 м/с!"))
-    items.append(Text((box.x0, cy + R_out + 9.0), decimal_comma(note) if ru else note, 3.5,
+    items.append(Text((box.x0, cy + R_out + 9.0), sheet_text(note, lang), 3.5,
                       layer="text", id="s3-fw-note"))
     # the flywheel's data beside its views, where there is room
     kg, mm_ = ("кг", "мм") if ru else ("kg", "mm")
@@ -323,7 +322,7 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
             f"{'материал: сталь' if ru else 'material: steel'}"
             if u_density(u) == 7800.0 else ""]
     x_data = right + 10.0 + 9.0 * len(dims) + 6.0
-    data = [decimal_comma(d) if ru else d for d in data if d]
+    data = [sheet_text(d, lang) for d in data if d]
     widest = max(text_width(Text((0.0, 0.0), d, 3.5, layer="text")) for d in data)
     if box.x1 - x_data >= max(60.0, widest):
         # a line apart beside a small flywheel, its top above the note under the views

@@ -21,9 +21,10 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from ..numbers import general, note_comma
 from .blocks import Arm, Block, Figure, Formula, Heading, Note, Paragraph, Table
 from .figures import sheet_part_svg, svg_png
-from .markdown import decimal_comma, markdown_blocks
+from .markdown import markdown_blocks
 
 PAGE_TEXT_WIDTH_MM = 170.0  #: the widest a figure may be on an A4 page inside the frame
 
@@ -123,12 +124,13 @@ WORDS: dict[str, dict[str, Any]] = {  # a heading or line, or a list of lines
     },
 }
 
+def _g(x: float, digits: int, lang: str) -> str:
+    """A number of the note's own sentences: Python's ``g``, the note's decimal comma."""
+    return note_comma(general(x, digits), lang)
+
+
 # the lines of the answer key that belong to the force analysis (the rest is kinematics)
 _FORCE_TAGS = {"load", "reaction", "tangential", "M_bal"}
-
-
-def _g(x: float, digits: int, lang: str) -> str:
-    return decimal_comma(f"{x:.{digits}g}", lang)
 
 
 def _figure(sheet, caption: str, *prefixes: str, width_mm: float | None = None
@@ -207,14 +209,14 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     blocks.append(Heading(w["structure"], 1))
     for line in structure_text(analysis, lang).splitlines()[1:]:
         if line.strip():
-            blocks.append(Paragraph(decimal_comma(line.strip(), lang)))
+            blocks.append(Paragraph(note_comma(line.strip(), lang)))
 
     # 2 kinematics
     sheet1 = kinematics_sheet(analysis, lang=lang) if figures else None
     blocks += [Heading(w["kinematics"], 1), Heading(w["positions"], 2)]
     for line in cycle_text(analysis, lang).splitlines()[1:]:
         if line.strip():
-            blocks.append(Paragraph(decimal_comma(line.strip(), lang)))
+            blocks.append(Paragraph(note_comma(line.strip(), lang)))
     general = list(key.general)
     scale_lines = [ln for ln in general if "scale" in ln.tags or ln.lhs in ("ω1", "vA", "aA")]
     load_lines = [ln for ln in general if ln not in scale_lines]
@@ -233,7 +235,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     by_label = {p.label: p for p in key.positions}
     for k, label in enumerate(labels):
         phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
-        blocks.append(Heading(decimal_comma(w["position"].format(label=label, phi=phi), lang),
+        blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         gp = by_label.get(label)
         if gp is not None:
@@ -260,7 +262,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
         if gp is None or not lines:
             continue
         phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
-        blocks.append(Heading(decimal_comma(w["position"].format(label=label, phi=phi), lang),
+        blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         blocks += [Paragraph(b.text) for b in force_md.get(label, [])
                    if isinstance(b, Paragraph)]

@@ -42,7 +42,8 @@ def _bounds(items: list[Item]) -> tuple[float, float, float, float] | None:
 def sheet_part_svg(sheet: Sheet, *prefixes: str) -> tuple[str, float] | None:
     """The SVG of the items of ``sheet`` whose ids start with one of ``prefixes``, cropped,
     and its width in mm; None when the sheet has no such item."""
-    from ..render.svg import num, render_svg
+    from ..numbers import trimmed as num
+    from ..render.svg import render_svg
 
     items = _selected(sheet.items, prefixes)
     box = _bounds(items)

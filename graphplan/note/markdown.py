@@ -5,15 +5,10 @@ from __future__ import annotations
 
 import re
 
+from ..numbers import note_comma
 from .blocks import Block, Formula, Heading, Paragraph, Table
 
-_NUMBER_POINT = re.compile(r"(?<![\w.])(-?\d+)\.(\d+)")
 _POSITION = re.compile(r"^(?:Положение|Position)\s+(\S+?),")
-
-
-def decimal_comma(text: str, lang: str) -> str:
-    """``0.021817`` → ``0,021817`` on a Russian note (a decimal point stays in English)."""
-    return _NUMBER_POINT.sub(r"\1,\2", text) if lang == "ru" else text
 
 
 def _cells(line: str) -> tuple[str, ...]:
@@ -36,7 +31,7 @@ def markdown_blocks(md: str, lang: str, *, top: int = 2, caption: str = "") -> l
             continue
         if raw.startswith("#"):
             hashes = len(raw) - len(raw.lstrip("#"))
-            text = decimal_comma(raw[hashes:].strip(), lang)
+            text = note_comma(raw[hashes:].strip(), lang)
             if hashes < top:
                 continue
             m = _POSITION.match(text)
@@ -49,11 +44,11 @@ def markdown_blocks(md: str, lang: str, *, top: int = 2, caption: str = "") -> l
             while i < len(lines) and lines[i].startswith("|"):
                 block.append(lines[i].rstrip())
                 i += 1
-            header = tuple(decimal_comma(c, lang) for c in _cells(block[0]))
-            rows = tuple(tuple(decimal_comma(c, lang) for c in _cells(r)) for r in block[2:])
+            header = tuple(note_comma(c, lang) for c in _cells(block[0]))
+            rows = tuple(tuple(note_comma(c, lang) for c in _cells(r)) for r in block[2:])
             out.append(Table(last_heading, header, rows))
             continue
-        text = decimal_comma(raw.lstrip("- ").replace("`", ""), lang)
+        text = note_comma(raw.lstrip("- ").replace("`", ""), lang)
         if raw.startswith("- ") and " = " in text:
             out.append(Formula(text, checkable=False))
         else:

@@ -42,6 +42,7 @@ from typing import Any
 
 import numpy as np
 
+from ..numbers import rough
 from .constructions import Reader, acceleration_plan, velocity_plan
 
 ILL_ANGLE_DEG = 10.0
@@ -61,15 +62,6 @@ WORDS = {
     "en": "lines meet at {angle}°, reading ±{err} mm",
     "ru": "линии пересекаются под углом {angle}°, точность ±{err} мм",
 }
-
-
-def _num(x: float, digits: int = 2) -> str:
-    """2 significant digits, at least one decimal below 10: ``11``, ``1.3``, ``0.52``."""
-    if not math.isfinite(x):
-        return "∞"
-    if x >= 10:
-        return f"{x:.0f}"
-    return f"{x:.{max(1, digits - 1 - math.floor(math.log10(x))) if x > 0 else 1}f}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -105,7 +97,7 @@ class Intersection:
     def note(self, lang: str = "en") -> str:
         """``lines meet at 1.3°, reading ±11 mm`` (``ru``: ``линии пересекаются под углом …``)."""
         angle = f"{self.angle_deg:.1f}"
-        text = WORDS[lang].format(angle=angle, err=_num(self.error_mm))
+        text = WORDS[lang].format(angle=angle, err=rough(self.error_mm))
         return text.replace(".", ",") if lang == "ru" else text
 
 

@@ -28,7 +28,8 @@ import numpy as np
 
 from ..geometry import cross, perp
 from ..model import Dyad, Mechanism
-from ..units import Scale, plain, unit_text
+from ..numbers import plain
+from ..units import Scale, unit_text
 
 Vec2 = np.ndarray
 

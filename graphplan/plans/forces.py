@@ -60,7 +60,8 @@ from ..errors import SingularPoseError
 from ..forces import Forces, Loads, dyad_pairs, reaction_name
 from ..geometry import cross, perp
 from ..model import Mechanism
-from ..units import Scale, fit_scale, plain
+from ..numbers import plain
+from ..units import Scale, fit_scale
 from .constructions import (
     EXACT,
     Element,

@@ -65,7 +65,8 @@ from ..forces import Loads, compute_loads, power_balance_moment
 from ..geometry import cross, perp
 from ..kinematics import Kinematics
 from ..model import Mechanism
-from ..units import Scale, fit_scale, plain
+from ..numbers import plain
+from ..units import Scale, fit_scale
 from .constructions import (
     EXACT,
     Element,

@@ -18,9 +18,10 @@ import numpy as np
 from ..errors import InputError, LayoutError
 from ..kinematics import in_working_stroke
 from ..model import Mechanism
+from ..numbers import fmt
 from ..paper import GRAPH26_SIZE, Page
 from ..plans import plan_name
-from ..units import PLAN_SERIES, Scale, fit_scale, fmt, nice_ceil
+from ..units import PLAN_SERIES, Scale, fit_scale, nice_ceil
 from .layout import (
     CAPTION,
     GAP,

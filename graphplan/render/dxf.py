@@ -66,7 +66,7 @@ from ..drawing.sheet import (
     hatch_segments,
 )
 from ..files import write_atomic
-from ..units import decimal_comma
+from ..numbers import decimal_comma
 from .extra import require
 
 APPID = "GRAPHPLAN"  #: XDATA application name that carries the items' ids

@@ -41,17 +41,11 @@ from ..drawing import (
 )
 from ..errors import LayoutError
 from ..files import write_atomic
-from ..units import decimal_comma, subscript_runs
+from ..numbers import sheet_text
+from ..numbers import trimmed as num  # the SVG's lengths, in mm
+from ..units import subscript_runs
 
 _INKSCAPE = "http://www.inkscape.org/namespaces/inkscape"
-
-
-def num(v: float) -> str:
-    """A length in mm as written to the SVG: rounded to 0.01, no trailing zeros."""
-    r = round(float(v), 2)
-    if r == 0:
-        r = 0.0  # no "-0"
-    return f"{r:.2f}".rstrip("0").rstrip(".")
 
 
 def _pts(points) -> list[tuple[str, str]]:
@@ -106,7 +100,7 @@ def _text_attrs(t: Text) -> dict[str, object]:
     attrs: dict[str, object] = {
         "insert": (num(x), num(y)),
         "font-family": fonts.font_family(t.text),
-        "font-size": f"{round(size, 3):.3f}".rstrip("0").rstrip("."),
+        "font-size": num(size, 3),
         "font-style": "normal",
         "text-anchor": t.anchor,
         "fill": "black",
@@ -135,7 +129,7 @@ def _text(dwg: svgwrite.Drawing, t: Text, lang: str | None):
         return dwg.text(t.text, **_with_id(_text_attrs(t), t.id))
     t = replace(t, text=fonts.drawable_minus(t.text))  # osifont's dash for the minus
     attrs = _with_id(_text_attrs(t), t.id)
-    text = decimal_comma(t.text) if lang == "ru" else t.text
+    text = sheet_text(t.text, lang)
     runs = subscript_runs(text)
     if len(runs) == 1 and not runs[0][1]:
         return dwg.text(text, **attrs)
@@ -145,7 +139,7 @@ def _text(dwg: svgwrite.Drawing, t: Text, lang: str | None):
     for chars, sub in runs:
         if sub:
             el.add(dwg.tspan(chars, dy=[num(0.0 if down else drop)],
-                             **{"font-size": f"{round(size, 3):.3f}".rstrip("0").rstrip(".")}))
+                             **{"font-size": num(size, 3)}))
             down = True
         else:
             el.add(dwg.tspan(chars, dy=[num(-drop)]) if down else dwg.tspan(chars))
@@ -246,4 +240,4 @@ def write_svg(sheet: Sheet, path: str | Path, protect: tuple[Path, ...] = ()) ->
     return write_atomic(path, render_svg(sheet), protect=protect)
 
 
-__all__ = ["num", "render_svg", "write_svg"]
+__all__ = ["render_svg", "write_svg"]

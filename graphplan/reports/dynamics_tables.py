@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..dynamics import MachineUnit
-from ..units import fmt
+from ..numbers import fmt
 
 T: dict[str, dict[str, Any]] = {
     "ru": {"title": "Динамический анализ машинного агрегата", "data": "Исходные данные",

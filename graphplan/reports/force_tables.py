@@ -34,12 +34,13 @@ import math
 import re
 
 from ..forces import MomentCurve
+from ..numbers import csv_number, finite, fixed, fmt
 from ..plans import (
     ForcePlan,
 )
 from ..project import Analysis
 from ..safe_text import markdown_cell
-from ..units import Scale, csv_number, finite, fmt
+from ..units import Scale
 from .force_readings import TINY, PositionForces, force_readings
 
 WORDS = {
@@ -132,9 +133,8 @@ def _m_bal(crank_plan) -> float:
 
 
 def _f(x: float, d: int = 2) -> str:
-    """Fixed decimals, no ``-0.00``."""
-    s = f"{_finite(x):.{d}f}"
-    return s[1:] if re.fullmatch(r"-0\.?0*", s) else s
+    """A table's fixed decimals (:func:`~graphplan.numbers.fixed`), never NaN."""
+    return fixed(_finite(x), d)
 
 
 def _pct(err: float | None) -> str:

@@ -27,6 +27,7 @@ import numpy as np
 
 from ..geometry import norm
 from ..kinematics import output_coordinate
+from ..numbers import cell, csv_number, finite, fmt
 from ..plans import (
     Conditioning,
     Plan,
@@ -40,7 +41,7 @@ from ..plans import (
 )
 from ..project import Analysis
 from ..safe_text import markdown_cell
-from ..units import Scale, csv_number, finite, fmt
+from ..units import Scale
 
 TINY_MM = 1e-6
 """A segment shorter than this (mm) is zero: solver noise, with no relative error."""
@@ -573,19 +574,6 @@ SUMMARY_CELL = 9
 """Longest cell of the sheet's summary table (3.5 mm lettering on A1)."""
 
 
-def _short(x: float) -> str:
-    """3–4 significant digits in at most :data:`SUMMARY_CELL` characters."""
-    x = _finite(x)
-    if x == 0:
-        return "0"
-    for d in (4, 3, 2):
-        s = f"{x:.{d}g}"
-        if "e" not in s and len(s) <= SUMMARY_CELL:
-            return s
-    s = f"{x:.0f}" if abs(x) >= 1 else f"{x:.1e}"
-    return s if len(s) <= SUMMARY_CELL else f"{x:.1e}"
-
-
 def summary_rows(analysis: Analysis, lang: str = "en") -> tuple[list[str], list[list[str]]]:
     """The compact table of main values for sheet 1: one row per position.
 
@@ -626,7 +614,7 @@ def summary_rows(analysis: Analysis, lang: str = "en") -> tuple[list[str], list[
         for _, arr in cols:
             big = float(np.max(np.abs(arr)))
             x = float(arr[k])
-            row.append(_short(0.0 if abs(x) <= 1e-9 * big else x))
+            row.append(cell(_finite(0.0 if abs(x) <= 1e-9 * big else x), SUMMARY_CELL))
         rows.append(row)
     return header, rows
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import re
 
+from ..numbers import fmt
 from ..project import Analysis
-from ..units import fmt
 from .force_readings import PositionForces, force_readings
 from .force_tables import _crank_arm, _f, _m_bal, _md_table, _reaction_value
 

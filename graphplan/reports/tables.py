@@ -7,10 +7,10 @@ then the cycle, then the kinematics of each position. Russian or English.
 from __future__ import annotations
 
 import math
-from typing import SupportsFloat
 
 from ..geometry import norm
 from ..model import russian_kind
+from ..numbers import fixed
 from ..project import Analysis
 
 TEXT = {
@@ -80,13 +80,6 @@ def format_table(header: list[str], rows: list[list[str]]) -> str:
     return "\n".join([line, rule, *body])
 
 
-def _num(x: SupportsFloat, digits: int = 4) -> str:
-    x = float(x)
-    if abs(x) < 10 ** (-digits - 2):
-        x = 0.0
-    return f"{x:.{digits}f}"
-
-
 def structure_text(a: Analysis, lang: str = "en") -> str:
     """Section 1: mobility by Chebyshev's formula, pairs, Assur groups."""
     t = TEXT[lang]
@@ -142,22 +135,22 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
         row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
         for p in names:
             x, y = kin.pos.points[p][k] * 1e3
-            row.append(f"({_num(x, 2)}, {_num(y, 2)})")
+            row.append(f"({fixed(x, 2)}, {fixed(y, 2)})")
         rows.append(row)
     out += [format_table(head + names, rows), "", t["vel"]]
     rows = []
     for k in range(kin.n):
         row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
-        row += [_num(norm(kin.vel.points[p][k])) for p in names]
-        row += [_num(kin.vel.omega[ln][k]) for ln in links]
+        row += [fixed(norm(kin.vel.points[p][k])) for p in names]
+        row += [fixed(kin.vel.omega[ln][k]) for ln in links]
         rows.append(row)
     out += [format_table(head + [f"v_{p}" for p in names] + [f"ω{ln}" for ln in links], rows),
             "", t["acc"]]
     rows = []
     for k in range(kin.n):
         row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
-        row += [_num(norm(kin.acc.points[p][k])) for p in names]
-        row += [_num(kin.acc.epsilon[ln][k]) for ln in links]
+        row += [fixed(norm(kin.acc.points[p][k])) for p in names]
+        row += [fixed(kin.acc.epsilon[ln][k]) for ln in links]
         rows.append(row)
     out.append(format_table(head + [f"a_{p}" for p in names] + [f"ε{ln}" for ln in links], rows))
     return "\n".join(out)

@@ -2,18 +2,20 @@
 
 Numbers are written as a student writes them: lengths on the drawing to 0.01 mm, values
 to four significant figures (``423918 N``, ``0.4219 m/s``), a scale with up to six
-figures (:func:`graphplan.units.plain`) — never with an exponent, which a student does not
+figures (:func:`graphplan.numbers.plain`) — never with an exponent, which a student does not
 write in a calculation (``18260000 N·mm``, not ``1.826·10^7``).
 """
 
 from __future__ import annotations
 
-import math
 import re
 
 from ..model import russian_kind
+from ..numbers import figures as num  # a lesson's values: 4 significant figures
+from ..numbers import fixed as mm  # a length on the drawing, to 0.01 mm
+from ..numbers import plain
 from ..plans import ZERO_MM
-from ..units import UNITS_RU, plain, unit_text
+from ..units import UNITS_RU, unit_text
 from .model import Result
 
 WORDS = {
@@ -134,29 +136,9 @@ def unit(u: str, lang: str) -> str:
     return unit_text(u, lang)
 
 
-def num(x: float, sig: int = 4) -> str:
-    """A value to ``sig`` significant figures (trailing zeros kept within 10⁻³ … 10⁶),
-    never with an exponent."""
-    x = float(x)
-    if x == 0 or not math.isfinite(x):
-        return "0" if x == 0 else str(x)
-    mag = math.floor(math.log10(abs(x)))
-    if -3 <= mag < 6:
-        dec = max(0, sig - 1 - mag)
-        s = f"{x:.{dec}f}"
-        return "0" if float(s) == 0 else s
-    return plain(x, sig)
-
-
 def shown(r: Result) -> float:
     """A result's value as written: 0 when its length is round-off (a dead centre)."""
     return 0.0 if abs(r.mm) < ZERO_MM else r.value
-
-
-def mm(x: float) -> str:
-    """A length on the drawing, to 0.01 mm."""
-    s = f"{float(x):.2f}"
-    return "0.00" if s == "-0.00" else s
 
 
 def result_text(r: Result, lang: str) -> str:
