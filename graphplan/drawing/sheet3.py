@@ -6,7 +6,7 @@
   tangents at ψmax, ψmin (tens of degrees: KT and KJ are chosen for it, see
   :func:`graphplan.dynamics.machine.energy_mass_scales`), k, l and kl; above it JII(φ)
   turned 90°;
-* on the right: the check ω(φ), the flywheel (front view and section, dimensioned after
+* on the right: the check ω(φ), the flywheel (front view and profile section, dimensioned after
   GOST 2.307: outer and inner diameters and the width in whole mm, the axis drawn), the
   results in the order of the calculation, and the table of values at the positions.
 
@@ -54,11 +54,11 @@ from .sheet1 import title_block
 WORDS = {
     "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",
            "disc": "диск", "results": "Результаты", "table": "Значения в положениях",
-           "mass": "масса", "speed": "окружная скорость", "section": "А–А",
+           "mass": "масса", "speed": "окружная скорость",
            "no_flywheel": "Маховик не нужен"},
     "en": {"sheet": "Dynamics", "flywheel": "Flywheel", "rim": "rim", "disc": "disc",
            "results": "Results", "table": "Values at the positions", "mass": "mass",
-           "speed": "rim speed", "section": "A–A", "no_flywheel": "No flywheel is needed"},
+           "speed": "rim speed", "no_flywheel": "No flywheel is needed"},
 }
 RESULT_H = 3.5  #: lettering of the results, mm
 LINE = 6.0  #: line pitch of the results, mm
@@ -228,7 +228,7 @@ def _no_flywheel_lines(u: MachineUnit, lang: str) -> list[str]:
 
 
 def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
-    """The flywheel: front view and section А–А at a GOST scale; ⌀ outer, ⌀ inner (rim)
+    """The flywheel: front view and the profile section at a GOST scale; ⌀ outer, ⌀ inner (rim)
     and the width b in whole mm with extension lines from the outline; the axis of
     rotation and the centre lines dash-dot. A machine that needs none gets the reason in
     its place."""
@@ -266,7 +266,9 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
                       id="s3-fw-axis-h"))
     items.append(Line((cx, cy - R_out - 4), (cx, cy + R_out + 4), AXIS, layer=lay,
                       id="s3-fw-axis-v"))
-    # section А–А: the rim (or the disc), the web and the hub cut, hatched
+    # the profile section through the axis, in projection connection with the front view
+    # (the rim or the disc, the web and the hub cut, hatched): the flywheel is symmetric
+    # about that plane, so GOST 2.305 neither marks the cutting plane nor letters the section
     sx = cx + R_out + 22.0
     web = max(0.3 * b, 1.0)
     hb = max(0.8 * b, 4.0)
@@ -288,8 +290,6 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     right = sx + max(b, xm - sx + hb / 2)
     items.append(Line((sx - 6.0, cy), (right + 3.0, cy), AXIS, layer=lay,
                       id="s3-fw-sec-axis"))
-    items.append(Text((xm, cy - R_out - 19.0), w["section"], 3.5, "middle", layer="text",
-                      id="s3-fw-section"))
     # dimensions, whole mm: ⌀ inner nearer the section, ⌀ outer outside it, b on top
     dims = [(R_out, D_out, "out")] + ([(R_in, D_in, "in")] if s.shape == "rim" else [])
     dims.sort()
@@ -427,7 +427,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
     header = list(TABLE_WORDS[lang]["cols"])
     table_h = CAPTION + 7.0 * (len(rows) + 1)
     results_h = CAPTION + 3.0 + len(lines) * LINE
-    omega_min = 80.0 if a1 else 60.0 * kh  # ω(φ) is read down to this height
+    omega_min = 80.0 if a1 else max(45.0, 80.0 * kh)  # ω(φ) is read down to this height
     fw_min = 70.0 if a1 else 90.0 * kh
     free = right.height - table_h - results_h - 3 * GAP
     moved = not a1 and free < omega_min + fw_min
