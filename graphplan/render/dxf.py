@@ -369,10 +369,37 @@ def dxf_text(sheet: Sheet) -> str:
     """The DXF file of ``sheet`` as text (UTF-8 when written; no timestamps)."""
     ezdxf = require("ezdxf", "dxf")
     doc = dxf_document(sheet)
+    _stable_classes(doc)
     stream = io.StringIO()
     with _fixed_metadata(ezdxf):
         doc.write(stream)
     return stream.getvalue()
+
+
+def _stable_classes(doc) -> None:
+    """Register the CLASS entries of the document in an order that is the same every run.
+
+    On writing, ezdxf registers the classes its version requires (a list: a fixed order)
+    and then one per entity type in use, iterating over a *set* of type names, whose order
+    changes with Python's string hashing (``PYTHONHASHSEED``): the CLASSES section, and so
+    the file's bytes, changed from run to run. Registered here first — the required ones
+    in ezdxf's order, the others sorted — ezdxf's own registration on writing adds nothing.
+    """
+    classes = doc.classes.classes  # key (name, C++ class) → DXFClass, in file order
+    before = list(classes)
+    doc.classes.add_required_classes(doc.dxfversion)
+    try:
+        from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
+
+        required = list(REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004))
+    except ImportError:  # another ezdxf: sort them all
+        required = []
+    rank = {name: i for i, name in enumerate(required)}
+    added = [k for k in classes if k not in before]
+    order = before + sorted(added, key=lambda k: (rank.get(k[0], len(rank)), k))
+    entries = {k: classes[k] for k in order}
+    classes.clear()
+    classes.update(entries)
 
 
 def dxf_bytes(sheet: Sheet) -> bytes:
