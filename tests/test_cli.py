@@ -194,11 +194,16 @@ def test_sheets_that_do_not_fit_say_what_to_change(capsys, tmp_path):
     assert (tmp_path / "sheet1.svg").exists() and (tmp_path / "sheet2.svg").exists()
     from graphplan.files import bundled_example
 
-    # the engine's sheet 1 (tests/test_norm_control.py A3_TODO): when it fits, take another
-    code, out, err = run(capsys, "sheets", str(bundled_example("engine")), "--page", "A3",
-                         "-o", str(tmp_path / "engine"))
+    # a press drawn on A3 at the seed's Kl written for A3 (a plan of positions 1:1 does not
+    # leave the plans room there): one line saying what to change, nothing written
+    text = bundled_example("press").read_text(encoding="utf-8").replace(
+        "[drawing]\n", '[drawing]\nformat = "A3"\n')
+    (tmp_path / "press_a3.toml").write_text(text, encoding="utf-8")
+    code, out, err = run(capsys, "sheets", str(tmp_path / "press_a3.toml"),
+                         "-o", str(tmp_path / "big"))
     assert code == 2 and out == "" and err.count("\n") == 1
-    assert not (tmp_path / "engine" / "sheet1.svg").exists()
+    assert "Kl" in err
+    assert not (tmp_path / "big" / "sheet1.svg").exists()
 
 
 def test_json_carries_reactions_and_balancing_moments(capsys):

@@ -256,9 +256,8 @@ def test_no_line_thinner_than_gost_thin_line(name, n):
     assert thin == []
 
 
-#: A3 does not work yet for these (issue 18, sheets12): the table of the plans is cut to
-#: nothing, the kinematic diagrams' box or sheet 2's cells are too small.
-A3_TODO = {"engine", "sixbar_press"}
+#: A3 does not work yet for these (issue 18, sheets12).
+A3_TODO: set[str] = set()
 
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])

@@ -47,10 +47,6 @@ TODO = {
     *((n, 1, "filled") for n in VARIANTS),
     *((n, 2, "filled") for n in VARIANTS),
     ("shaper_part", 2, "overlaps"),
-    # A3 of an engine (as the engine example's): 14 plans leave too little room on sheet 1,
-    # the kinematic diagrams do not fit their 134×79 mm box
-    ("twin_engine", 1, "A3"),
-    ("two_stroke_engine", 1, "A3"),
 }
 
 

@@ -39,10 +39,15 @@ DIAGRAM_MAX_H = 330.0
 DIAGRAM_PREF_H = 180.0  #: the diagrams' height the schemes leave them in the left column, mm
 
 
+DIAGRAM_FLOOR_H = 85.0  #: the three diagrams' box is never lower: their axes, pads and
+#: lettering take 54 mm (drawing.figures), each diagram is at least 10 mm high
+
+
 def diagram_min(page: Page) -> tuple[float, float]:
-    """Smallest box of the diagrams on ``page``: DIAGRAM_MIN on A1, in proportion below."""
+    """Smallest box of the diagrams on ``page``: DIAGRAM_MIN on A1, in proportion below
+    (never lower than DIAGRAM_FLOOR_H)."""
     k = min(1.0, page.frame.height / 584.0)
-    return DIAGRAM_MIN[0] * k, DIAGRAM_MIN[1] * k
+    return DIAGRAM_MIN[0] * k, max(DIAGRAM_MIN[1] * k, DIAGRAM_FLOOR_H)
 
 
 @dataclass(frozen=True, slots=True)

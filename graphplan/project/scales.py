@@ -43,6 +43,8 @@ PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters
 SLACK = 8.0  #: of a cell's margins a plan may take when that spares it the coarser scale, mm
 READ_MIN = 53.0  #: a plan's longest vector, arrowhead included, is read at least this long
 #: (its shaft 50 mm, the method's least main vector), mm
+LONGEST_READ = 40.0  #: a plan whose longest vector the cells keep shorter is not read: fewer
+#: positions' plans are drawn, larger (the norm's least longest vector), mm
 SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
 TRAJECTORY_POINTS = 360
 SHEET2_MAX_ROWS = 3  #: positions analysed in full on sheet 2
@@ -241,11 +243,11 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
     plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
     plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
     # the velocity plans of every position; on a smaller format, as many as fit: every
-    # second position, then the acceleration plans' positions only (drawing.positions, when
-    # the variant gives it, is drawn as given)
+    # second position, then the acceleration plans' positions only (of drawing.positions,
+    # when the variant gives it: on its own format it is drawn as given)
     given = positions_by_label(mech, kin, "drawing")
-    tries = [plan_positions(mech, kin)] if given is not None else [
-        tuple(range(kin.n)), tuple(range(0, kin.n, 2)), ()]
+    every = tuple(range(kin.n)) if given is None else given
+    tries = [every, every[::2], ()]
     scheme_aspect = _scheme_aspect(mech, kin, acc)
     for n_try, chosen in enumerate(tries):
         which = tuple(sorted(set(chosen) | set(acc)))
@@ -254,7 +256,9 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> 
         try:
             layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
                                    len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads))
-            break
+            # plans too small to read: fewer of them, larger
+            if layout.plan_size * max(longest) >= LONGEST_READ or n_try == len(tries) - 1:
+                break
         except LayoutError:
             if n_try == len(tries) - 1:
                 raise
