@@ -1,5 +1,7 @@
 """The Coriolis step says the rule of the vector it draws (issue 23: a lesson taught the
-rule on v_AA3 while the plan drew v_A3A turned — the opposite direction).
+rule on v_AA3 while the plan drew v_A3A turned — the opposite direction). The equation
+names the sheets' v_AA3 (one notation with the tables); the sentence says that the rule
+turns v_A3A = −v_AA3.
 
 For every Coriolis vector laid off on an acceleration plan of every example with a
 sliding pair on a moving link, at every position: the vector drawn (from where it is laid
@@ -24,7 +26,13 @@ EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 
 def _segment(vp, name: str) -> np.ndarray | None:
-    """v_A3A → the vector a→a3 of the velocity plan (tip A3, base A); None if unknown."""
+    """v_A3A → the vector a→a3 of the velocity plan (tip A3, base A), v_AA3 → a3→a; None if
+    unknown."""
+    m = re.fullmatch(r"v_([A-Z][a-z]*)([A-Z][a-z]*)(\d+)", name)
+    if m and m[1] == m[2]:  # v_AA3: tip A, base A3
+        pts = {k.lower(): np.asarray(v, float) for k, v in vp.points.items()}
+        tip, base = m[1].lower(), (m[2] + m[3]).lower()
+        return pts[tip] - pts[base] if tip in pts and base in pts else None
     m = re.fullmatch(r"v_([A-Z][a-z]*)(\d+)([A-Z][a-z]*)(\d*)", name)
     if not m:
         return None
@@ -56,6 +64,14 @@ def test_the_coriolis_rule_is_the_vector_drawn(example):
             rel = _segment(vp, m[2])
             if rel is None or np.hypot(*rel) < 1e-6:
                 continue
+            # the equation names the sheets' vector; the sentence says which one the rule
+            # turns: «v_A3A = −v_AA3» (a slotted link's A3) turns the opposite of v_AA3
+            said = re.search(r"turns (v_\w+) = −" + m[2], st.text)
+            if said:
+                assert "поворачивается " + said[1] + " = −" + m[2] in st.text_ru
+                rel = -rel
+            elif re.fullmatch(r"v_([A-Z][a-z]*)\1\d+", m[2]):  # v_AA3 needs its sentence
+                raise AssertionError((example, st.text))
             (seg,) = [e for e in st.elements if e.kind == "segment"]
             drawn = np.asarray(seg.end, float) - np.asarray(seg.start, float)
             omega = vp.rates[m[1]]

@@ -358,7 +358,17 @@ def _check_texts(les, page: str) -> None:
             link, rel = m[1], m[2]
             assert "ускорение кориолиса" in s.text["ru"].lower(), s.text["ru"]
             assert "Coriolis acceleration" in s.text["en"], s.text["en"]
-            if f"ω{link} = 0" not in s.text["en"]:
+            if f"ω{link} = 0" in s.text["en"]:
+                continue
+            if f"= −{rel}" in s.text["en"]:  # a slotted link: the sheets' v_AA3 is named, the
+                # rule turns its opposite v_A3A, and the sentence says so
+                assert (f"вектор относительной скорости, повёрнутый на 90° в сторону вращения "
+                        f"ω{link}") in s.text["ru"]
+                assert re.search(rf"поворачивается v_\w+ = −{rel} \(вектор .*\) — на 90° "
+                                 r"(по|против) часовой стрелк", s.text["ru"]), s.text["ru"]
+                assert re.search(rf"the rule turns v_\w+ = −{rel} \(the vector .*\) by 90° "
+                                 r"(counter-)?clockwise", s.text["en"]), s.text["en"]
+            else:
                 assert f"{rel}, повёрнутый на 90° в сторону вращения ω{link}" in s.text["ru"]
                 assert f"{rel} turned by 90° in the sense of ω{link}" in s.text["en"]
         if s.kind == "moment":

@@ -55,7 +55,7 @@ def test_each_step_names_the_links_it_is_about(press, shaper):
     assert v["v_B = v_A + v_BA = v_B4 + v_B3B4"] == ("2", "3")  # the group 2–3
     assert v["v_S2: similarity on link 2"] == ("2",)
     s = _links(lesson(shaper, "acceleration", "2"))
-    assert s["aᵏ_A3 = 2·ω3·v_A3A"] == ("3",)  # Coriolis: the slotted link 3
+    assert s["aᵏ_A3 = 2·ω3·v_AA3"] == ("3",)  # Coriolis: the slotted link 3
     assert s["aⁿ_AO3 = ω3²·l_AO3"] == ("3",)
     f = lesson(press, "forces", "(2)")
     assert {ln for st in f.steps for ln in st.links} == {"1", "2", "3"}

@@ -563,7 +563,9 @@ def _velocity_dyad(mech, dy: Dyad, kin, k, b: _Builder, img: _Images, P, rates, 
         key = f"{i}/{j}"
         u = _guide_dir(kin, k, key)
         a3 = a + j
-        eq = f"v_{A}{j} = v_{C} + v_{A}{j}{C} = v_{A} + v_{A}{j}{A}"
+        # v_A3 = v_A − v_AA3: the sheets' v_AA3 (the segment a3→a, the block's A relative to
+        # the slotted link's A3), one notation with the tables
+        eq = f"v_{A}{j} = v_{C} + v_{A}{j}{C} = v_{A} − v_{A}{A}{j}"
         _close_two_lines(b, eq, a3,
                          b.points[c], perp(P[A] - P[C]), f"⟂{C}{A} through {c}",
                          b.points[a], u, f"∥ slot through {a}")
@@ -719,7 +721,9 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         ``reverse`` (the sheet's name of the opposite vector, the segment of ``rel`` on the
         velocity plan) where the sheet reads that one: a slotted link's v_AA3 is the
         segment a3→a, the rule turns v_A3A = −v_AA3, the segment a→a3 (laid from a,
-        ``sign`` −1)."""
+        ``sign`` −1). The equation and the magnitude then name the sheets' vector
+        (``aᵏ_A3 = 2·ω3·v_AA3``: one notation with the tables) and the sentence says which
+        vector the rule turns."""
         vec = sign * 2.0 * omega_k * v_r * perp(u) / ka.per_mm
         if np.hypot(*vec) == 0:
             return frm
@@ -730,24 +734,36 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
         ak = _written(abs(2 * omega_k * v_r), vec)
         sense = ("counter-clockwise", "против часовой стрелки") if w > 0 else (
             "clockwise", "по часовой стрелке")
-        what = f"aᵏ = 2·|ω{link}|·{rel} = 2·{plain(abs(w), 4)}·{plain(vr, 4)} = {plain(ak, 4)}"
-        rev_en = rev_ru = ""
-        if reverse[0]:
-            rev_en = f" ({rel} = −{reverse[0]}: the vector {reverse[1]} of the velocity plan)"
-            rev_ru = f" ({rel} = −{reverse[0]}: вектор {reverse[1]} плана скоростей)"
+        shown = reverse[0] or rel  # the sheets' name of the relative velocity (its magnitude)
+        what = (f"aᵏ = 2·|ω{link}|·{shown} = 2·{plain(abs(w), 4)}·{plain(vr, 4)} = "
+                f"{plain(ak, 4)}")
         if w == 0:
-            return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
+            return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{shown}",
                         f"Coriolis acceleration {what} m/s²: ω{link} = 0, no Coriolis "
                         "acceleration in this position",
                         f"Ускорение Кориолиса {what} м/с²: ω{link} = 0, ускорения Кориолиса "
                         "в этом положении нет")
-        return _lay(b, name, frm, vec, "coriolis", f"aᵏ_{name[2:]} = 2·ω{link}·{rel}",
+        eq = f"aᵏ_{name[2:]} = 2·ω{link}·{shown}"
+        if reverse[0]:  # the sheets read the opposite segment: say which vector is turned
+            return _lay(b, name, frm, vec, "coriolis", eq,
+                        f"Coriolis acceleration {what} m/s² (ω{link} {sense[0]}); its "
+                        f"direction — the rule: the relative velocity turned by 90° in the "
+                        f"sense of ω{link}. Laid from {frm} is aᵏ_{name[2:]}: the rule turns "
+                        f"{rel} = −{shown} (the vector {reverse[1]} of the velocity plan, "
+                        f"opposite to the segment {shown} is read on) by 90° {sense[0]}",
+                        f"Ускорение Кориолиса {what} м/с² (ω{link} {sense[1]}); направление — "
+                        f"правило: вектор относительной скорости, повёрнутый на 90° в сторону "
+                        f"вращения ω{link}. От {frm} откладывается aᵏ_{name[2:]}: по правилу "
+                        f"поворачивается {rel} = −{shown} (вектор {reverse[1]} плана "
+                        f"скоростей, противоположный отрезку, на котором прочитана {shown}) — "
+                        f"на 90° {sense[1]}")
+        return _lay(b, name, frm, vec, "coriolis", eq,
                     f"Coriolis acceleration {what} m/s² (ω{link} {sense[0]}); its direction: "
-                    f"the relative velocity {rel} turned by 90° in the sense of ω{link}"
-                    f"{rev_en}, i.e. {sense[0]}",
+                    f"the relative velocity {rel} turned by 90° in the sense of ω{link}, "
+                    f"i.e. {sense[0]}",
                     f"Ускорение Кориолиса {what} м/с² (ω{link} {sense[1]}); направление — "
                     f"правило: вектор относительной скорости {rel}, повёрнутый на 90° в "
-                    f"сторону вращения ω{link}{rev_ru}, то есть {sense[1]}")
+                    f"сторону вращения ω{link}, то есть {sense[1]}")
 
     S = vplan.sliding
     for dy in mech.dyads:
@@ -797,7 +813,9 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
             n1 = normal(pc, A, C, j, length_m(C, A))
             kk = coriolis_from(pa, f"k_{A}{j}", W[j], S[sk], u, j, f"v_{A}{j}{A}", sign=-1.0,
                                reverse=(f"v_{A}{A}{j}", f"{pa.lower()}→{pa.lower()}{j}"))
-            eq = f"a_{A}{j} = a_{C} + aⁿ_{A}{C} + aτ_{A}{C} = a_{A} + aᵏ_{A}{j}{A} + aʳ_{A}{j}{A}"
+            # the Coriolis vector laid from a is aᵏ_A3 (of A3 relative to A); the relative one
+            # is the sheets' aʳ_AA3 (the segment a3→k), hence its minus
+            eq = f"a_{A}{j} = a_{C} + aⁿ_{A}{C} + aτ_{A}{C} = a_{A} + aᵏ_{A}{j} − aʳ_{A}{A}{j}"
             _close_two_lines(b, eq, a3, b.points[n1], perp(P[A] - P[C]), f"⟂{C}{A} through {n1}",
                              b.points[kk], u, f"∥ slot through {kk}")
             _result(b, eq, [("π" + a3, "π", a3, "absolute", f"a_{A}{j}"),

@@ -139,7 +139,9 @@ def _step_points(plan: Plan, step: Step) -> list[str]:
 
 
 def _terms_of(side: str) -> list[str]:
-    return [t.strip() for t in side.split("+") if t.strip()]
+    """The terms of one side of an equation, without their signs (``a_A + aᵏ_A3 − aʳ_AA3``
+    → a_A, aᵏ_A3, aʳ_AA3: a term with a minus is the sheets' vector of the opposite sense)."""
+    return [t.strip() for t in re.split(r"\s[+−]\s", side) if t.strip()]
 
 
 def _is_unknown(term: str, kind: str) -> bool:
@@ -189,9 +191,11 @@ def _laid_term(mech, plan: Plan, step: Step, r: Result) -> Term:
     elif q.startswith("aⁿ"):
         tip, base = _POINT.findall(q.split("_", 1)[1])[:2]
         direction = f"∥ {tip}{base}: {tip} → {base}"
-    elif q.startswith("aᵏ"):  # aᵏ_X = 2·ω3·v_AA3: the relative velocity turned as ω3 turns
+    elif q.startswith("aᵏ"):  # aᵏ_X = 2·ω3·v_r: the relative velocity turned as ω3 turns
         m = re.search(r"2·ω(\w+)·(v_\w+)", step.equation)
-        direction = f"{m[2]} ↻ 90° ω{m[1]}" if m else "v_r ↻ 90°, ω"
+        # a slotted link's aᵏ_A3 turns v_A3A = −v_AA3 (the sheets read v_AA3 on a3→a)
+        rel = f"−{m[2]}" if m and f"= −{m[2]}" in step.text else m[2] if m else "v_r"
+        direction = f"{rel} ↻ 90° ω{m[1]}" if m else "v_r ↻ 90°, ω"
     else:
         direction = f"∥ {cr.pin}{cr.pivot}: {cr.pin} → {cr.pivot}"
     return Term(q, direction, f"{expr} = {num(shown(r))} {r.unit}")

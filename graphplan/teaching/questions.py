@@ -4,8 +4,9 @@ From a step's own data (nothing is solved again):
 
 * a derived ω or ε (a step's note ``ω3 = … , clockwise``): which way does the link turn?
 * a normal acceleration ``aⁿ_BA = ω2²·l_BA``: which way does it point (from B toward A)?
-* a Coriolis acceleration ``aᵏ_A3 = 2·ω3·v_AA3``: where does it point (v_AA3 turned by 90°
-  in the sense of ω3)?
+* a Coriolis acceleration ``aᵏ_A3 = 2·ω3·v_AA3``: where does the vector laid point (the
+  relative velocity turned by 90° in the sense of ω3 — for a slotted link's A3 that is
+  v_A3A = −v_AA3, and turning v_AA3 itself is the tempting wrong answer)?
 
 Each question is ``(prompt, options, correct)`` in one language; the options are put in
 an order that depends on the step, so the right one is not always first.
@@ -73,14 +74,22 @@ def questions(step: LessonStep, lang: str) -> tuple[Question, ...]:
     m = re.fullmatch(r"aᵏ_\w+ = 2·ω(\w+)·(v_\w+)", step.equation)
     if m and f"ω{m[1]} = 0" not in step.text["en"]:
         link, rel = m[1], m[2]
+        # a slotted link's aᵏ_A3 = 2·ω3·v_AA3 is laid along v_A3A = −v_AA3 turned: its
+        # step says so («v_A3A = −v_AA3»); the tempting answer turns v_AA3 itself
+        turned = f"−{rel}" if f"= −{rel}" in step.text["en"] else rel
+        other = rel if turned != rel else None
         if lang == "ru":
-            prompt = "Куда направлено ускорение Кориолиса?"
-            right = f"{rel}, повёрнутая на 90° в сторону вращения ω{link}"
-            wrong = [f"{rel}, повёрнутая на 90° против вращения ω{link}", f"∥ {rel}"]
+            prompt = "Куда направлено ускорение Кориолиса, отложенное в этом шаге?"
+            right = f"{turned}, повёрнутая на 90° в сторону вращения ω{link}"
+            wrong = [f"{turned}, повёрнутая на 90° против вращения ω{link}", f"∥ {rel}"]
+            if other:
+                wrong[1] = f"{other}, повёрнутая на 90° в сторону вращения ω{link}"
         else:
-            prompt = "Where does the Coriolis acceleration point?"
-            right = f"{rel} turned by 90° in the sense of ω{link}"
-            wrong = [f"{rel} turned by 90° against ω{link}", f"∥ {rel}"]
+            prompt = "Where does the Coriolis acceleration laid in this step point?"
+            right = f"{turned} turned by 90° in the sense of ω{link}"
+            wrong = [f"{turned} turned by 90° against ω{link}", f"∥ {rel}"]
+            if other:
+                wrong[1] = f"{other} turned by 90° in the sense of ω{link}"
         opts, k = _ordered(step, right, wrong)
         out.append(Question(prompt, opts, k))
     return tuple(out)
