@@ -45,3 +45,26 @@ def solved():
         return projects[key]
 
     return get
+
+
+@pytest.fixture(scope="session")
+def drawn(solved):
+    """``drawn(name_or_path, n, lang="ru", fmt=None)`` → sheet ``n`` (1, 2 or 3) of an
+    example, on the variant's format or on ``fmt`` ("A1", "A2", "A3"), drawn once for the
+    whole test session (kept as a stage of the example's :func:`solved` project) and shared
+    by every test that asks for the same sheet."""
+
+    def get(example, n: int, lang: str = "ru", fmt: str | None = None):
+        project = solved(example)
+
+        def draw():
+            from graphplan.drawing import dynamics_sheet, kinematics_sheet, kinetostatics_sheet
+            from graphplan.paper import Page
+
+            kw = {"page": Page(fmt)} if fmt else {}
+            return (kinematics_sheet, kinetostatics_sheet, dynamics_sheet)[n - 1](
+                project, lang=lang, **kw)
+
+        return project.stage(("tests: sheet", n, lang, fmt), draw)
+
+    return get

@@ -15,7 +15,6 @@ import sys
 import xml.etree.ElementTree as ET
 from collections import Counter
 from dataclasses import dataclass
-from functools import cache
 
 import numpy as np
 import pytest
@@ -90,36 +89,45 @@ def synthetic_sheet() -> Sheet:
     return Sheet(Page("A1"), items, tb)
 
 
-@cache
-def sheet(name: str) -> Sheet:
-    """"press-1", "press-2", "shaper-1", "shaper-2" or "synthetic"."""
-    if name == "synthetic":
-        return synthetic_sheet()
-    from graphplan.drawing import kinematics_sheet, kinetostatics_sheet
+class Exports:
+    """The sheets under test and their exports, each made once for this module (the ``ex``
+    fixture): ``"press-1"``, ``"press-2"``, ``"shaper-1"``, ``"shaper-2"`` — an example's
+    sheet, drawn once for the session (``drawn``, tests/conftest.py) — or ``"synthetic"``."""
 
-    example, number = name.split("-")
-    return (kinematics_sheet if number == "1" else kinetostatics_sheet)(_analysis(example))
+    def __init__(self, drawn):
+        self._drawn = drawn
+        self._made: dict = {}
+
+    def _once(self, key, make):
+        if key not in self._made:
+            self._made[key] = make()
+        return self._made[key]
+
+    def sheet(self, name: str) -> Sheet:
+        if name == "synthetic":
+            return self._once(name, synthetic_sheet)
+        example, number = name.split("-")
+        return self._drawn(example, int(number))
+
+    def svg(self, name: str) -> str:
+        return self._once(("svg", name), lambda: render_svg(self.sheet(name)))
+
+    def dxf(self, name: str):
+        """The DXF of the sheet, written to bytes and read back."""
+        return self._once(("dxf", name), lambda: ezdxf.read(io.StringIO(
+            dxf_mod.dxf_bytes(self.sheet(name)).decode("utf-8"))))
+
+    def layers(self, name: str) -> dict[str, SvgLayer]:
+        return self._once(("layers", name), lambda: svg_layers(self.svg(name)))
+
+    def pdf(self, name: str):
+        return self._once(("pdf", name), lambda: pypdf.PdfReader(io.BytesIO(
+            pdf_bytes(self.sheet(name), self.svg(name)))))
 
 
-@cache
-def _analysis(example: str):
-    from graphplan.files import bundled_example
-    from graphplan.model import load
-    from graphplan.project import analyze
-
-    return analyze(load(bundled_example(example)))
-
-
-@cache
-def svg_text(name: str) -> str:
-    return render_svg(sheet(name))
-
-
-@cache
-def dxf_doc(name: str):
-    """The DXF of the sheet, written to bytes and read back."""
-    data = dxf_mod.dxf_bytes(sheet(name))
-    return ezdxf.read(io.StringIO(data.decode("utf-8")))
+@pytest.fixture(scope="module")
+def ex(drawn) -> Exports:
+    return Exports(drawn)
 
 
 SHEETS = ["press-1", "press-2", "shaper-1", "shaper-2", "synthetic"]
@@ -150,9 +158,9 @@ def _points(text):
     return list(zip(v[0::2], v[1::2], strict=True))
 
 
-@cache
-def svg_layers(name: str) -> dict[str, SvgLayer]:
-    root = ET.fromstring(svg_text(name))
+def svg_layers(svg_text: str) -> dict[str, SvgLayer]:
+    """An SVG's layers, parsed as XML."""
+    root = ET.fromstring(svg_text)
     out = {}
     for g in root.findall(f"{SVG}g"):
         layer = g.get("id").removeprefix("layer-")
@@ -220,8 +228,8 @@ def entities(doc, layer=None, kind=None):
 # ----------------------------------------------------------------------- DXF
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_reads_back_and_audits_clean(name):
-    doc = dxf_doc(name)
+def test_dxf_reads_back_and_audits_clean(ex, name):
+    doc = ex.dxf(name)
     auditor = doc.audit()
     assert not auditor.has_errors, [str(e.message) for e in auditor.errors]
     assert not auditor.has_fixes, [str(e.message) for e in auditor.fixes]
@@ -232,10 +240,10 @@ def test_dxf_reads_back_and_audits_clean(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_extents_are_the_sheet(name):
+def test_dxf_extents_are_the_sheet(ex, name):
     from ezdxf import bbox
 
-    ext = bbox.extents(dxf_doc(name).modelspace())
+    ext = bbox.extents(ex.dxf(name).modelspace())
     assert ext.extmin.x == pytest.approx(0.0, abs=1e-9)
     assert ext.extmin.y == pytest.approx(0.0, abs=1e-9)
     assert ext.extmax.x == pytest.approx(A1[0], abs=1e-9)
@@ -243,9 +251,9 @@ def test_dxf_extents_are_the_sheet(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_layers_are_the_sheets_layers_and_hold_their_content(name):
-    doc = dxf_doc(name)
-    svg = svg_layers(name)
+def test_dxf_layers_are_the_sheets_layers_and_hold_their_content(ex, name):
+    doc = ex.dxf(name)
+    svg = ex.layers(name)
     for layer in LAYERS:
         assert layer in doc.layers
         assert doc.layers.get(layer).description  # says what the layer holds
@@ -267,9 +275,9 @@ def test_dxf_layers_are_the_sheets_layers_and_hold_their_content(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_entity_counts_follow_the_svg(name):
-    doc = dxf_doc(name)
-    for layer, d in svg_layers(name).items():
+def test_dxf_entity_counts_follow_the_svg(ex, name):
+    doc = ex.dxf(name)
+    for layer, d in ex.layers(name).items():
         count = Counter(e.dxftype() for e in entities(doc, layer))
         filled = sum(1 for *_, fill in d.circles if fill not in ("none", "white")) + sum(
             1 for _, closed, _, fill in d.polys if closed and fill not in ("none", "white"))
@@ -281,7 +289,7 @@ def test_dxf_entity_counts_follow_the_svg(name):
         assert count["HATCH"] == len(d.heads) + filled, layer
     # each vector's shaft and head are one group
     groups = [g for _, g in doc.groups]
-    assert len(groups) == sum(d.arrows for d in svg_layers(name).values())
+    assert len(groups) == sum(d.arrows for d in ex.layers(name).values())
     assert all(sorted(e.dxftype() for e in g) == ["HATCH", "LINE"] for g in groups)
 
 
@@ -295,11 +303,11 @@ def _match(svg_segs, dxf_segs):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_lines_are_the_svg_lines_flipped(name):
+def test_dxf_lines_are_the_svg_lines_flipped(ex, name):
     """Every line: same length to 0.01 mm, same place with y turned up, same weight."""
-    doc = dxf_doc(name)
+    doc = ex.dxf(name)
     main_checked = 0
-    for layer, d in svg_layers(name).items():
+    for layer, d in ex.layers(name).items():
         dxf_lines = entities(doc, layer, "LINE")
         segs = [(*flip(x1, y1), *flip(x2, y2)) for x1, y1, x2, y2, *_ in d.lines]
         segs += [(*flip(x1, y1), *flip(x2, y2)) for x1, y1, x2, y2 in d.hatch_segments]
@@ -327,9 +335,9 @@ def test_dxf_lines_are_the_svg_lines_flipped(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_polylines_circles_and_arcs_are_in_place(name):
-    doc = dxf_doc(name)
-    for layer, d in svg_layers(name).items():
+def test_dxf_polylines_circles_and_arcs_are_in_place(ex, name):
+    doc = ex.dxf(name)
+    for layer, d in ex.layers(name).items():
         dxf_polys = entities(doc, layer, "LWPOLYLINE")
         assert len(dxf_polys) == len(d.polys)
         for pts, closed, width, _ in d.polys:  # each SVG polyline has its DXF twin
@@ -353,9 +361,9 @@ def test_dxf_polylines_circles_and_arcs_are_in_place(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_texts_are_the_svg_texts_with_the_gost_style(name):
-    doc = dxf_doc(name)
-    for layer, d in svg_layers(name).items():
+def test_dxf_texts_are_the_svg_texts_with_the_gost_style(ex, name):
+    doc = ex.dxf(name)
+    for layer, d in ex.layers(name).items():
         got = []
         for e in entities(doc, layer, "TEXT"):
             anchor = e.dxf.insert if e.dxf.halign == 0 else e.dxf.align_point
@@ -372,9 +380,9 @@ def test_dxf_texts_are_the_svg_texts_with_the_gost_style(name):
 
 
 @pytest.mark.parametrize("name", SHEETS)
-def test_dxf_line_types_are_the_gost_dash_patterns(name):
-    doc = dxf_doc(name)
-    for layer, d in svg_layers(name).items():
+def test_dxf_line_types_are_the_gost_dash_patterns(ex, name):
+    doc = ex.dxf(name)
+    for layer, d in ex.layers(name).items():
         got = Counter()
         for e in entities(doc, layer):
             lt = e.dxf.get("linetype", "BYLAYER")
@@ -388,8 +396,8 @@ def test_dxf_line_types_are_the_gost_dash_patterns(name):
     assert doc.header["$LTSCALE"] == 1.0
 
 
-def test_synthetic_sheet_uses_every_gost_line_type_and_style():
-    doc = dxf_doc("synthetic")
+def test_synthetic_sheet_uses_every_gost_line_type_and_style(ex):
+    doc = ex.dxf("synthetic")
     by_id = {}
     for e in doc.modelspace():
         if e.has_xdata(dxf_mod.APPID):
@@ -417,8 +425,8 @@ def test_synthetic_sheet_uses_every_gost_line_type_and_style():
 
 
 @pytest.mark.parametrize("name", ["press-1", "synthetic"])
-def test_dxf_paper_space_plots_the_sheet_at_one_to_one(name):
-    doc = dxf_doc(name)
+def test_dxf_paper_space_plots_the_sheet_at_one_to_one(ex, name):
+    doc = ex.dxf(name)
     layout = doc.layouts.get("A1")
     assert (layout.dxf.paper_width, layout.dxf.paper_height) == A1
     vp = [e for e in layout if e.dxftype() == "VIEWPORT" and e.dxf.id > 1]
@@ -444,21 +452,16 @@ def test_other_formats_keep_their_true_size():
         (420, 297), abs=0.1)
 
 
-def test_dxf_is_deterministic():
-    s = sheet("press-2")
+def test_dxf_is_deterministic(ex):
+    s = ex.sheet("press-2")
     assert dxf_mod.dxf_bytes(s) == dxf_mod.dxf_bytes(s)
 
 
 # ----------------------------------------------------------------------- PDF
 
-@cache
-def pdf_reader(name):
-    return pypdf.PdfReader(io.BytesIO(pdf_bytes(sheet(name), svg_text(name))))
-
-
 @pytest.mark.parametrize("name", REAL)
-def test_pdf_is_one_page_at_true_size(name):
-    reader = pdf_reader(name)
+def test_pdf_is_one_page_at_true_size(ex, name):
+    reader = ex.pdf(name)
     assert len(reader.pages) == 1
     box = reader.pages[0].mediabox
     assert float(box.width) * 25.4 / 72 == pytest.approx(A1[0], abs=0.1)
@@ -477,20 +480,20 @@ def _fonts(page):
 
 
 @pytest.mark.parametrize("name", REAL)
-def test_pdf_fonts_are_embedded_and_the_text_is_text(name):
-    page = pdf_reader(name).pages[0]
+def test_pdf_fonts_are_embedded_and_the_text_is_text(ex, name):
+    page = ex.pdf(name).pages[0]
     fonts = _fonts(page)
     assert fonts and all(embedded for _, embedded in fonts), fonts
     assert any(base.split("+")[-1] == "osifont" for base, _ in fonts), fonts
     text = page.extract_text()
-    assert sheet(name).title_block.designation in text
+    assert ex.sheet(name).title_block.designation in text
     assert "Масштаб" in text  # a printed label of the title block
     xobjects = page["/Resources"].get("/XObject", {})
     assert not [x for x in xobjects.values() if x.get_object().get("/Subtype") == "/Image"]
 
 
-def test_pdf_is_deterministic_and_titled():
-    s = sheet("press-2")
+def test_pdf_is_deterministic_and_titled(ex):
+    s = ex.sheet("press-2")
     first = pdf_bytes(s)
     assert first == pdf_bytes(s)
     meta = pypdf.PdfReader(io.BytesIO(first)).metadata
@@ -501,13 +504,13 @@ def test_pdf_is_deterministic_and_titled():
 # ----------------------------------------------------------------------- PNG
 
 @pytest.mark.parametrize("name", REAL)
-def test_png_has_the_sheets_aspect_and_is_not_blank(name):
+def test_png_has_the_sheets_aspect_and_is_not_blank(ex, name):
     from PIL import Image
 
     dpi = 40
-    img = Image.open(io.BytesIO(png_bytes(sheet(name), dpi, svg_text(name)))).convert("L")
+    img = Image.open(io.BytesIO(png_bytes(ex.sheet(name), dpi, ex.svg(name)))).convert("L")
     # 841 mm at 40 dpi: 841/25.4·40 = 1324.4 → 1324 px; 594 mm → 935.4 → 935 px
-    assert img.size == png_size(sheet(name), dpi) == (1324, 935)
+    assert img.size == png_size(ex.sheet(name), dpi) == (1324, 935)
     assert abs(img.size[0] / img.size[1] - A1[0] / A1[1]) <= 1 / img.size[1]
     px = np.asarray(img)
     dark = (px < 128).mean()
@@ -517,13 +520,13 @@ def test_png_has_the_sheets_aspect_and_is_not_blank(name):
     assert px[0, 0] > 128 or px[5, 5] > 200  # white paper in the margin
 
 
-def test_png_dpi_is_checked():
+def test_png_dpi_is_checked(ex):
     with pytest.raises(InputError, match="dpi"):
-        png_bytes(sheet("synthetic"), 0)
+        png_bytes(ex.sheet("synthetic"), 0)
     with pytest.raises(InputError, match="dpi"):
-        png_bytes(sheet("synthetic"), float("nan"))
+        png_bytes(ex.sheet("synthetic"), float("nan"))
     with pytest.raises(InputError, match="px"):
-        png_bytes(sheet("synthetic"), 1000)
+        png_bytes(ex.sheet("synthetic"), 1000)
 
 
 # ------------------------------------------------------- formats and writing
@@ -538,8 +541,8 @@ def test_parse_formats():
         assert "\n" not in str(err.value) and "svg, dxf, pdf, png" in str(err.value)
 
 
-def test_write_exports_writes_every_format_atomically(tmp_path):
-    sheets = {"sheet1": sheet("synthetic")}
+def test_write_exports_writes_every_format_atomically(ex, tmp_path):
+    sheets = {"sheet1": ex.sheet("synthetic")}
     written = exports.write_exports(sheets, tmp_path / "out", "svg,dxf,pdf,png", dpi=20)
     names = [p.name for p in written]
     assert names == ["sheet1.svg", "sheet1.dxf", "sheet1.pdf", "sheet1.png"]
@@ -565,11 +568,11 @@ def test_write_exports_writes_every_format_atomically(tmp_path):
     ("resvg_py", "png", lambda s: png_bytes(s, 10)),
     ("ezdxf", "dxf", lambda s: exports.sheet_files({"s": s}, ["svg", "dxf"])),
 ])
-def test_a_missing_extra_is_one_line_naming_it(monkeypatch, module, fmt, call):
+def test_a_missing_extra_is_one_line_naming_it(ex, monkeypatch, module, fmt, call):
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     monkeypatch.setitem(sys.modules, module, None)  # `import module` now fails
     with pytest.raises(extra.MissingExtraError) as err:
-        call(sheet("synthetic"))
+        call(ex.sheet("synthetic"))
     msg = str(err.value)
     assert isinstance(err.value, GraphplanError) and isinstance(err.value, ImportError)
     assert "\n" not in msg
@@ -603,12 +606,12 @@ def test_engines_are_chosen_by_name_or_environment(monkeypatch):
     assert "\n" not in str(err.value)
 
 
-def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(monkeypatch, tmp_path):
+def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(ex, monkeypatch, tmp_path):
     # the same bytes whatever the machine has: typst is given the bundled fonts only
     from graphplan.drawing import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
-    s, text = sheet("press-1"), svg_text("press-1")
+    s, text = ex.sheet("press-1"), ex.svg("press-1")
     seen = pdf_bytes(s, text)
     monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(tmp_path / "nowhere"))
     assert pdf_bytes(s, text) == seen
@@ -616,11 +619,11 @@ def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(monkeypatch, 
     assert names <= {"osifont", "DejaVuSans", "DejaVuSansMono"}, names
 
 
-def test_the_png_is_the_same_pixels_without_system_fonts(monkeypatch, tmp_path):
+def test_the_png_is_the_same_pixels_without_system_fonts(ex, monkeypatch, tmp_path):
     from graphplan.drawing import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
-    text = svg_text("press-2")
+    text = ex.svg("press-2")
     seen = svg_to_png_bytes(text, 15)
     monkeypatch.setenv(fonts_mod.FONT_PATH_ENV, str(tmp_path / "nowhere"))
     assert svg_to_png_bytes(text, 15) == seen
@@ -633,9 +636,9 @@ def _cairo_or_skip():
         pytest.skip(str(exc))
 
 
-def test_the_cairo_engine_stays_an_option():
+def test_the_cairo_engine_stays_an_option(ex):
     _cairo_or_skip()
-    s, text = sheet("press-2"), svg_text("press-2")
+    s, text = ex.sheet("press-2"), ex.svg("press-2")
     reader = pypdf.PdfReader(io.BytesIO(pdf_bytes(s, text, engine="cairo")))
     box = reader.pages[0].mediabox
     assert float(box.width) * 25.4 / 72 == pytest.approx(A1[0], abs=0.1)
@@ -643,7 +646,7 @@ def test_the_cairo_engine_stays_an_option():
     assert png_bytes(s, 20, text, engine="cairo").startswith(b"\x89PNG")
 
 
-def test_a_character_no_bundled_font_draws_comes_from_a_system_font(monkeypatch, tmp_path):
+def test_a_character_no_bundled_font_draws_comes_from_a_system_font(ex, monkeypatch, tmp_path):
     # '⌢' (U+2322) is in none of osifont, DejaVu Sans, DejaVu Sans Mono; matplotlib's
     # STIX font has it. Put that font in the only folder searched for system fonts.
     import shutil
@@ -670,4 +673,4 @@ def test_a_character_no_bundled_font_draws_comes_from_a_system_font(monkeypatch,
     assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(text)) == ()
     assert svg_to_png_bytes(text, 20) != with_stix  # the arc is drawn only with STIX
     # a sheet of Russian and English text needs no system font at all
-    assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(svg_text("press-1"))) == ()
+    assert fonts_mod.fallback_font_files(fonts_mod.text_of_svg(ex.svg("press-1"))) == ()

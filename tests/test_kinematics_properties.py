@@ -27,7 +27,6 @@ Tolerances (see ``FD_REL`` and ``EXACT_REL``).
 
 from __future__ import annotations
 
-import functools
 import itertools
 import math
 from dataclasses import dataclass
@@ -439,12 +438,20 @@ def sweep_phi(case: Case, n: int) -> np.ndarray:
     return np.radians(np.linspace(lo, hi, n))
 
 
-@functools.cache
-def solved(case_id: str):
-    """Mechanism, solutions at φ, φ ± ω1·dt, and dt (cached per case)."""
-    case = CASES[IDS.index(case_id)]
-    m = g.loads(case.toml, source=f"{case.id}.toml")
-    return (m, *fd_solutions(m, case.omega, sweep_phi(case, 48)))
+@pytest.fixture(scope="module")
+def swept():
+    """``swept(case_id)`` → the mechanism, its solutions at φ and φ ± ω1·dt, and dt: each
+    case solved once for this module."""
+    made: dict[str, tuple] = {}
+
+    def get(case_id: str) -> tuple:
+        if case_id not in made:
+            case = CASES[IDS.index(case_id)]
+            m = g.loads(case.toml, source=f"{case.id}.toml")
+            made[case_id] = (m, *fd_solutions(m, case.omega, sweep_phi(case, 48)))
+        return made[case_id]
+
+    return get
 
 
 def fd_solutions(m, w, phi):
@@ -501,11 +508,11 @@ def sliding_coordinate(m, k, key, x, carrier):
 # --------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("case_id", IDS)
-def test_everything_is_solved(case_id):
+def test_everything_is_solved(swept, case_id):
     """Every point has a position, velocity and acceleration; every link θ, ω, ε; every
     sliding pair its speed, acceleration and Coriolis term; the crank turns at ω1."""
     case = CASES[IDS.index(case_id)]
-    m, k, _, _, _ = solved(case_id)
+    m, k, _, _, _ = swept(case_id)
     names = set(k.pos.points)
     for link in (m.frame_link, *m.moving_links):
         assert set(m.points_of(link)) <= names
@@ -525,9 +532,9 @@ def test_everything_is_solved(case_id):
 
 
 @pytest.mark.parametrize("case_id", IDS)
-def test_velocity_is_time_derivative_of_position(case_id):
+def test_velocity_is_time_derivative_of_position(swept, case_id):
     case = CASES[IDS.index(case_id)]
-    m, k, kp, km, dt = solved(case_id)
+    m, k, kp, km, dt = swept(case_id)
     r, w = case.r, abs(case.omega)
     for p in k.pos.points:
         fd = (kp.pos.points[p] - km.pos.points[p]) / (2 * dt)
@@ -542,9 +549,9 @@ def test_velocity_is_time_derivative_of_position(case_id):
 
 
 @pytest.mark.parametrize("case_id", IDS)
-def test_acceleration_is_time_derivative_of_velocity(case_id):
+def test_acceleration_is_time_derivative_of_velocity(swept, case_id):
     case = CASES[IDS.index(case_id)]
-    m, k, kp, km, dt = solved(case_id)
+    m, k, kp, km, dt = swept(case_id)
     r, w = case.r, abs(case.omega)
     for p in k.pos.points:
         fd = (kp.vel.points[p] - km.vel.points[p]) / (2 * dt)
@@ -601,9 +608,9 @@ def _check_rigid(m, k, r, w):
 
 
 @pytest.mark.parametrize("case_id", IDS)
-def test_rigid_body_velocity_and_acceleration(case_id):
+def test_rigid_body_velocity_and_acceleration(swept, case_id):
     case = CASES[IDS.index(case_id)]
-    m, k, _, _, _ = solved(case_id)
+    m, k, _, _, _ = swept(case_id)
     _check_rigid(m, k, case.r, abs(case.omega))
 
 
@@ -662,7 +669,7 @@ def test_branch_holds_and_motion_is_continuous(case_id):
 
 
 @pytest.mark.parametrize("case_id", IDS)
-def test_sliding_pairs(case_id):
+def test_sliding_pairs(swept, case_id):
     """For each slider X of link j on a guide (unit u) of link k, with Q fixed on k:
 
     * v_X = v_Q + ω_k k×(X − Q) + v_r u                       (composition of velocities)
@@ -675,7 +682,7 @@ def test_sliding_pairs(case_id):
     * on a frame guide: v_r = v_X·u, a_r = a_X·u, no Coriolis term.
     """
     case = CASES[IDS.index(case_id)]
-    m, k, _, _, _ = solved(case_id)
+    m, k, _, _, _ = swept(case_id)
     r, w = case.r, abs(case.omega)
     for key, x, carrier in sliding_pairs(m):
         slider = key.split("/")[0]

@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import re
 import statistics
-from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -36,7 +35,7 @@ from norm_measures import (
     plan_longest,
 )
 
-from graphplan.drawing import Text, iter_leaves, kinematics_sheet, kinetostatics_sheet, text_box
+from graphplan.drawing import Text, iter_leaves, text_box
 from graphplan.model import load
 from graphplan.project import analyze
 
@@ -60,30 +59,31 @@ def todo(request, name: str, n: int, check: str) -> None:
             f"issue 18 ({who}): {check} of sheet {n} of {name} not yet at its mark")))
 
 
-@cache
-def analysis(name: str):
-    return analyze(load(EXAMPLES_DIR / f"{name}.toml"))
+@pytest.fixture
+def analysis(solved):
+    """``analysis(name)`` → an example's project, the session's (tests/conftest.py)."""
+    return lambda name: solved(EXAMPLES_DIR / f"{name}.toml")
 
 
-@cache
-def sheet(name: str, n: int):
-    a = analysis(name)
-    if n == 1:
-        return kinematics_sheet(a)
-    if n == 2:
-        return kinetostatics_sheet(a)
-    from graphplan.drawing import dynamics_sheet
+@pytest.fixture
+def sheet(solved, drawn):
+    """``sheet(name, n)`` → sheet ``n`` of an example, drawn once for the session
+    (tests/conftest.py); a variant that gives no δ has no sheet 3: the test is skipped."""
 
-    if "delta" not in a.mech.settings.get("dynamics", {}):
-        pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
-    return dynamics_sheet(a)
+    def get(name: str, n: int):
+        path = EXAMPLES_DIR / f"{name}.toml"
+        if n == 3 and "delta" not in solved(path).mech.settings.get("dynamics", {}):
+            pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
+        return drawn(path, n)
+
+    return get
 
 
 # ------------------------------------------------------------------- tests
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(name):
+def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(analysis, sheet, name):
     a = analysis(name)
     moving = set(a.mech.moving_links)
     drawn = drawn_links(sheet(name, 1), "pp-")
@@ -92,7 +92,7 @@ def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(name):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(name):
+def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(analysis, sheet, name):
     a = analysis(name)
     moving = set(a.mech.moving_links)
     drawn = drawn_links(sheet(name, 2), "s2p")
@@ -102,7 +102,7 @@ def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(name):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_plans_are_large_enough_to_read(request, name):
+def test_plans_are_large_enough_to_read(sheet, request, name):
     todo(request, name, 1, "plans")
     longest = plan_longest(sheet(name, 1))
     assert longest
@@ -112,14 +112,14 @@ def test_plans_are_large_enough_to_read(request, name):
 
 @pytest.mark.parametrize("n", [1, 2, 3])
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_sheet_is_filled(request, name, n):
+def test_sheet_is_filled(sheet, request, name, n):
     todo(request, name, n, "filled")
     assert empty_share(sheet(name, n)) <= EMPTY_MAX
 
 
 @pytest.mark.parametrize("n", [1, 2, 3])
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_no_text_over_a_line_or_another_text(request, name, n):
+def test_no_text_over_a_line_or_another_text(sheet, request, name, n):
     todo(request, name, n, "overlaps")
     found = overlaps(sheet(name, n))
     assert found == [], f"{len(found)} overlaps, e.g. {found[:5]}"
@@ -128,7 +128,7 @@ def test_no_text_over_a_line_or_another_text(request, name, n):
 # ------------------------------------------------------- the named defects
 
 
-def test_a_crank_balanced_at_its_pivot_is_drawn():
+def test_a_crank_balanced_at_its_pivot_is_drawn(analysis, sheet):
     """fourbar's crank has its centre of mass at O: it is still drawn O–A on both sheets."""
     a = analysis("fourbar")
     assert a.mech.links[a.mech.crank.link].centre == a.mech.crank.pivot
@@ -139,7 +139,7 @@ def test_a_crank_balanced_at_its_pivot_is_drawn():
         assert ids, n
 
 
-def test_slotted_links_are_drawn_with_their_slot():
+def test_slotted_links_are_drawn_with_their_slot(analysis, sheet):
     """shaper_prp's rocker (only a pivot and a centre of mass) and scotch_yoke's yoke are
     drawn along their slots, long enough for the block in every position."""
     for name, link in (("shaper_prp", "3"), ("scotch_yoke", "3")):
@@ -155,7 +155,7 @@ def test_slotted_links_are_drawn_with_their_slot():
                 assert seg.distance(shapely.Point(corner)) < 4.0, (name, k)
 
 
-def test_the_main_position_is_drawn_over_the_others():
+def test_the_main_position_is_drawn_over_the_others(sheet):
     sh = sheet("press", 1)
     ids = [it.id for it in iter_leaves(sh.items) if it.id and re.match(r"pp-\d+-link-", it.id)]
     assert ids[-1].startswith("pp-0-")
@@ -178,7 +178,7 @@ def _renamed(tmp_path, name: str, mapping: dict[str, str]) -> Path:
     ("shaper", {"A": "P", "B": "K", "C": "N"}),   # P, and the letters of k and n
     ("press", {"A": "Pi", "B": "p"}),               # a lowercase p, a Pi
 ])
-def test_point_names_that_are_a_plans_letters_break_nothing(tmp_path, name, mapping):
+def test_point_names_that_are_a_plans_letters_break_nothing(analysis, tmp_path, name, mapping):
     import json
 
     from graphplan.outputs import project_files
@@ -194,7 +194,7 @@ def test_point_names_that_are_a_plans_letters_break_nothing(tmp_path, name, mapp
     assert np.allclose(got, want, rtol=1e-9, atol=1e-9)
 
 
-def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(monkeypatch):
+def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(analysis, monkeypatch):
     """Mур(φ) on sheet 2 is the curve of every load (the neglect rule of the positions' force
     plans made false steps of ~100 N·m on the press where it switched a load off) and it
     is closed: it ends at 360° on its first value."""
@@ -221,7 +221,7 @@ def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(monkeypat
     assert "все нагрузки" in s2.WORDS["ru"]["curve"]
 
 
-def test_sheets_count_only_on_the_first_sheet():
+def test_sheets_count_only_on_the_first_sheet(sheet):
     """GOST 2.104: graph 8 (Листов) is filled on the first sheet of a document only."""
     ids = {n: {it.id: it for it in iter_leaves(sheet("press", n).all_items()) if it.id}
            for n in (1, 2)}
@@ -230,7 +230,7 @@ def test_sheets_count_only_on_the_first_sheet():
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_sheet_1_carries_the_structural_analysis(name):
+def test_sheet_1_carries_the_structural_analysis(analysis, sheet, name):
     a = analysis(name)
     texts = {it.id: it.text for it in iter_leaves(sheet(name, 1).items)
              if isinstance(it, Text) and it.id and it.id.startswith("structure-")}
@@ -245,7 +245,7 @@ def test_sheet_1_carries_the_structural_analysis(name):
 
 @pytest.mark.parametrize("n", [1, 2])
 @pytest.mark.parametrize("name", ["press", "shaper"])
-def test_no_line_thinner_than_gost_thin_line(name, n):
+def test_no_line_thinner_than_gost_thin_line(sheet, name, n):
     """GOST 2.303: the thin line is S/3 … S/2 (S = 0.7 mm: at least 0.23 mm); the diagrams'
     node ordinates and pole rays were 0.15–0.175 mm grey."""
     from graphplan.drawing.sheet import S
@@ -262,7 +262,7 @@ A3_TODO: set[str] = set()
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_example_draws_on_a2_and_a3(request, tmp_path, name, fmt):
+def test_every_example_draws_on_a2_and_a3(analysis, request, tmp_path, name, fmt):
     """`graphplan sheets --page A2/A3` on every example (a scale the variant fixed for its
     own format is not forced on another; on a small format sheet 1 draws the velocity plans
     of as many positions as fit) with every moving link drawn."""
@@ -300,23 +300,28 @@ VARIANTS = {
 }
 
 
-@cache
-def variant_sheet(key: str):
-    import tempfile
+@pytest.fixture
+def variant_sheet(tmp_path_factory, solved, drawn):
+    """``variant_sheet(key)`` → the project and sheet 1 of a variant of :data:`VARIANTS`,
+    written once to the session's temporary folder and solved once (tests/conftest.py)."""
 
-    base, edits = VARIANTS[key]
-    text = (EXAMPLES_DIR / f"{base}.toml").read_text(encoding="utf-8")
-    for old, new in edits.items():
-        assert old in text, (key, old)
-        text = text.replace(old, new)
-    path = Path(tempfile.mkdtemp()) / f"{key}.toml"
-    path.write_text(text, encoding="utf-8")
-    a = analyze(load(path))
-    return a, kinematics_sheet(a)
+    def get(key: str):
+        path = tmp_path_factory.getbasetemp() / "norm_control_variants" / f"{key}.toml"
+        if not path.is_file():
+            base, edits = VARIANTS[key]
+            text = (EXAMPLES_DIR / f"{base}.toml").read_text(encoding="utf-8")
+            for old, new in edits.items():
+                assert old in text, (key, old)
+                text = text.replace(old, new)
+            path.parent.mkdir(exist_ok=True)
+            path.write_text(text, encoding="utf-8")
+        return solved(path), drawn(path, 1)
+
+    return get
 
 
 @pytest.mark.parametrize("key", sorted(VARIANTS))
-def test_sheet_1_of_an_unseen_variant_is_drawn_to_the_marks(key):
+def test_sheet_1_of_an_unseen_variant_is_drawn_to_the_marks(variant_sheet, key):
     a, sh = variant_sheet(key)
     drawn = drawn_links(sh, "pp-")
     for k in range(a.kin.n):
@@ -329,7 +334,7 @@ def test_sheet_1_of_an_unseen_variant_is_drawn_to_the_marks(key):
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_scales_print_without_powers_of_ten(name):
+def test_scales_print_without_powers_of_ten(analysis, sheet, name):
     """Kl, Kv, Ka and the diagrams' scales as a draftsman writes them: 0.005, not 5·10^-3."""
     texts = [it.text for it in iter_leaves(sheet(name, 1).all_items()) if isinstance(it, Text)]
     scales = [t for t in texts if re.match(r"^(План положений\s+)?K", t)]
@@ -342,20 +347,23 @@ def test_scales_print_without_powers_of_ten(name):
 PSI_READABLE = (20.0, 70.0)  #: ψmin and ψmax of the energy–mass diagram's tangents, degrees
 
 
-@cache
-def sheet3_on(name: str, fmt: str):
-    from graphplan.drawing import dynamics_sheet
-    from graphplan.paper import Page
+@pytest.fixture
+def sheet3_on(solved, drawn):
+    """``sheet3_on(name, fmt)`` → sheet 3 of an example on ``fmt``, drawn once for the
+    session (tests/conftest.py); a variant that gives no δ has no sheet 3: skipped."""
 
-    a = analysis(name)
-    if "delta" not in a.mech.settings.get("dynamics", {}):
-        pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
-    return dynamics_sheet(a, page=Page(fmt))
+    def get(name: str, fmt: str):
+        path = EXAMPLES_DIR / f"{name}.toml"
+        if "delta" not in solved(path).mech.settings.get("dynamics", {}):
+            pytest.skip(f"{name}: no sheet 3 (the variant gives no δ)")
+        return drawn(path, 3, fmt=fmt)
+
+    return get
 
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_sheet_3_on_a2_and_a3(name, fmt):
+def test_sheet_3_on_a2_and_a3(sheet3_on, analysis, name, fmt):
     """Sheet 3 on the format asked (issue 18: "A1, A2 and A3 work for every example"): every
     line and letter inside the frame and off the title block, no text over a line or a text,
     the tangents at tens of degrees at that format's own scales (the ones the sheet prints),
@@ -397,7 +405,7 @@ def test_sheet_3_on_a2_and_a3(name, fmt):
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", ["press", "shaper"])
-def test_flywheel_on_a2_and_a3_after_gost_2_307(name, fmt):
+def test_flywheel_on_a2_and_a3_after_gost_2_307(sheet3_on, analysis, name, fmt):
     """The flywheel at the GOST reduction the format allows: ⌀ outer, ⌀ inner and b in whole
     mm; a number wider than the space between its extension lines stands on the dimension
     line drawn on past the arrow (GOST 2.307), not across the extension lines."""

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import re
 import statistics
-from functools import cache
 from pathlib import Path
 
 import pytest
@@ -31,10 +30,6 @@ from norm_measures import (
     overlaps,
     plan_longest,
 )
-
-from graphplan.drawing import dynamics_sheet, kinematics_sheet, kinetostatics_sheet
-from graphplan.model import load
-from graphplan.project import analyze
 
 VARIANTS_DIR = Path(__file__).resolve().parent / "data" / "variants"
 VARIANTS = sorted(p.stem for p in VARIANTS_DIR.glob("*.toml"))
@@ -56,20 +51,24 @@ def todo(request, name: str, n: int, check: str) -> None:
             f"issue 18: {check} of sheet {n} of the variant {name} not yet at its mark")))
 
 
-@cache
-def analysis(name: str):
-    return analyze(load(VARIANTS_DIR / f"{name}.toml"))
+@pytest.fixture
+def analysis(solved):
+    """``analysis(name)`` → a variant's project, the session's (tests/conftest.py)."""
+    return lambda name: solved(VARIANTS_DIR / f"{name}.toml")
 
 
-@cache
-def sheet(name: str, n: int):
-    a = analysis(name)
-    if n == 1:
-        return kinematics_sheet(a)
-    if n == 2:
-        return kinetostatics_sheet(a)
-    assert "delta" in a.mech.settings.get("dynamics", {}), f"{name}: a variant without δ"
-    return dynamics_sheet(a)
+@pytest.fixture
+def sheet(solved, drawn):
+    """``sheet(name, n)`` → sheet ``n`` of a variant, drawn once for the session."""
+
+    def get(name: str, n: int):
+        path = VARIANTS_DIR / f"{name}.toml"
+        if n == 3:
+            assert "delta" in solved(path).mech.settings.get("dynamics", {}), (
+                f"{name}: a variant without δ")
+        return drawn(path, n)
+
+    return get
 
 
 def test_the_variants_are_there():
@@ -77,7 +76,7 @@ def test_the_variants_are_there():
 
 
 @pytest.mark.parametrize("name", VARIANTS)
-def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(name):
+def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(analysis, sheet, name):
     a = analysis(name)
     moving = set(a.mech.moving_links)
     drawn = drawn_links(sheet(name, 1), "pp-")
@@ -86,7 +85,7 @@ def test_every_moving_link_is_drawn_in_every_position_of_sheet_1(name):
 
 
 @pytest.mark.parametrize("name", VARIANTS)
-def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(name):
+def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(analysis, sheet, name):
     a = analysis(name)
     moving = set(a.mech.moving_links)
     drawn = drawn_links(sheet(name, 2), "s2p")
@@ -96,7 +95,7 @@ def test_every_moving_link_is_drawn_in_every_scheme_of_sheet_2(name):
 
 
 @pytest.mark.parametrize("name", VARIANTS)
-def test_plans_are_large_enough_to_read(request, name):
+def test_plans_are_large_enough_to_read(sheet, request, name):
     todo(request, name, 1, "plans")
     longest = plan_longest(sheet(name, 1))
     assert longest
@@ -106,7 +105,7 @@ def test_plans_are_large_enough_to_read(request, name):
 
 @pytest.mark.parametrize("n", [1, 2, 3])
 @pytest.mark.parametrize("name", VARIANTS)
-def test_no_text_over_a_line_or_another_text(request, name, n):
+def test_no_text_over_a_line_or_another_text(sheet, request, name, n):
     todo(request, name, n, "overlaps")
     found = overlaps(sheet(name, n))
     assert found == [], f"{len(found)} overlaps, e.g. {found[:5]}"
@@ -114,14 +113,14 @@ def test_no_text_over_a_line_or_another_text(request, name, n):
 
 @pytest.mark.parametrize("n", [1, 2, 3])
 @pytest.mark.parametrize("name", VARIANTS)
-def test_sheet_is_filled(request, name, n):
+def test_sheet_is_filled(sheet, request, name, n):
     todo(request, name, n, "filled")
     assert empty_share(sheet(name, n)) <= EMPTY_MAX
 
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", VARIANTS)
-def test_every_variant_draws_on_a2_and_a3(request, tmp_path, name, fmt):
+def test_every_variant_draws_on_a2_and_a3(analysis, request, tmp_path, name, fmt):
     """`graphplan sheets --page A2/A3`: sheets 1 and 2 on the format asked, every moving link
     drawn in position 0 of sheet 1 and in a scheme of sheet 2."""
     from graphplan.outputs import write_project

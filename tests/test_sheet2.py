@@ -13,18 +13,17 @@ from graphplan.project import analyze
 
 EXAMPLES = ["press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider"]
-_cache: dict = {}
 
 
-def built(name):
-    if name not in _cache:
-        a = analyze(load(bundled_example(name)))
-        _cache[name] = (a, kinetostatics_sheet(a))
-    return _cache[name]
+@pytest.fixture
+def built(solved, drawn):
+    """``built(name)`` → an example's project and its sheet 2, both the session's
+    (tests/conftest.py)."""
+    return lambda name: (solved(name), drawn(name, 2))
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_layout_has_no_problems(name):
+def test_layout_has_no_problems(built, name):
     _, sheet = built(name)
     assert check_layout(sheet) == []
 
@@ -42,7 +41,7 @@ def _table(sheet):
     return rows
 
 
-def test_press_sheet_analyses_the_seeds_working_positions_and_one_idle():
+def test_press_sheet_analyses_the_seeds_working_positions_and_one_idle(built):
     a, sheet = built("press")
     forces = solve_forces(a.mech, a.kin, compute_loads(a.mech, a.kin, a.cycle))
     labels = [a.kin.labels[k] for k in sheet2_positions(a.mech, a.kin, forces, a.cycle)]
@@ -68,7 +67,7 @@ def test_press_sheet_analyses_the_seeds_working_positions_and_one_idle():
     assert table["(2)"]["Kp, Н/мм"] == "4000"  # Kp = Q/ab = 420000/105 (force_plans)
 
 
-def test_dead_centre_extras_are_not_default_positions():
+def test_dead_centre_extras_are_not_default_positions(built):
     """The four-bar's extra position 1' is a dead centre (Mур ≈ 0 there): sheet 2 takes the
     position of the largest |Mур| instead, and the idle one of the largest |Mур|."""
     a, _ = built("fourbar")
@@ -92,7 +91,7 @@ def _parts(sheet) -> list[list[str]]:
 
 
 @pytest.mark.parametrize("fmt", ["A1", "A2", "A3"])
-def test_wide_table_is_split_not_cut(fmt):
+def test_wide_table_is_split_not_cut(built, fmt):
     """The shaper's table (3 + 7 reactions + 4 columns) is never cut: where it is wider than
     its place it is continued under its title with the position column repeated."""
     from graphplan.drawing import Page
@@ -110,7 +109,7 @@ def test_wide_table_is_split_not_cut(fmt):
     assert all(c.startswith("Продолжение таблицы") for c in conts)
 
 
-def test_arm_h21_is_drawn_at_the_schemes_scale():
+def test_arm_h21_is_drawn_at_the_schemes_scale(built):
     """The perpendicular from O to R21's line, on the scheme at Kl = 0.002 m/mm:
     h21 = 37.389 mm at Kl 0.001 is 18.69 mm on the scheme."""
     a, sheet = built("press")
@@ -122,7 +121,7 @@ def test_arm_h21_is_drawn_at_the_schemes_scale():
     assert math.dist(h.p0, h.p1) * kl == pytest.approx(0.037389, rel=1e-4)
 
 
-def test_moment_curve_is_embedded_and_unknown_positions_are_errors(tmp_path):
+def test_moment_curve_is_embedded_and_unknown_positions_are_errors(built, tmp_path):
     from graphplan.errors import InputError
 
     _, sheet = built("press")
@@ -146,15 +145,6 @@ from graphplan.drawing.sheet2 import q_curves, table_header  # noqa: E402
 
 EX_DIR = Path(__file__).resolve().parent.parent / "examples"
 ALL = sorted(p.stem for p in EX_DIR.glob("*.toml"))
-_analysed: dict = {}
-
-
-def analysed(name):
-    if name not in _analysed:
-        _analysed[name] = analyze(load(EX_DIR / f"{name}.toml"))
-    return _analysed[name]
-
-
 def _labels(sheet, prefix: str) -> set[str]:
     """Every name written by the texts whose id starts with ``prefix`` (merged labels
     "Rn12, R12" split)."""
@@ -163,7 +153,7 @@ def _labels(sheet, prefix: str) -> set[str]:
 
 
 @pytest.mark.parametrize("name", ["press", "shaper", "sixbar_press", "crusher"])
-def test_each_group_is_drawn_separately_with_all_its_loads(name):
+def test_each_group_is_drawn_separately_with_all_its_loads(solved, drawn, name):
     """Every Assur group of every analysed position has its own figure (its links, ids
     s2p<k>-link-<n>) carrying every load of its links (G, Pи, Q, Mи …), the reactions of
     the links taken away — a revolute pair's with its components Rτ, Rn — and the
@@ -171,8 +161,8 @@ def test_each_group_is_drawn_separately_with_all_its_loads(name):
     from graphplan.forces import reaction_name
     from graphplan.project import group_links
 
-    a = analysed(name)
-    sheet = kinetostatics_sheet(a)
+    a = solved(name)
+    sheet = drawn(name, 2)
     m = a.mech
     ids = {it.id for it in iter_leaves(sheet.items) if it.id}
     for k in a.sheet2.positions:
@@ -206,11 +196,11 @@ def test_each_group_is_drawn_separately_with_all_its_loads(name):
         assert {"Mур"} <= crank and any(t.startswith("R") for t in crank)
 
 
-def test_a_force_shorter_than_2_mm_is_written_with_its_value():
+def test_a_force_shorter_than_2_mm_is_written_with_its_value(solved, drawn):
     """The crusher's plans have weights and inertia forces under 2 mm long: each is named
     with a star on the plan and written under it with its value and «<2 мм»."""
-    a = analysed("crusher")
-    sheet = kinetostatics_sheet(a)
+    a = solved("crusher")
+    sheet = drawn("crusher", 2)
     texts = [t for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id]
     notes = " ".join(t.text for t in texts if re.search(r"-fp\d+-short\d+$", t.id))
     assert "<2 мм" in notes
@@ -229,10 +219,10 @@ def test_a_force_shorter_than_2_mm_is_written_with_its_value():
     assert short > 0
 
 
-def test_technological_force_diagram_runs_over_the_stroke():
+def test_technological_force_diagram_runs_over_the_stroke(solved, drawn):
     """Q(s) of the press: 0 on the idle stroke, the diagram's maximum on the working one,
     s from 0 to the stroke H; drawn on the sheet as its own items."""
-    a = analysed("press")
+    a = solved("press")
     (name, s, size, work, _), = q_curves(a)[0]
     res = a.mech.resistances[0]
     assert name == "Q"
@@ -240,13 +230,13 @@ def test_technological_force_diagram_runs_over_the_stroke():
     assert float(size[work].max()) == pytest.approx(res.maximum, rel=1e-6)
     assert float(s.min()) == pytest.approx(0.0, abs=1e-9)
     assert float(s.max()) == pytest.approx(a.cycle.stroke, rel=1e-6)
-    sheet = kinetostatics_sheet(a)
+    sheet = drawn("press", 2)
     assert [g for g in sheet.items if getattr(g, "id", None) == "s2-q-diagram"]
 
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", ALL)
-def test_sheet_2_on_a2_and_a3_holds_its_table_whole(request, name, fmt):
+def test_sheet_2_on_a2_and_a3_holds_its_table_whole(solved, request, name, fmt):
     """Every example's sheet 2 on A2 and A3: as many positions as fit (at least one), every
     group of them drawn, nothing out of the frame or over the title block, and the table
     whole — split into parts with the position repeated, never cut."""
@@ -254,7 +244,7 @@ def test_sheet_2_on_a2_and_a3_holds_its_table_whole(request, name, fmt):
         request.applymarker(pytest.mark.xfail(strict=True, reason=(
             "issue 18 (sheet2): the lever's F_ур arrow is drawn at the Kf of the applied "
             "forces (plans/zhukovsky.py) and runs out of its cell at the frame")))
-    a = analysed(name)
+    a = solved(name)
     sheet = kinetostatics_sheet(a, page=Page(fmt))
     bad = [p for p in check_layout(sheet) if "outside" in p or "leaves the inner frame" in p
            or "title block" in p or "is used" in p]
@@ -335,7 +325,8 @@ def _figure_paper(sheet, pre: str, kin, k: int):
 
 
 @pytest.mark.parametrize("name", ALL)
-def test_slider_blocks_and_centres_of_mass_sit_where_the_kinematics_puts_them(name):
+def test_slider_blocks_and_centres_of_mass_sit_where_the_kinematics_puts_them(solved, drawn,
+                                                                              name):
     """On every group drawn separately, each slider's block is centred on the joint where the
     next link is pinned to it (on the guide), and each load (G, Pи, Q) starts or ends at its
     point as the kinematics places it, a weight at its link's centre of mass. The slotter's
@@ -347,9 +338,9 @@ def test_slider_blocks_and_centres_of_mass_sit_where_the_kinematics_puts_them(na
     from graphplan.drawing import Arrow, Polyline
     from graphplan.drawing.linkage import _pair_points
 
-    a = analysed(name)
+    a = solved(name)
     mech, kin, s2 = a.mech, a.kin, a.sheet2
-    sheet = kinetostatics_sheet(a)
+    sheet = drawn(name, 2)
     leaves = list(iter_leaves(sheet.items))
     checked = 0
     for k in s2.positions:
