@@ -98,26 +98,11 @@ def match(t: Node, n: Node, cost: Cost) -> Match | None:
     if len(tt) != len(nt):
         return None
     pairs = [[_match_product(a, b, cost) for _, b in nt] for _, a in tt]
-    best: Match | None = None
-    orders = permutations(range(len(nt))) if len(nt) <= MAX_PERMUTED else [range(len(nt))]
-    for order in orders:
-        binds: list = []
-        signs: list = []
-        c = 0.0
-        for i, j in enumerate(order):
-            m = pairs[i][j]
-            if m is None:
-                break
-            binds += m.bindings
-            signs += m.signs
-            c += m.cost + ORDER_COST * (i != j)
-            if tt[i][0] != nt[j][0]:
-                signs.append((tt[i][1], nt[j][1], tt[i][0], nt[j][0]))
-                c += SIGN_COST
-        else:
-            if best is None or c < best.cost:
-                best = Match(tuple(binds), tuple(signs), c)
-    return best
+
+    def sign(i: int, j: int) -> tuple | None:  # a term written with the other sign
+        return (tt[i][1], nt[j][1], tt[i][0], nt[j][0]) if tt[i][0] != nt[j][0] else None
+
+    return _best_order(pairs, sign)
 
 
 def _match_product(t: Node, n: Node, cost: Cost) -> Match | None:
@@ -142,9 +127,18 @@ def _match_product(t: Node, n: Node, cost: Cost) -> Match | None:
 
 
 def _assign(ts: list[Node], ns: list[Node], cost: Cost) -> Match | None:
-    pairs = [[match(a, b, cost) for b in ns] for a in ts]
+    return _best_order([[match(a, b, cost) for b in ns] for a in ts])
+
+
+def _best_order(pairs: list[list[Match | None]],
+                sign: Callable[[int, int], tuple | None] | None = None) -> Match | None:
+    """The cheapest way to pair the formula's parts ``i`` with the numbers' parts ``j``
+    one to one (``pairs[i][j]``: the match of the two, None where they do not match): each
+    part out of its written order costs :data:`ORDER_COST`, each ``sign(i, j)`` that is not
+    None (a term written with the other sign) is noted and costs :data:`SIGN_COST`."""
+    n = len(pairs[0]) if pairs else 0
     best: Match | None = None
-    orders = permutations(range(len(ns))) if len(ns) <= MAX_PERMUTED else [range(len(ns))]
+    orders = permutations(range(n)) if n <= MAX_PERMUTED else [range(n)]
     for order in orders:
         binds: list = []
         signs: list = []
@@ -156,6 +150,10 @@ def _assign(ts: list[Node], ns: list[Node], cost: Cost) -> Match | None:
             binds += m.bindings
             signs += m.signs
             c += m.cost + ORDER_COST * (i != j)
+            flipped = sign(i, j) if sign is not None else None
+            if flipped is not None:
+                signs.append(flipped)
+                c += SIGN_COST
         else:
             if best is None or c < best.cost:
                 best = Match(tuple(binds), tuple(signs), c)
