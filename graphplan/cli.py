@@ -52,6 +52,10 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--lang", choices=("en", "ru"), default=None,
                    help="language of the tables (default: the language of the messages)")
     a.add_argument("-o", "--output", help="write the report to this file (atomically)")
+    a.add_argument("--picture", metavar="FILE",
+                   help="also draw the mechanism at its first position with the paths of the "
+                   "output link's points, to see a wrong branch or direction before the sheets "
+                   "(.svg or .png)")
     s = sub.add_parser("sheets", help="draw the sheets and write the tables and the JSON report")
     s.add_argument("variants", nargs="*", metavar="VARIANT",
                    help="variant files (default: the bundled press example)")
@@ -126,6 +130,8 @@ def _analyze(args) -> int:
     result = analyze(load(path))
     for w in result.warnings:
         print(tr(f"graphplan: warning: {w}"), file=sys.stderr)
+    if args.picture:
+        _picture(result, Path(args.picture), args.lang, path)
     if args.json:  # escaped (\u03c9) only on a console that cannot encode the text
         from .console import json_ascii
 
@@ -142,6 +148,26 @@ def _analyze(args) -> int:
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _picture(result, out: Path, lang: str | None, variant: Path) -> None:
+    """``analyze --picture FILE``: the mechanism at a glance (SVG, or PNG by the suffix)."""
+    from .errors import InputError
+    from .files import write_atomic
+    from .i18n import language
+    from .teaching.scheme import mechanism_picture
+
+    suffix = out.suffix.lower()
+    if suffix not in (".svg", ".png"):
+        raise InputError(f"--picture: expected a file name ending in .svg or .png (got {out})")
+    svg = mechanism_picture(result, lang or language())
+    if suffix == ".png":
+        from .render.png import svg_to_png_bytes
+
+        write_atomic(out, svg_to_png_bytes(svg, 150), protect=(variant,))
+    else:
+        write_atomic(out, svg, protect=(variant,))
+    print(tr(f"graphplan: the mechanism's picture: {out}"), file=sys.stderr)
 
 
 def _sheets(args) -> int:

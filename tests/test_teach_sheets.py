@@ -23,7 +23,6 @@ import math
 import numpy as np
 import pytest
 
-from graphplan.drawing import kinematics_sheet, kinetostatics_sheet
 from graphplan.drawing.sheet import Arrow, Text
 from graphplan.files import examples_dir
 from graphplan.plans import acceleration_plan, force_plans, velocity_plan, zhukovsky_lever
@@ -90,28 +89,13 @@ def _letters(les, panel: int | None = None) -> set[str]:
             for m in s.marks if m.kind == "label" and m.role == "label"}
 
 
-@pytest.fixture(scope="module")
-def sheets():
-    """``sheets(project)`` → sheet 1 and sheet 2 as the project's own (English lettering, so
-    that the scale lines are written as the lessons write them), built once per example."""
-    built: dict[int, tuple] = {}
-
-    def get(p):
-        if id(p) not in built:
-            built[id(p)] = (kinematics_sheet(p, lang="en", diagrams=False),
-                            kinetostatics_sheet(p, lang="en"))
-        return built[id(p)]
-
-    return get
-
-
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_kinematic_lessons_draw_sheet_1s_plans(path, solved, sheets):
+def test_kinematic_lessons_draw_sheet_1s_plans(path, solved, drawn):
     """Velocity and acceleration lessons = sheet 1's plans, at the sheet's positions (read off
     the sheet) and at every position (rebuilt from sheet 1's Kl, Kv, Ka)."""
     p = solved(path)
     sc = p.sheet1
-    sheet1, _ = sheets(p)
+    sheet1 = drawn(path, 1, "en")  # English lettering: the scale lines as the lessons write them
     texts = {it.id: it.text for it in _walk(sheet1.items) if isinstance(it, Text) and it.id}
     compared = 0
     for kind, prefix, on_sheet in (("velocity", "vp", sc.plans), ("acceleration", "ap",
@@ -142,13 +126,13 @@ def _plan_panels(les) -> list[int]:
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
-def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, sheets):
+def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
     """The force lesson = sheet 2's force plans (the groups' arms at sheet 2's Kl, the crank's
     at its own), the lever lesson = sheet 2's lever (its Kl and Kv), at the sheet's positions
     (read off the sheet) and at every position (rebuilt from sheet 2's scales)."""
     p = solved(path)
     s2 = p.sheet2
-    _, sheet2 = sheets(p)
+    sheet2 = drawn(path, 2, "en")
     compared = 0
     for k, label in enumerate(p.kin.labels):
         les = lesson(p, "forces", label)

@@ -130,3 +130,80 @@ def lesson_scheme(analysis, k: int) -> tuple:
     placed = place_labels(reqs, obstacles, layer=labels[0].layer if labels else "scheme",
                           id_prefix="scheme-label", merge_mm=0.5)
     return (*rest, *placed)
+
+
+def mechanism_picture(analysis, lang: str = "ru") -> str:
+    """A quick picture of the mechanism for ``graphplan analyze --picture``: the mechanism
+    at its first position (the start of the working stroke when the output has dead
+    centres), the path of every joint of the output link over the cycle (dashed), and three
+    lines saying the position, the crank's sense of rotation and K — so that a wrong
+    assembly branch or a reversed direction is seen before the sheets are drawn.
+
+    Returns the SVG text (sizes in mm; the letters in the fonts of the machine that shows
+    it, as the lessons' schemes are).
+    """
+    import math
+
+    import numpy as np
+    import svgwrite
+
+    from ..drawing import Circle, Polyline, Style, Text
+    from ..numbers import plain
+    from ..render import svg as svg_render
+
+    mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
+    items = list(lesson_scheme(analysis, 0))
+    # the scheme's mm ↔ the model's m, from two of its joints (one scale, y down)
+    joints = {(it.id or "").removeprefix("scheme-joint-"): it.centre for it in items
+              if isinstance(it, Circle) and (it.id or "").startswith("scheme-joint-")}
+    pair = [j for j in joints if j in kin.pos.points][:2]
+    out_pts = [p for p in mech.points_of(mech.output.link) if p in kin.pos.points
+               and p not in mech.frame_points]
+    if len(pair) == 2:
+        (a, b), (qa, qb) = pair, (kin.pos.points[pair[0]][0], kin.pos.points[pair[1]][0])
+        span = float(np.hypot(*(qb - qa)))
+        s = math.dist(joints[a], joints[b]) / span if span > 0 else 0.0
+        if s > 0:
+            for p in out_pts:
+                path = kin.pos.points[p]
+                xy = tuple((joints[a][0] + (float(x) - float(qa[0])) * s,
+                            joints[a][1] - (float(y) - float(qa[1])) * s) for x, y in path)
+                items.append(Polyline(xy, Style(0.25, (3.0, 1.5)), True,
+                                      layer="position_plan", id=f"path-{p}"))
+    ru = lang == "ru"
+    sense = (("против часовой стрелки" if ru else "counter-clockwise") if mech.crank.sense > 0
+             else ("по часовой стрелке" if ru else "clockwise"))
+    phi = math.degrees(float(kin.phi[0])) % 360
+    start = (", начало рабочего хода" if ru else ", the start of the working stroke"
+             ) if cycle.dead_centres else ""
+    lines = [f"{'положение' if ru else 'position'} {kin.labels[0]}, φ = {plain(phi, 4)}°{start}",
+             f"ω1 {sense}" + (f", K = {plain(cycle.time_ratio, 4)}" if cycle.dead_centres
+                              else ""),
+             (f"штрихами — траектории точек {', '.join(out_pts)} звена {mech.output.link} "
+              "за цикл" if ru else f"dashed: the paths of {', '.join(out_pts)} of link "
+              f"{mech.output.link} over the cycle")]
+    xs, ys = [], []
+    from ..drawing import Group, item_geometry, text_box
+
+    for it in items:
+        g = (text_box(it) if isinstance(it, Text) else None if isinstance(it, Group)
+             else item_geometry(it))
+        if g is not None:
+            x0, y0, x1, y1 = g.bounds
+            xs += [x0, x1]
+            ys += [y0, y1]
+    x0, y0 = min(xs) - 4.0, min(ys) - 4.0
+    width = max(max(xs) - x0 + 4.0, 110.0)
+    top = max(ys) + 8.0
+    for n, line in enumerate(lines):
+        items.append(Text((x0 + 2.0, top + 6.0 * n), line, 3.5, layer="text",
+                          id=f"picture-line-{n}"))
+        width = max(width, text_box(items[-1]).bounds[2] - x0 + 4.0)
+    height = top + 6.0 * len(lines) - y0
+    dwg = svgwrite.Drawing(size=(f"{svg_render.num(width)}mm", f"{svg_render.num(height)}mm"),
+                           viewBox=" ".join(svg_render.num(v) for v in (x0, y0, width, height)),
+                           profile="full", debug=False)
+    dwg.add(dwg.rect((x0, y0), (width, height), fill="white"))
+    for it in items:
+        dwg.add(svg_render._element(dwg, it))
+    return '<?xml version="1.0" encoding="utf-8"?>\n' + dwg.tostring() + "\n"
