@@ -408,3 +408,101 @@ def test_drives_is_resists_turned_round_and_a_force_off_a_slider_follows_its_poi
     np.testing.assert_allclose(np.hypot(*fa.vector[moving].T), 500.0)
     cosine = np.einsum("ij,ij->i", fa.vector[moving], v[moving]) / (500.0 * speed[moving])
     np.testing.assert_allclose(cosine, -1.0)
+
+
+# --- the families on the sheets: a driving gas force is not a resistance; 720° labels -----
+
+
+def _q_texts(name: str) -> list[str]:
+    from graphplan.drawing import Text, iter_leaves, kinetostatics_sheet
+
+    a = analyze(load(ROOT / "examples" / f"{name}.toml"))
+    return [it.text for it in iter_leaves(kinetostatics_sheet(a).all_items())
+            if isinstance(it, Text)]
+
+
+@pytest.mark.parametrize(("name", "title", "ordinate"), [
+    # the engine's gas force does positive work over the cycle: it drives the machine
+    ("engine", "Движущая сила давления газов Fг(s)", "Fг, кН"),
+    # the compressor's gas and the pump's water resist: a pressure on the piston
+    ("compressor", "Сила давления на поршень Fг1, Fг2(s)", "F, Н"),
+    ("pump", "Сила давления на поршень Fж(s)", "Fж, Н"),
+    # a moment on the crusher's jaw, 200 kN·m at most: N·m, not N
+    ("crusher", "Момент полезного сопротивления Mс(ψ)", "Mс, кН·м"),
+    ("press", "Сила полезного сопротивления Q(s)", "Q, кН"),
+])
+def test_the_load_diagram_is_named_by_its_loads(name, title, ordinate):
+    """Sheet 2's diagram of the loads: an engine's gas force is named as the driving force
+    it is (it was 'Сила полезного сопротивления', ordinate Q), a moment in N·m."""
+    texts = _q_texts(name)
+    assert title in texts, texts
+    assert ordinate in texts, texts
+
+
+@pytest.mark.parametrize(("name", "drives"), [("engine", True), ("compressor", False),
+                                              ("pump", False), ("crusher", False)])
+def test_a_load_drives_when_it_does_positive_work_over_the_cycle(analyses, name, drives):
+    """The engine's gas: its work over the 720° cycle is the driving work Aд = −Mс·4π of the
+    machine (the consumer's constant moment Mс = −Aд/4π, from the dynamics' own grid; the
+    weights and inertia do no work over a cycle)."""
+    from graphplan.project import load_drives
+    from graphplan.project.plausibility import load_work
+
+    a = analyses[name]
+    assert [load_drives(a.mech, a.cycle, n) for n in range(len(a.mech.resistances))] == (
+        [drives] * len(a.mech.resistances))
+    if name == "engine":
+        fw = dyn.flywheel(dyn.dynamic_model(a))
+        assert load_work(a.mech, a.cycle, 0)[0] == pytest.approx(-fw.M_d * 4 * math.pi,
+                                                                 rel=1e-4)
+
+
+def test_a_four_stroke_cycle_gives_phi_over_720_degrees_on_every_table(analyses):
+    """docs/variant-format.md: 'φ of a position is given in [0°, 720°)'. The engine's
+    positions start at ВМТ, φ = 90°, every 30° over two turns: position 12 is φ = 450°
+    (the expansion stroke's ВМТ), not 90° again (the intake's); position 14 is 510°."""
+    from graphplan.drawing import Text, iter_leaves, kinematics_sheet, kinetostatics_sheet
+    from graphplan.reports import forces_markdown, plans_markdown
+
+    a = analyses["engine"]
+    want = {k: (90.0 + 30.0 * k) % 720.0 for k in range(24)}       # 90, 120 … 690, 0, 30, 60
+    assert [a.mech.positions.phi_deg(p) for p in a.kin.phi] == pytest.approx(list(want.values()))
+    # sheet 1's table of the plans: the column φ; sheet 2's force table (position 14)
+    for sheet, table, angles in ((kinematics_sheet, "plans-table-r", list(want.values())),
+                                 (kinetostatics_sheet, "s2-table-r", [510.0])):
+        cells = {it.id: it.text for it in iter_leaves(sheet(a).all_items())
+                 if isinstance(it, Text) and (it.id or "").startswith(table)}
+        column = [float(t) for i, t in sorted(cells.items()) if i.endswith("c2")
+                  and i != f"{table}0c2"]
+        assert sorted(column) == sorted(angles), (sheet.__name__, column)
+    assert "## Положение 14, φ = 510.00°" in forces_markdown(a, "ru", 0.0).splitlines()
+    assert "## Положение 12, φ = 450.00°" in plans_markdown(a, "ru", 0.0).splitlines()
+    # a one-turn cycle is unchanged: the angle of O→A in [0°, 360°)
+    press = analyze(load(ROOT / "examples" / "press.toml"))
+    assert all(0.0 <= press.mech.positions.phi_deg(p) < 360.0 for p in press.kin.phi)
+
+
+def test_a_position_on_a_dead_centre_is_in_the_stroke_it_starts():
+    """A 90° V-twin (tests/data/variants/v_twin_engine.toml), the left cylinder at 135°:
+    its ВМТ and НМТ fall on positions 0, 6, 12, 18, whose τ came 1e-15 rad short of the
+    dead centres, and each was put in the stroke before — at position 12, the firing ВМТ,
+    the force was the compression's end 7,494 N instead of the expansion's start.
+    Hand arithmetic: πD²/4 = π·0.076²/4 = 4.5365e-3 m²; (5.2 − 0.1) MPa·4.5365e-3 m² =
+    23,136 N at ВМТ of the expansion, (1.752 − 0.1)·4.5365e-3 = 7,494 N at the end of the
+    compression."""
+    from graphplan.forces import cycle_travel, stroke_index
+
+    a = analyze(load(ROOT / "tests" / "data" / "variants" / "v_twin_engine.toml"))
+    left, right = a.mech.resistances
+    tau = cycle_travel(a.mech, a.cycle, a.kin.phi)
+    assert stroke_index(left, a.mech, a.cycle, tau).tolist() == (
+        [0] * 6 + [1] * 6 + [2] * 6 + [3] * 6)
+    # the right cylinder reaches its ВМТ 270° (9 positions) later and starts its intake there
+    assert stroke_index(right, a.mech, a.cycle, tau).tolist() == (
+        [2] * 3 + [3] * 6 + [0] * 6 + [1] * 6 + [2] * 3)
+    ld = compute_loads(a.mech, a.kin, a.cycle, neglect_below=0.0)
+    gas = {f.name: np.hypot(*f.vector.T) for f in ld.all_forces() if f.name.startswith("Fг")}
+    area = math.pi * 0.076**2 / 4
+    assert gas["Fг1"][12] == pytest.approx((5.2 - 0.1) * 1e6 * area, rel=1e-9)
+    assert gas["Fг2"][21] == pytest.approx((5.2 - 0.1) * 1e6 * area, rel=1e-9)  # 630°
+    assert gas["Fг1"][11] == pytest.approx(gas["Fг2"][20], rel=1e-9)  # 30° before each firing

@@ -86,6 +86,10 @@ WORDS = {
            "crank": "Кривошип", "lever": "Рычаг Жуковского", "lever_short": "Рычаг Ж.",
            "curve": "Уравновешивающий момент Mур(φ), все нагрузки",
            "qs": "Сила полезного сопротивления", "work": "р.х.", "idle": "х.х.",
+           "qs_moment": "Момент полезного сопротивления", "qs_drive": "Движущая сила",
+           "qs_drive_moment": "Движущий момент", "qs_gas": "Сила давления на поршень",
+           "qs_gas_drive": "Движущая сила давления газов", "qs_mixed": "Внешние нагрузки",
+           "Nm": "Н·м", "kNm": "кН·м",
            "table": "Силовой расчёт", "continued": "Продолжение таблицы «Силовой расчёт»",
            "sheet": "Силовой анализ", "N": "Н", "kN": "кН", "short": "<2 мм",
            "header": ("Группы Ассура и кривошип вычерчены отдельно, Kl = {kl}; стрелки сил на "
@@ -95,6 +99,10 @@ WORDS = {
            "lever_short": "Lever",
            "curve": "Balancing moment Mур(φ), all loads",
            "qs": "Technological force", "work": "w.s.", "idle": "i.s.",
+           "qs_moment": "Technological moment", "qs_drive": "Driving force",
+           "qs_drive_moment": "Driving moment", "qs_gas": "Pressure force on the piston",
+           "qs_gas_drive": "Driving gas force", "qs_mixed": "External loads",
+           "Nm": "N·m", "kNm": "kN·m",
            "table": "Force analysis", "continued": "Table «Force analysis» continued",
            "sheet": "Force analysis", "N": "N", "kN": "kN", "short": "<2 mm",
            "header": ("The Assur groups and the crank drawn separately, Kl = {kl}; the arrows on "
@@ -453,7 +461,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
         crank = plans[-1]
         assert crank.M_bal is not None  # the crank's plan has Mур
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
-        summary.append([kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.1f}",
+        summary.append([kin.labels[k], f"{mech.positions.phi_deg(kin.phi[k]):.1f}",
                         fmt(plans[0].scale.per_mm)]
                        + [fmt(float(r.magnitude[k]) / 1000.0, 5)
                           for r in forces.reactions.values()]
@@ -547,12 +555,13 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
     kin = analysis.kin
     big = max(float(np.max(c[2])) for c in curves)
     kilo = big >= 1e4
-    f_unit = (w["kN"] if kilo else w["N"])
+    word, symbol, moment = _qs_naming(analysis, [c[0] for c in curves])
+    f_unit = w[("kNm" if moment else "kN") if kilo else ("Nm" if moment else "N")]
     div = 1000.0 if kilo else 1.0
     s_words = {"m": ("s, м" if lang == "ru" else "s, m"), "deg": "ψ, °",
                "deg_crank": "φ, °"}[unit]
     names = ", ".join(c[0] for c in curves)
-    title = f"{w['qs']} {names}({s_words.split(',')[0]})"
+    title = f"{w[word]} {names}({s_words.split(',')[0]})"
     with matplotlib.rc_context({"axes.unicode_minus": False}):
         fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
         ax = fig.add_axes((20 / width_mm, 16 / height_mm, 1 - 26 / width_mm,
@@ -602,13 +611,39 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
         for sp in ax.spines.values():
             sp.set_linewidth(0.25 * MM)
         ax.set_xlabel(s_words, **_font(s_words, 3.5))
-        ax.set_ylabel(f"Q, {f_unit}", **_font(f"Q, {f_unit}", 3.5))
+        ax.set_ylabel(f"{symbol}, {f_unit}", **_font(f"{symbol}, {f_unit}", 3.5))
         leg = f"— {w['work']}   - - {w['idle']}"
         if analysis.cycle.period <= 2 * math.pi + 1e-9:
             fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
                      **_font(leg, 2.5))
         fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
     return fig
+
+
+def _qs_naming(analysis, names: list[str]) -> tuple[str, str, bool]:
+    """What the diagram of the loads is called, by what its loads are: (the key of its
+    title in :data:`WORDS`, the ordinate's symbol, whether it is in N·m). A load that does
+    positive work over the cycle (:func:`graphplan.project.load_drives`: an engine's gas
+    force) is a driving force, not a resistance; a pressure on a piston (``bore``) is the
+    force of that pressure; the ordinate is named by the load (``Fг, кН``, ``Mс, Н·м``),
+    ``F``/``M`` for several, ``Q`` where forces and moments share it."""
+    from ..project import load_drives
+
+    mech = analysis.mech
+    res = mech.resistances[:len(names)]
+    kinds = {r.kind for r in res}
+    drives = [load_drives(mech, analysis.cycle, n) for n in range(len(res))]
+    moment = kinds == {"moment"}
+    if len(kinds) > 1:
+        return "qs_mixed", "Q", False
+    if all(r.gas for r in res):
+        word = "qs_gas_drive" if all(drives) else "qs_gas"
+    elif all(drives):
+        word = "qs_drive_moment" if moment else "qs_drive"
+    else:
+        word = "qs_moment" if moment else "qs"
+    symbol = names[0] if len(names) == 1 else ("M" if moment else "F")
+    return word, symbol, moment
 
 
 def _position_travel(analysis, unit: str) -> np.ndarray:

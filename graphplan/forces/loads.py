@@ -209,6 +209,10 @@ def output_travel(mech: Mechanism, kin: Kinematics, cycle: Cycle) -> Array:
     return np.clip(travel_fraction(mech, cycle, q), 0.0, 1.0)
 
 
+#: Crank travel (rad) within which a τ just before a dead centre is taken as at it.
+DEAD_CENTRE_TOL = 1e-9
+
+
 def cycle_travel(mech: Mechanism, cycle: Cycle, phi) -> Array:
     """Crank travel τ (rad) from the cycle's origin in the sense of rotation, in [0, period).
 
@@ -237,7 +241,11 @@ def stroke_index(res: Resistance, mech: Mechanism, cycle: Cycle, tau) -> NDArray
     Even strokes run x 0 → 1 (the start dead centre belongs to them), odd ones 1 → 0.
     """
     lt = _travel_of(res, mech, cycle)
-    u = np.mod(np.asarray(tau, float) - _first_start(res, mech, cycle, lt), cycle.period)
+    # τ within DEAD_CENTRE_TOL before a dead centre is at it: a position set on a dead
+    # centre belongs to the stroke it starts whatever the round-off of τ and of the dead
+    # centres (1e-15 rad on a guide at 135°, which put a V-engine's ВМТ in the stroke before)
+    u = np.mod(np.asarray(tau, float) - _first_start(res, mech, cycle, lt) + DEAD_CENTRE_TOL,
+               cycle.period)
     turn = np.floor(u / (2 * math.pi))
     r = u - 2 * math.pi * turn
     return (2 * turn + (r >= lt.turn)).astype(int)

@@ -234,7 +234,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     force_md = _position_sections(forces_markdown(analysis, lang, prec), lang)
     by_label = {p.label: p for p in key.positions}
     for k, label in enumerate(labels):
-        phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
+        phi = analysis.mech.positions.phi_deg(analysis.kin.phi[k])
         blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         gp = by_label.get(label)
@@ -261,7 +261,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
         lines = [ln for ln in gp.lines if _is_force_line(ln)] if gp is not None else []
         if gp is None or not lines:
             continue
-        phi = math.degrees(float(analysis.kin.phi[k])) % 360.0
+        phi = analysis.mech.positions.phi_deg(analysis.kin.phi[k])
         blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         blocks += [Paragraph(b.text) for b in force_md.get(label, [])

@@ -31,7 +31,7 @@ from .layout import (
     table_parts,
     titled_table,
 )
-from .plausibility import K_MARGIN, machine_warnings
+from .plausibility import K_MARGIN, load_drives, machine_warnings
 from .scales import (
     GROUP_EQ_ROOM,
     GROUP_ROOM,
@@ -92,6 +92,7 @@ __all__ = [
     "diagram_min",
     "fit_columns",
     "group_links",
+    "load_drives",
     "machine_warnings",
     "one_turn",
     "plan_positions",

@@ -178,6 +178,15 @@ def load_work(mech: Mechanism, cycle: Cycle, n: int) -> tuple[float, float]:
             float(np.sum(0.5 * (np.abs(power[1:]) + np.abs(power[:-1])) * dt)))
 
 
+def load_drives(mech: Mechanism, cycle: Cycle, n: int) -> bool:
+    """Whether load ``n`` is a driving force (or moment) of the machine: it does positive
+    work over the cycle, ``A = ∫ P dt > 0`` (:func:`load_work`) — the gas force of an
+    engine, which resists on the compression stroke and drives on the expansion stroke,
+    drives; a compressor's or a pump's resists."""
+    work, scale = load_work(mech, cycle, n)
+    return work > WORK_MARGIN * scale
+
+
 def _drives_in_the_working_stroke(mech: Mechanism, cycle: Cycle, n: int) -> bool:
     work, scale = load_work(mech, cycle, n)
     return work > WORK_MARGIN * scale

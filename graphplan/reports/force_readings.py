@@ -53,7 +53,7 @@ class PositionForces:
     ----------
     label : str
     phi_deg : float
-        Crank angle φ, degrees in [0, 360).
+        Crank angle φ, degrees in [0, 360) ([0, 720) in a four-stroke cycle).
     index : int
         Index of the position in ``analysis.kin``.
     precision : float
@@ -175,7 +175,7 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
         ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
         cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
                 if prec > 0 else None)  # exact readings: no reading error to bound
-        out.append(PositionForces(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, k, prec,
+        out.append(PositionForces(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
                                   sc.kl, float(np.max(np.abs(forces.M_bal))), cond))

@@ -100,7 +100,7 @@ class PositionPlans:
     label : str
         The position's label (``"2"``, ``"(3)"``).
     phi_deg : float
-        Crank angle φ, degrees in [0, 360).
+        Crank angle φ, degrees in [0, 360) ([0, 720) in a four-stroke cycle).
     velocity, acceleration : Plan
         The plans as read with ``Reader(precision)``.
     exact_velocity, exact_acceleration : Plan
@@ -179,7 +179,7 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
             cond = kinematic_conditioning(mech, kin, k, kl, kv, ka, precision)
         else:
             cond = Conditioning(kin.labels[k], 0.0, intersections(vp) + intersections(ap))
-        out.append(PositionPlans(kin.labels[k], math.degrees(kin.phi[k]) % 360.0, vp, ap, ev, ea,
+        out.append(PositionPlans(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), vp, ap, ev, ea,
                                  kl, k, float(precision), cond))
     return tuple(out)
 
@@ -610,7 +610,7 @@ def summary_rows(analysis: Analysis, lang: str = "en") -> tuple[list[str], list[
     header = [w["pos"], w["phi"], *(h for h, _ in cols)]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360.0:.1f}"]
+        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.1f}"]
         for _, arr in cols:
             big = float(np.max(np.abs(arr)))
             x = float(arr[k])

@@ -132,7 +132,7 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
     out = [t["kin"], "", t["coords"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
+        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
         for p in names:
             x, y = kin.pos.points[p][k] * 1e3
             row.append(f"({fixed(x, 2)}, {fixed(y, 2)})")
@@ -140,7 +140,7 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
     out += [format_table(head + names, rows), "", t["vel"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
+        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
         row += [fixed(norm(kin.vel.points[p][k])) for p in names]
         row += [fixed(kin.vel.omega[ln][k]) for ln in links]
         rows.append(row)
@@ -148,7 +148,7 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
             "", t["acc"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{math.degrees(kin.phi[k]) % 360:.2f}"]
+        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
         row += [fixed(norm(kin.acc.points[p][k])) for p in names]
         row += [fixed(kin.acc.epsilon[ln][k]) for ln in links]
         rows.append(row)
