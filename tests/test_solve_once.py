@@ -44,7 +44,24 @@ STAGES = {
     "machine_unit": ("graphplan.dynamics", lambda analysis, **kw: ()),
     "dynamic_model": ("graphplan.dynamics", lambda analysis, *a, **kw: ()),
     "reduced_inertia": ("graphplan.dynamics", lambda mech, kin: (_phi(kin),)),
+    # the plans of the positions: sheet 1's and sheet 2's, the reports', the JSON's
+    "force_plans": ("graphplan.plans", lambda mech, kin, forces, loads, k, kl, reader=None,
+                    room_mm=None, **kw: (_phi(kin), id(loads), k, kl, _id(reader), room_mm,
+                                         _id(kw.get("scales")))),
+    "zhukovsky_lever": ("graphplan.plans", lambda mech, kin, loads, k, kl, kv, reader=None,
+                        **kw: (_phi(kin), id(loads), k, kl, kv, _id(reader),
+                               kw.get("reference"))),
 }
+
+
+def _id(x) -> object:
+    """``x`` where it is a value (a Scale, the exact reader), its identity where it is not
+    hashable (a drafting probe, a dict of scales)."""
+    try:
+        hash(x)
+    except TypeError:
+        return id(x)
+    return x
 
 
 @pytest.fixture
@@ -76,6 +93,9 @@ def test_one_sheets_run_solves_each_stage_once(example, count_stages, tmp_path):
     assert solved["moment_curve"] == 1
     assert solved["machine_unit"] <= 1 and solved["dynamic_model"] <= 1
     assert solved["analyse_cycle"] == solved["sweep"] == 1
+    # every position's force plans and lever seen (the count is not empty), none twice
+    n = graphplan.load(bundled_example(example)).positions.count
+    assert solved["force_plans"] >= n and solved["zhukovsky_lever"] >= n
 
 
 def test_the_count_sees_a_stage_solved_twice(count_stages):

@@ -266,8 +266,11 @@ class Project:
         if note:
             mechanism["scales_note"] = note
         for k, entry in enumerate(positions):
-            vp = velocity_plan(m, self.kin, k, kl, kv)
-            ap = acceleration_plan(m, self.kin, k, kl, ka, vp)
+            if sc is self.sheet1:  # sheet 1's own plans, built once (the sheet draws them)
+                vp, ap = self.velocity_plan(k), self.acceleration_plan(k)
+            else:
+                vp = velocity_plan(m, self.kin, k, kl, kv)
+                ap = acceleration_plan(m, self.kin, k, kl, ka, vp)
             segments = {r.name: r.mm for r in vp.readings.values()}
             segments.update({r.name: r.mm for r in ap.readings.values()})
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,

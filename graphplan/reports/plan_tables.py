@@ -33,11 +33,9 @@ from ..plans import (
     Plan,
     Reader,
     Reading,
-    acceleration_plan,
     intersections,
     kinematic_conditioning,
     plan_name,
-    velocity_plan,
 )
 from ..project import Analysis
 from ..safe_text import markdown_cell
@@ -165,16 +163,10 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
     mech, kin = analysis.mech, analysis.kin
     sc = analysis.sheet1
     kl, kv, ka = sc.kl, sc.kv, sc.ka
-    reader = Reader(precision)
     out = []
-    for k in range(kin.n):
-        vp = velocity_plan(mech, kin, k, kl, kv, reader)
-        ap = acceleration_plan(mech, kin, k, kl, ka, vp, reader)
-        if precision > 0:
-            ev = velocity_plan(mech, kin, k, kl, kv)
-            ea = acceleration_plan(mech, kin, k, kl, ka, ev)
-        else:
-            ev, ea = vp, ap
+    for k in range(kin.n):  # sheet 1's plans, drafted and exact, each built once a project
+        vp, ap = analysis.velocity_plan(k, precision), analysis.acceleration_plan(k, precision)
+        ev, ea = analysis.velocity_plan(k), analysis.acceleration_plan(k)
         if precision > 0:
             cond = kinematic_conditioning(mech, kin, k, kl, kv, ka, precision)
         else:
