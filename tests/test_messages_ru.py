@@ -270,3 +270,26 @@ def test_russian_lessons_have_no_english(example, tmp_path):
                       Path(page).read_text(encoding="utf-8"), flags=re.S)
         for line in html.unescape(re.sub(r"<[^>]+>", "\n", text)).splitlines():
             assert not english_words(line), (example, plan, line)
+
+
+#: a Cyrillic unit after a number or in a column's header («0.5 кг·м²», «Mс, Н·м»)
+UNIT_AFTER = re.compile(r"(?:\d|[,(/]) ?(мм|м|Н|Н·м|кг|рад|с|об/мин|Дж|Вт|кВт|кг·м²|м/с|рад/с)"
+                        r"(?![А-Яа-яЁё])")
+
+
+def test_english_files_are_in_english_units():
+    """Issue 23: dynamics.en.md carried Russian units (ω1 = 99.484 рад/с, Jкр = 0 кг·м²,
+    Kφ … рад/мм, v = 16.4 м/с). Every committed English table of every example is in English
+    units (the symbols keep their Russian subscripts: Mс, Jкр, Aд — the sheets' notation);
+    the Russian twin has the Russian units."""
+    from graphplan.files import examples_dir
+
+    drawings = examples_dir().parent / "drawings"
+    files = sorted(drawings.glob("*/*.en.md"))
+    assert len(files) >= 12 * 3
+    for f in files:
+        text = f.read_text(encoding="utf-8")
+        assert not UNIT_AFTER.search(text), (f, UNIT_AFTER.search(text))
+        ru = f.with_name(f.name.replace(".en.md", ".ru.md")).read_text(encoding="utf-8")
+        if f.name.startswith("dynamics"):
+            assert "кг·м²" in ru and "рад/с" in ru and "kg·m²" in text and "rad/s" in text

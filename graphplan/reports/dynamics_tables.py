@@ -95,17 +95,20 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
     n1 = w * 30.0 / math.pi
     cyc = "4π" if u.model.period > 7.0 else "2π"  # a four-stroke process: 720°
     J, Nm, mm = ("Дж", "Н·м", "мм") if ru else ("J", "N·m", "mm")
+    # units in the file's language (an English file in English units)
+    rad_s, rad, kgm2, m_s = (("рад/с", "рад", "кг·м²", "м/с") if ru else
+                             ("rad/s", "rad", "kg·m²", "m/s"))
     graph_pct = (fw.I_m_graph / fw.I_m - 1) * 100 if fw.I_m else 0.0
     L = [f"# {t['title']}", "", f"## {t['data']}", "",
-         f"- ω1 = {fmt(w, 5)} рад/с, n1 = {fmt(n1, 5)} "
+         f"- ω1 = {fmt(w, 5)} {rad_s}, n1 = {fmt(n1, 5)} "
          f"{'об/мин' if ru else 'rpm'}; δ = {fw.delta:g}; η = "
          f"{u.efficiency:g}",
-         f"- Jкр = {fmt(fw.I_const, 4)} кг·м²",
+         f"- Jкр = {fmt(fw.I_const, 4)} {kgm2}",
          f"- {t['sign']}",
          "", f"## {t['pos']}", ""]
     L += _table(t["cols"], position_rows(u))
     L += ["", f"## {t['int']}", "",
-          f"- Kφ = {cyc}/L = {cyc}/{fmt(wd.length_mm)} = {fmt(wd.Kphi, 5)} рад/{mm}",
+          f"- Kφ = {cyc}/L = {cyc}/{fmt(wd.length_mm)} = {fmt(wd.Kphi, 5)} {rad}/{mm}",
           f"- KM = {fmt(wd.KM, 4)} {Nm}/{mm}; H = {fmt(wd.H)} {mm}",
           f"- KA = Kφ·KM·H = {fmt(wd.Kphi, 5)}·{fmt(wd.KM, 4)}·{fmt(wd.H)} = "
           f"{fmt(wd.KA, 5)} {J}/{mm}",
@@ -125,7 +128,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"({'точно' if ru else 'exact'} {fmt(fw.M_d, 6)})",
           f"- ΔT = Aд + Aс; ΔTmax − ΔTmin = {fmt(fw.dT_max, 6)} {J}", "",
           f"## {t['fly']}", "",
-          f"- KJ = {fmt(fw.KI, 4)} кг·м²/{mm}, KT = {fmt(fw.KT, 5)} {J}/{mm} "
+          f"- KJ = {fmt(fw.KI, 4)} {kgm2}/{mm}, KT = {fmt(fw.KT, 5)} {J}/{mm} "
           f"(KA/KT = {fmt(wd.KA / fw.KT, 5)})",
           f"- tg ψmax = KJ/(2·KT)·ω²·(1 + δ) = {fmt(fw.KI, 4)}/(2·{fmt(fw.KT, 5)})·"
           f"{fmt(w, 5)}²·{1 + fw.delta:g} = {fw.tan_max:.5f}, ψmax = {fw.psi_max:.3f}°",
@@ -133,17 +136,17 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"- k = {fw.k_mm:.2f} {mm}, l = {fw.l_mm:.2f} {mm}, kl = {fw.segment_mm:.2f} {mm}"
           + (f" ({t['flat']})" if fw.tangents_flat else ""),
           f"- JI = kl·KT/(ω²·δ) = {fw.segment_mm:.2f}·{fmt(fw.KT, 5)}/({fmt(w, 5)}²·"
-          f"{fw.delta:g}) = {fmt(fw.J_I, 6)} кг·м²",
+          f"{fw.delta:g}) = {fmt(fw.J_I, 6)} {kgm2}",
           f"- Jм = JI − Jкр − Jрот·u² = {fmt(fw.J_I, 6)} − {fmt(fw.I_const, 4)} − "
           f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m_signed if not fw.needed else fw.I_m, 6)} "
-          "кг·м²" + ("" if fw.needed else f" ≤ 0: {t['no_fw']}"),
-          (f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} кг·м² "
+          f"{kgm2}" + ("" if fw.needed else f" ≤ 0: {t['no_fw']}"),
+          (f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} {kgm2} "
            f"({fw.difference_pct:+.3f} %); "
            f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
-           f"{fmt(fw.I_m_graph, 6)} кг·м² ({graph_pct:+.2f} %)") if fw.needed else
-          (f"- {'Мерцалов' if ru else 'Merkalov'}: Jм = {fmt(fw.I_m_approx, 6)} кг·м²; "
+           f"{fmt(fw.I_m_graph, 6)} {kgm2} ({graph_pct:+.2f} %)") if fw.needed else
+          (f"- {'Мерцалов' if ru else 'Merkalov'}: Jм = {fmt(fw.I_m_approx, 6)} {kgm2}; "
            f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: Jм = "
-           f"{fmt(fw.I_m_graph, 6)} кг·м²"),
+           f"{fmt(fw.I_m_graph, 6)} {kgm2}"),
           "", f"## {t['motor']}", ""]
     if mc is None or mo is None:  # driven by its loads (an engine): the constant moment is Mс
         engine = ("нагрузки совершают положительную работу за цикл (двигатель): постоянный "
@@ -160,16 +163,16 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
               f"- {mc.reason}",
               f"- Jрот = "
               f"{fmt(mo.inertia_kg_m2, 4) if mo.inertia_kg_m2 is not None else t['none']}"
-              + (f", Jрот·u² = {fmt(fw.I_rotor, 5)} кг·м²"
+              + (f", Jрот·u² = {fmt(fw.I_rotor, 5)} {kgm2}"
                  if mo.inertia_kg_m2 is not None else "")]
     L += ["", f"## {t['rim']}", ""]
     m = u.mounted
     if fw.needed:
-        L.append(f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} кг·м², "
+        L.append(f"- {m.shape}, {t['shaft_' + u.shaft]}: I = {fmt(m.inertia, 5)} {kgm2}, "
                  f"D = {fmt(m.D * 1000, 4)} {mm}, b = "
                  f"{fmt(m.b * 1000, 4)} {mm}, h = {fmt(m.h * 1000, 4)} {mm}, m = "
-                 f"{fmt(m.mass, 4)} {'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} м/с"
-                 + ("" if m.speed_ok else " (> 40 м/с!)"))
+                 f"{fmt(m.mass, 4)} {'кг' if ru else 'kg'}, v = ω·D/2 = {fmt(m.speed, 3)} {m_s}"
+                 + ("" if m.speed_ok else f" (> 40 {m_s}!)"))
     else:  # the crank (and the rotor) already have JI
         why = str(t["no_fw_why"]).format(ji=fmt(fw.J_I, 6),
                                          have=fmt(fw.I_const + fw.I_rotor, 6))
