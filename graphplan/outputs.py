@@ -50,10 +50,10 @@ def project_files(analysis, *, lang: str = "ru", precision: float | None = None,
     """
     from .render import PreviewPool, parse_formats, resolve
 
-    # the PNG previews are drawn by worker processes (where there are any) while the
-    # tables and the next sheets are made; collected at the end
-    png = "png" in parse_formats(formats)
-    with PreviewPool(3 if png else 0) as pool:
+    # the PNG previews and the DXF files are made by worker processes (where there are
+    # any) while the tables and the next sheets are made; collected at the end
+    slow = {"png", "dxf"} & set(parse_formats(formats))
+    with PreviewPool(3 * len(slow)) as pool:
         return resolve(_project_files(analysis, lang, precision, formats, dpi, pool))
 
 

@@ -1,7 +1,7 @@
-"""PNG previews drawn by worker processes are the previews drawn in line (issue 21).
+"""PNG previews and DXFs made by worker processes are those made in line (issue 21).
 
-graphplan.render.workers hands each sheet's PNG to a forked worker (Linux, more than one
-CPU) while the main process goes on; GRAPHPLAN_JOBS=1 draws them in line. The bytes
+graphplan.render.workers hands each sheet's PNG and DXF to a forked worker (Linux, more
+than one CPU) while the main process goes on; GRAPHPLAN_JOBS=1 makes them in line. The bytes
 must not depend on which did it, a lost worker must not lose a preview, and a worker's
 error must reach the caller as the same error.
 """
@@ -79,9 +79,10 @@ def test_pool_in_line(monkeypatch):
 
 @linux_multi
 def test_previews_same_from_workers(tmp_path):
-    """Every file of `graphplan sheets --format svg,pdf,png` (the press: three sheets) is
-    the same byte for byte whether its PNGs were drawn by workers or in line (new
+    """Every file of `graphplan sheets --format all` (the press: three sheets) is
+    the same byte for byte whether its PNGs and DXFs were made by workers or in line (new
     processes, as a user runs it: no threads there)."""
+    pytest.importorskip("ezdxf")
     pytest.importorskip("resvg_py")
     pytest.importorskip("typst")
     root = Path(__file__).resolve().parent.parent
@@ -91,7 +92,7 @@ def test_previews_same_from_workers(tmp_path):
                "PYTHONPATH": os.pathsep.join([str(root), os.environ.get("PYTHONPATH", "")])}
         outs[jobs] = tmp_path / f"jobs{jobs}"
         subprocess.run([sys.executable, "-m", "graphplan", "sheets", "examples/press.toml",
-                        "-o", str(outs[jobs]), "--format", "svg,pdf,png", "--dpi", "20"],
+                        "-o", str(outs[jobs]), "--format", "all", "--dpi", "20"],
                        cwd=root, env=env, check=True, capture_output=True, timeout=600)
     names = sorted(p.name for p in outs["1"].iterdir())
     assert names == sorted(p.name for p in outs["2"].iterdir())

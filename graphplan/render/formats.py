@@ -81,11 +81,12 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
         Engine of the PDF and PNG: None (``$GRAPHPLAN_EXPORT_ENGINE``, else typst and
         resvg) or ``"cairo"``.
     pool : PreviewPool, optional
-        Worker processes for the PNG previews (:mod:`graphplan.render.workers`), shared
-        with the caller: the PNGs are then left *pending* in the result, for the caller
-        to :func:`~graphplan.render.workers.resolve` when its other work is done.
-        Without one, the previews of several sheets are drawn in workers of their own
-        (where there are workers) and the result holds only values.
+        Worker processes for the PNG previews and the DXF files
+        (:mod:`graphplan.render.workers`), shared with the caller: those are then left
+        *pending* in the result, for the caller to
+        :func:`~graphplan.render.workers.resolve` when its other work is done. Without
+        one, the previews of several sheets are drawn in workers of their own (where
+        there are workers) and the result holds only values.
 
     Returns
     -------
@@ -106,7 +107,7 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
         dpi = check_dpi(dpi)
     check_formats(fmts, engine)
     if pool is None:
-        with PreviewPool(len(sheets) if "png" in fmts else 0) as own:
+        with PreviewPool(len(sheets) * len({"png", "dxf"} & set(fmts))) as own:
             return resolve(sheet_files(sheets, fmts, dpi=dpi, engine=engine, pool=own))
     from ..render.svg import render_svg
     from .dxf import dxf_bytes
@@ -116,18 +117,20 @@ def sheet_files(sheets: Mapping[str, Sheet], formats: Iterable[str] = ("svg",), 
     out: dict[str, str | bytes] = {}
     for name, sheet in sheets.items():
         svg = render_svg(sheet) if {"svg", "pdf", "png"} & set(fmts) else None
-        png = None
+        png = dxf = None
         if "png" in fmts:  # handed to a worker first: it draws while the rest is made
             if pool.workers:
                 png_size_check(sheet, dpi)
                 png = pool.submit(svg_to_png_bytes, svg, dpi, engine)
             else:
                 png = png_bytes(sheet, dpi, svg_text=svg, engine=engine)
+        if "dxf" in fmts and pool.workers:  # so is the DXF (ezdxf's Python, ~0.3 s a sheet)
+            dxf = pool.submit(dxf_bytes, sheet)
         for fmt in fmts:
             if fmt == "svg":
                 out[f"{name}.svg"] = svg  # type: ignore[assignment]
             elif fmt == "dxf":
-                out[f"{name}.dxf"] = dxf_bytes(sheet)
+                out[f"{name}.dxf"] = dxf if dxf is not None else dxf_bytes(sheet)
             elif fmt == "pdf":
                 out[f"{name}.pdf"] = svg_to_pdf_bytes(svg, engine)  # type: ignore[arg-type]
             else:

@@ -1,11 +1,12 @@
-"""PNG previews drawn in worker processes while the main process goes on.
+"""PNG previews and DXF files made in worker processes while the main process goes on.
 
 A PNG of an A1 sheet at 100 dpi is about 0.5–1 s of resvg's rasterising and encoding
 (7.7 million pixels), and resvg holds the interpreter's lock all the while, so threads
-would not help. On Linux the previews are drawn in forked worker processes: each sheet's
-PNG is handed to a worker as soon as its SVG is rendered, and the main process goes on
-with the DXF, the PDF, the tables and the next sheet; the bytes are collected at the end.
-The pixels are the same (the same call on the same SVG text).
+would not help; a DXF is about 0.3 s of ezdxf's Python. On Linux they are made in forked
+worker processes: each sheet's PNG and DXF are handed to a worker as soon as its SVG is
+rendered, and the main process goes on with the PDF, the tables and the next sheet; the
+bytes are collected at the end. They are the same bytes (the same calls on the same SVG
+text and sheet).
 
 Workers are used only where ``fork`` is the safe, cheap way to start them (Linux) and
 more than one CPU is available; elsewhere, with ``GRAPHPLAN_JOBS=1``, and in a process
@@ -26,7 +27,7 @@ JOBS_ENV = "GRAPHPLAN_JOBS"  #: environment variable: at most this many worker p
 
 
 def worker_count(tasks: int) -> int:
-    """How many worker processes to draw ``tasks`` previews with (0: draw them here)."""
+    """How many worker processes to make ``tasks`` files with (0: make them here)."""
     if tasks < 1 or sys.platform != "linux":
         return 0
     try:
@@ -40,7 +41,7 @@ def worker_count(tasks: int) -> int:
 
 
 class PreviewPool:
-    """Worker processes for PNG previews, started on the first :meth:`submit`.
+    """Worker processes for PNG previews (and DXF files), started on the first :meth:`submit`.
 
     ``submit(fn, *args)`` returns a :class:`Pending` result (or, without workers, the
     value itself); :func:`resolve` turns a dict of both into values. Use as a context
