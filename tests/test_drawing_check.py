@@ -375,26 +375,114 @@ def test_student_file_names_its_drawing(tmp_path, capsys):
     assert "work.drawing: drawing" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("ex", EXAMPLES)
-def test_force_plans_of_every_example_are_read(tmp_path, ex):
-    """Sheet 2 of every example (drawn by the current code): its force plans are found by
-    the names along their lines, each with the Kp of its caption and the position its row's
-    scheme names, and most forces read right. Crowded polygons still give some false
-    findings (a name nearer a neighbour's line than its own): the bound is 60 %, measured
-    213 of 251 force figures ok over the twelve examples."""
+# Names the sheet itself sets nearer another force's line than its own (written to sheet
+# 2's owner in /work/coord/DEFECTS.md); every other example's sheet 2 reads clean:
+FORCE_TODO = {
+    "fourbar": "positions 3 and 10: Rτ43 written beside R43's line, G2/Pи2/G3 under a "
+               "cluster of collinear arrows drawn over each other",
+    "crusher": "position 4: G5 written 10 mm under a cluster, nearest Pи5's 0.9 mm stub",
+}
+
+
+def _sheet2(ex: str, folder: Path, fmt: str = "dxf") -> Path:
     from graphplan.checking.checks import reference_for
     from graphplan.drawing import kinetostatics_sheet
     from graphplan.render import sheet_files
 
+    ref = reference_for(EX / f"{ex}.toml")
+    content = sheet_files({"sheet2": kinetostatics_sheet(ref.analysis, lang="ru")},
+                          (fmt,))[f"sheet2.{fmt}"]
+    path = folder / f"sheet2.{fmt}"
+    if isinstance(content, str):
+        path.write_text(content, encoding="utf-8")
+    else:
+        path.write_bytes(content)
+    return path
+
+
+@pytest.mark.parametrize("fmt", ["dxf", "svg"])
+@pytest.mark.parametrize("ex", EXAMPLES)
+def test_force_plans_of_every_example_are_read(request, tmp_path, ex, fmt):
+    """Sheet 2 of every example (drawn by the current code): its force plans are found by
+    the names along their lines (short forces crowded out of their middles, names on
+    leaders, a vector drawn over a shorter one), each with the Kp of its caption and the
+    position its row's scheme names; no false alarm, and most forces read right. Measured over the twelve examples' DXF: 241 of 260 force figures ok (13 not
+    compared: forces too short to draw; 3 inaccurate; 3 wrong, in FORCE_TODO), was 198
+    of 235; false findings 47 → 3."""
+    from graphplan.checking.checks import reference_for
+
+    if ex in FORCE_TODO:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=FORCE_TODO[ex]))
     v = EX / f"{ex}.toml"
     ref = reference_for(v)
-    dxf = sheet_files({"sheet2": kinetostatics_sheet(ref.analysis, lang="ru")}, ("dxf",))
-    (tmp_path / "sheet2.dxf").write_bytes(dxf["sheet2.dxf"])
-    dc = check_drawing(tmp_path / "sheet2.dxf", v, lang="en")
+    dc = check_drawing(_sheet2(ex, tmp_path, fmt), v, lang="en")
     plans = [j for j in dc.plans if j.found.kind == "force" and j.scale]
     assert plans and all(j.position in ref.labels for j in plans)
+    assert dc.report.ok, _wrong(dc.report)
     figs = [f for f in dc.report.figures if f.quantity.endswith("_mm")]
-    assert sum(f.verdict == "ok" for f in figs) >= 0.6 * len(figs) > 0
+    assert sum(f.verdict == "ok" for f in figs) >= 0.7 * len(figs) > 0
+
+
+@pytest.mark.parametrize("ex", EXAMPLES)
+def test_force_plans_planted_errors(tmp_path, ex):
+    """Errors planted in sheet 2's DXF of every example, each found in its own plan:
+    every force plan's Kp written twice the scale it is drawn at (its forces wrong), and
+    two names of one plan swapped (forces of lengths ≥ 30 % and 3 mm apart, written at
+    each other's lines: the reader may not take them back to their own lines)."""
+    import math
+    import re
+
+    import ezdxf
+
+    v = EX / f"{ex}.toml"
+    clean = _sheet2(ex, tmp_path)
+    dc = check_drawing(clean, v, lang="en")
+    plans = [j for j in dc.plans if j.found.kind == "force" and j.scale]
+    total = hit = 0
+    # 1. Kp twice the scale, each plan in turn
+    for n, j in enumerate(plans):
+        doc = ezdxf.readfile(clean)
+        cap = j.found.caption
+        same = [t for t in doc.modelspace().query("TEXT")
+                if t.dxf.text == getattr(cap, "text", None) and "Kp = " in t.dxf.text]
+        if not same:
+            continue
+        # the rows' captions read alike: the one nearest the plan's caption
+        t = min(same, key=lambda t: math.hypot(t.dxf.insert[0] - cap.x,  # type: ignore
+                                               t.dxf.insert[1] - cap.y))  # type: ignore
+        m = re.search(r"(Kp = )([\d,.]+)", t.dxf.text)
+        assert m
+        t.dxf.text = t.dxf.text.replace(m[0], f"Kp = {2 * float(m[2].replace(',', '.')):g}")
+        doc.saveas(tmp_path / f"kp{n}.dxf")
+        total += 1
+        rep = check_drawing(tmp_path / f"kp{n}.dxf", v, lang="en").report
+        hit += any(f.verdict == "wrong" and j.found.where in f.where and
+                   f.quantity.endswith("_mm") for f in rep.findings)
+    # 2. two names swapped in the first plan that has such a pair
+    swapped = None
+    for j in plans:
+        single = {n: f for n, f in j.found.forces.items()
+                  if sum(g.segments == f.segments for g in j.found.forces.values()) == 1}
+        for a in single:
+            for b in single:
+                la, lb = single[a].length, single[b].length
+                if a < b and abs(la - lb) >= max(3.0, 0.3 * max(la, lb)):
+                    swapped = swapped or (j, a, b)
+    assert swapped is not None
+    j, a, b = swapped
+    doc = ezdxf.readfile(clean)
+    x0, y0, x1, y1 = j.found.bbox
+    names = [t for t in doc.modelspace().query("TEXT") if t.dxf.text in (a, b) and
+             x0 - 40 <= t.dxf.insert[0] <= x1 + 40 and y0 - 40 <= t.dxf.insert[1] <= y1 + 40]
+    assert sorted(t.dxf.text for t in names) == sorted((a, b))
+    for t in names:
+        t.dxf.text = b if t.dxf.text == a else a
+    doc.saveas(tmp_path / "swap.dxf")
+    total += 1
+    rep = check_drawing(tmp_path / "swap.dxf", v, lang="en").report
+    hit += any(f.verdict == "wrong" and f.quantity in (f"{a}_mm", f"{b}_mm", f"∠{a}", f"∠{b}")
+               for f in rep.findings)
+    assert total >= 2 and hit == total, (hit, total)
 
 
 def test_overlay_shows_force_findings(tmp_path):

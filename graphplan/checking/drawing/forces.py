@@ -64,6 +64,7 @@ class FoundForcePlan:
     kind: str = "force"
     closure_mm: float | None = None
     notes: list[str] = field(default_factory=list)
+    unnamed: list[DrawnForce] = field(default_factory=list)  # arrows drawn, no name read
 
     @property
     def where(self) -> str:
@@ -115,7 +116,8 @@ def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) ->
 def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
                 ) -> list[tuple[float, int]]:
     """The lines within reach of a text, as (cost, segment), the likeliest first."""
-    reach = 3.0 * t.height + 0.35 * t.height * len(t.text) + 2.0
+    half_w = 0.35 * t.height * len(t.text)
+    reach = 3.0 * t.height + half_w + 2.0
     out: list[tuple[float, int]] = []
     for i, s in enumerate(scene.segments):
         if s.length < min_len:
@@ -131,13 +133,19 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
                                                             else 0.0)
             out.append((cost, i))
             continue
-        # a force's name is written beside the middle part of its line
+        # a force's name is written beside the middle of its line: along a long line,
+        # beside its middle part; a short line's name (crowded out) within a few letters
+        # of its middle, from the text's box
         L2 = s.length ** 2
         along = ((t.x - s.x1) * (s.x2 - s.x1) + (t.y - s.y1) * (s.y2 - s.y1)) / L2
-        if not 0.1 <= along <= 0.9:
+        mx, my = (s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2
+        mid_box = math.hypot(max(abs(mx - t.x) - half_w, 0.0),
+                             max(abs(my - t.y) - 0.5 * t.height, 0.0))
+        if abs(along - 0.5) > 0.4 and mid_box > 3.0 * t.height:
             continue
-        mid = math.hypot(t.x - (s.x1 + s.x2) / 2, t.y - (s.y1 + s.y2) / 2)
-        cost = d + 0.25 * mid
+        mid = math.hypot(t.x - mx, t.y - my)
+        cost = d + 0.25 * mid if abs(along - 0.5) <= 0.4 else \
+            max(d, mid_box) + 0.25 * mid + 0.5 * t.height
         if not any(scene.heads[i]):
             cost += 3.0 * t.height  # a construction line, not a force's arrow
         out.append((cost, i))
@@ -183,20 +191,28 @@ def _drawn(scene: Scene, i: int) -> DrawnForce:
 def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
     """The force plans of a drawing (see the module docstring)."""
     by_group: dict[int, dict[str, DrawnForce]] = {}
-    for t in scene.drawing.texts:
+    texts = []
+    leaders = scene.leader_lines(_is_forces, slack=0.4)  # a sheared italic's corner
+    for ti, t in enumerate(scene.drawing.texts):
         names = split_names(t.text)
         if not names or not all(is_force_name(n) for n in names):
             continue
         near = _lines_near(scene, t, min_len=0.8)
-        if not near:
-            continue
-        i = near[0][1]
-        g = scene.group_of[i]
-        # the lines the text is nearly as near, of the same plan: in a crowded polygon
-        # the name may stand nearer a neighbour's line (judged against the construction)
-        lines = [near[0][1]] + [k for c, k in near[1:6]
-                                if c <= near[0][0] + 2.0 * t.height + 2.0 and
-                                scene.group_of[k] == g]
+        if ti in leaders:
+            led = _led_to(scene, *leaders[ti])
+            near = led + [c for c in near if all(c[1] != k for _c, k in led) and
+                          c[1] != leaders[ti][0]]
+        if near:
+            texts.append((t, names, near))
+    lines_of = _assign(scene, texts)
+    for (t, names, near), first in zip(texts, lines_of, strict=True):
+        g = scene.group_of[first]
+        # the other lines the text is nearly as near, of the same plan: in a crowded
+        # polygon the name may stand nearer a neighbour's line (judged against the
+        # construction, one name to a line)
+        best = next(c for c, k in near if k == first)
+        lines = [first] + [k for c, k in near[:8] if k != first and
+                           c <= best + 2.0 * t.height + 2.0 and scene.group_of[k] == g]
         drawn: list = []
         for k in lines:
             f = _drawn(scene, k)
@@ -219,19 +235,104 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
         xs = [p[0] for p in ends]
         ys = [p[1] for p in ends]
         fp = FoundForcePlan(g, forces, (min(xs), min(ys), max(xs), max(ys)))
-        fp.closure_mm = _closure(forces)
+        named = {k for f in forces.values() for k in f.segments}
+        seen: set[tuple[int, ...]] = set()
+        for i, gg in enumerate(scene.group_of):
+            if gg == g and i not in named and any(scene.heads[i]) and \
+                    scene.segments[i].length >= 0.8:
+                f = _drawn(scene, i)
+                if f.segments not in seen and not named & set(f.segments):
+                    seen.add(f.segments)
+                    fp.unnamed.append(f)
+        fp.closure_mm = _closure(forces, fp.unnamed)
         plans.append(fp)
     _captions(scene, plans)
     return [p for p in plans if p.kind == "force"]
 
 
-def _closure(forces: dict[str, DrawnForce]) -> float | None:
+def _is_forces(text: str) -> bool:
+    names = split_names(text)
+    return bool(names) and all(is_force_name(n) for n in names)
+
+
+def _led_to(scene: Scene, i: int, na: int, nb: int) -> list[tuple[float, int]]:
+    """The lines a force's name on a leader names: the arrows passing within 3 mm of the
+    point the leader is aimed at (2 mm on from its end: a name's leader starts just off
+    the middle of its force), the nearest (then the one whose middle is nearest) first,
+    before any line merely near the text."""
+    near, far = scene.nodes[na], scene.nodes[nb]
+    L = math.hypot(far.x - near.x, far.y - near.y)
+    ax = far.x + 2.0 * (far.x - near.x) / L
+    ay = far.y + 2.0 * (far.y - near.y) / L
+    out = []
+    for k, s in enumerate(scene.segments):
+        if k == i or s.length < 0.8 or not any(scene.heads[k]):
+            continue
+        d = point_segment(ax, ay, s)
+        if d <= 3.0:
+            mid = math.hypot(ax - (s.x1 + s.x2) / 2, ay - (s.y1 + s.y2) / 2)
+            out.append((-100.0 + d + 0.1 * mid, k))
+    return sorted(out)
+
+
+def _assign(scene: Scene, texts) -> list[int]:
+    """Each text's line: the nearest, texts placed surest first; a line another text
+    already names is taken only when no other line is nearly as near (two texts rarely
+    name one force's line: a text lists the forces drawn on one line)."""
+    order = sorted(range(len(texts)), key=lambda i: texts[i][2][0][0])
+    taken: dict[tuple[int, ...], int] = {}
+    out = [texts[i][2][0][1] for i in range(len(texts))]
+    for i in order:
+        t, _names, near = texts[i]
+        best = None
+        for c, k in near:
+            whole = _whole_line(scene, k)[0]
+            key = tuple(sorted(whole))
+            cc = c + (1.5 * t.height if key in taken else 0.0)
+            if best is None or cc < best[0]:
+                best = (cc, k, key)
+        assert best is not None
+        out[i] = best[1]
+        taken.setdefault(best[2], i)
+    return out
+
+
+def _closure(forces: dict[str, DrawnForce], unnamed=()) -> float | None:
     """The gap of the polygon (mm): the distance between its two loose ends when the
-    forces drawn (one line per place) leave exactly two, else ``None``."""
+    forces drawn (one line per place) leave exactly two, else ``None``. Arrows drawn in
+    the polygon whose names were not read (``unnamed``: a force too short to name, a
+    name not read) carry a loose end on: to the other loose end, the polygon is closed;
+    to another force's end, its shape is not read (``None``)."""
     lines: list[DrawnForce] = []
     for f in forces.values():
         if not any(f.segments == g.segments for g in lines):
             lines.append(f)
+    loose = _loose(lines)
+    if len(loose) != 2:
+        return None
+    ends = [p for f in lines for p in (f.start, f.end)]
+
+    def at(p, q) -> bool:
+        return math.hypot(p[0] - q[0], p[1] - q[1]) < 0.5
+
+    for a, b in ((loose[0], loose[1]), (loose[1], loose[0])):
+        left = [f for f in unnamed if f.length > 0]
+        end = a
+        for _ in range(3):
+            nxt = next((f for f in left if at(f.start, end) or at(f.end, end)), None)
+            if nxt is None:
+                break
+            left.remove(nxt)
+            end = nxt.end if at(nxt.start, end) else nxt.start
+            if at(end, b):
+                return 0.0
+            if any(at(end, p) for p in ends):
+                return None
+    return math.hypot(loose[0][0] - loose[1][0], loose[0][1] - loose[1][1])
+
+
+def _loose(lines: list[DrawnForce]) -> list[tuple[float, float]]:
+    """The ends of lines that meet no other line's end."""
     pts: list[tuple[float, float]] = []
     count: list[int] = []
     for f in lines:
@@ -243,10 +344,7 @@ def _closure(forces: dict[str, DrawnForce]) -> float | None:
             else:
                 pts.append(p)
                 count.append(1)
-    loose = [p for p, c in zip(pts, count, strict=True) if c == 1]
-    if len(loose) != 2:
-        return None
-    return math.hypot(loose[0][0] - loose[1][0], loose[0][1] - loose[1][1])
+    return [p for p, c in zip(pts, count, strict=True) if c == 1]
 
 
 def _captions(scene: Scene, plans: list[FoundForcePlan]) -> None:

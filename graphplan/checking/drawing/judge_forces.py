@@ -164,27 +164,55 @@ def _mismatch(f: DrawnForce, length: float | None, vec) -> float:
 def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> None:
     """A name written nearer a neighbour's line than its own (a crowded polygon): when
     the line nearest the name is not the force graphplan draws and another line the
-    name is nearly as near is, within the segment tolerance, that line is the force."""
+    name is nearly as near is, within the segment tolerance, that line is the force —
+    one text to a line: a line whose own name fits it stays that name's, and of the
+    names that do not fit their nearest line the best fitting choose first."""
+    # the names of one text share their line and options: they choose together
+    units: dict[tuple, list[str]] = {}
+    for name, f in fp.forces.items():
+        units.setdefault((f.segments, tuple(o.segments for o in f.options)), []).append(name)
+
+    def misfit(names: list[str], line: DrawnForce) -> float:
+        """The worst of the names' mismatches, in bands (≤ 1: within the tolerance)."""
+        worst = 0.0
+        for name in names:
+            length = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
+            if length is None:
+                continue
+            fl = ref.force_line(name, k)
+            band = max(tol.segment * length, tol.reading_mm)
+            worst = max(worst, _mismatch(line, length, None if fl is None else fl[1]) / band)
+        return worst
+
+    held: set[tuple[int, ...]] = set()
+    loose = []
+    for names in units.values():
+        f = fp.forces[names[0]]
+        if misfit(names, f) <= 1.0 or not f.options:
+            held.add(f.segments)
+        else:
+            loose.append(names)
+    choices = []
+    for names in loose:
+        f = fp.forces[names[0]]
+        for o in f.options:
+            m = misfit(names, o)
+            if m <= 1.0:
+                choices.append((m, id(names), names, o))
     changed = False
-    for name, f in list(fp.forces.items()):
-        if not f.options:
+    done: set[int] = set()
+    for _m, key, names, o in sorted(choices, key=lambda c: c[0]):
+        if key in done or o.segments in held:
             continue
-        length = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
-        line = ref.force_line(name, k)
-        vec = None if line is None else line[1]
-        if length is None:
-            continue
-        band = max(tol.segment * length, tol.reading_mm)
-        now = _mismatch(f, length, vec)
-        if now <= band:
-            continue
-        best = min(f.options, key=lambda o: _mismatch(o, length, vec))
-        if _mismatch(best, length, vec) <= band:
-            fp.forces[name] = DrawnForce(name, best.start, best.end, best.sense, best.segments,
-                                         (f, *[o for o in f.options if o is not best]))
-            changed = True
+        done.add(key)
+        held.add(o.segments)
+        for name in names:
+            f = fp.forces[name]
+            fp.forces[name] = DrawnForce(name, o.start, o.end, o.sense, o.segments,
+                                         (f, *[x for x in f.options if x is not o]))
+        changed = True
     if changed:
-        fp.closure_mm = _closure(fp.forces)
+        fp.closure_mm = _closure(fp.forces, fp.unnamed)
 
 
 def judge_arm(a: DrawnArm, ref, sheet: dict[str, float], lang: str):

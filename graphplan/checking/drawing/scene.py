@@ -36,6 +36,9 @@ LEADER_MM = 40.0
 """Longest leader line (выноска) from a letter to its point (mm)."""
 LEADER_GAP_MM = 3.5
 """A leader may stop this far short of its point (mm)."""
+CARRY_MM = 0.3
+"""Shortest line carried on to an arrowhead's tip (mm): a vector a little longer than
+its head is drawn as a stub and the head."""
 OPTION_H = 2.0
 """Nodes within this many letter heights of a letter's nearest node are kept as its
 other options (for a letter placed between two points)."""
@@ -139,13 +142,35 @@ class Scene:
     def _bare_heads(self) -> list[Segment]:
         """A vector shorter than its arrowhead is drawn as the head alone: the head's own
         axis (the middle of its base to its tip) stands for the vector's line."""
-        # the lines ending at each place, as unit vectors pointing to that end
-        ends: dict[tuple[int, int], list[tuple[float, float]]] = {}
+        # the lines ending at each place, as unit vectors pointing to that end (and the
+        # line's other end)
+        ends: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
         for s in self.segments:
             L = s.length
             for x, y, ox, oy in ((s.x1, s.y1, s.x2, s.y2), (s.x2, s.y2, s.x1, s.y1)):
                 ends.setdefault((round(x / SNAP_MM), round(y / SNAP_MM)), []).append(
-                    ((x - ox) / L, (y - oy) / L))
+                    ((x - ox) / L, (y - oy) / L, ox, oy))
+        # every head's tip and axis: a line with a head of its own at its far end,
+        # pointing away, is a vector starting here (drawn over a short one ending here)
+        axes: dict[tuple[int, int], list[tuple[float, float]]] = {}
+        for pts in self.arrow_tips:
+            if len(pts) < 3:
+                continue
+            tip = head_tip(pts)
+            base = [p for p in pts if abs(p[0] - tip[0]) + abs(p[1] - tip[1]) > 1e-6]
+            if base:
+                bx = sum(p[0] for p in base) / len(base)
+                by = sum(p[1] for p in base) / len(base)
+                hl = math.hypot(tip[0] - bx, tip[1] - by)
+                if hl > 0:
+                    axes.setdefault((round(tip[0] / SNAP_MM), round(tip[1] / SNAP_MM)), []
+                                    ).append(((tip[0] - bx) / hl, (tip[1] - by) / hl))
+
+        def headed_away(ux: float, uy: float, ox: float, oy: float) -> bool:
+            k = (round(ox / SNAP_MM), round(oy / SNAP_MM))
+            return any(-ux * ax - uy * ay > 0.9 for i in (-1, 0, 1) for j in (-1, 0, 1)
+                       for ax, ay in axes.get((k[0] + i, k[1] + j), ()))
+
         out = []
         for pts in self.arrow_tips:
             if len(pts) < 3:
@@ -161,8 +186,9 @@ class Scene:
             # a line that ends at the tip along the head is its vector's; another line
             # ending there (the next vector's start, a construction line) is not
             if hl > 0 and any((tip[0] - bx) * ux / hl + (tip[1] - by) * uy / hl > 0.9
+                              and not headed_away(ux, uy, ox, oy)
                               for i in (-1, 0, 1) for j in (-1, 0, 1)
-                              for ux, uy in ends.get((k[0] + i, k[1] + j), ())):
+                              for ux, uy, ox, oy in ends.get((k[0] + i, k[1] + j), ())):
                 continue
             if math.hypot(tip[0] - bx, tip[1] - by) < 0.5:
                 continue  # a dot, not an arrowhead
@@ -185,7 +211,7 @@ class Scene:
         out = []
         carried: dict[int, list[tuple[float, float]]] = {}  # head → the carried lines' starts
         for s in segs:
-            if s.length < 1.0:
+            if s.length < CARRY_MM:
                 out.append(s)
                 continue
             ends = [(s.x1, s.y1), (s.x2, s.y2)]
@@ -407,19 +433,35 @@ class Scene:
         return True
 
     def _leaders(self) -> tuple[dict[int, tuple[int, float]], set[int]]:
-        """Leader lines (выноски): a short thin line with no arrowhead and nothing on it, one
-        free end at a text's box, running away from the text. The text names the point at
-        the leader's other end — where it touches other lines, or the node nearest that
-        end (a leader stops a little short of its point). Returns, per text (by its index
-        in the drawing), the node named and the leader's length, and the leaders' own
-        loose ends (no point is there)."""
+        """Leader lines of point names (see :meth:`leader_lines`). The text names the point
+        at the leader's other end — where it touches other lines, or the node nearest that
+        end on the leader's line run on (a leader stops a little short of its point).
+        Returns, per text (by its index in the drawing), the node named and the leader's
+        length, and the leaders' own loose ends (no point is there)."""
         named: dict[int, tuple[int, float]] = {}
         own: set[int] = set()
+        for ti, (i, na, nb) in self.leader_lines(is_names).items():
+            target = self._leader_target(nb, na, self.nodes[nb], self.nodes[na])
+            if target is None:
+                continue
+            named[ti] = (target, self.segments[i].length)
+            own.add(na)
+            if nb != target:
+                own.add(nb)
+        return named, own
+
+    def leader_lines(self, which, slack: float = 0.0) -> dict[int, tuple[int, int, int]]:
+        """Leader lines (выноски) of the texts ``which(text)`` accepts: a short thin line
+        with no arrowhead and no point on it, one free end at the text's box (within half
+        a letter height, and ``slack`` letter heights more), running away from the text.
+        Per text (by its index in the drawing): the line, its end at the text and its far
+        end (nodes)."""
+        out: dict[int, tuple[int, int, int]] = {}
         cell = 5.0
         # a leader is drawn as a thin line: none thicker than the thinnest lines drawn
         thin = min((s.width for s in self.segments if s.length > 1.0), default=0.0)
         for ti, t in enumerate(self.drawing.texts):
-            if not is_names(t.text):
+            if len(t.text) > 24 or not which(t.text):
                 continue
             half_w = 0.35 * t.height * len(t.text)
             a = math.radians(t.angle)
@@ -430,7 +472,7 @@ class Scene:
                 v = -(x - t.x) * sa + (y - t.y) * ca
                 return math.hypot(max(abs(u) - half_w, 0.0), max(abs(v) - 0.5 * t.height, 0.0))
 
-            best: tuple[float, int, float, int, int] | None = None
+            best: tuple[float, int, int, int] | None = None
             r = int((half_w + LEADER_MM) // cell) + 1
             ci, cj = int(t.x // cell), int(t.y // cell)
             seen: set[int] = set()
@@ -450,22 +492,16 @@ class Scene:
                             na, nb, da, db = nb, na, db, da
                         near, far = self.nodes[na], self.nodes[nb]
                         # one end at the text's box, the line running away from the text
-                        if da > 0.5 * t.height + 0.3 or db < da + 1.0 or \
+                        if da > (0.5 + slack) * t.height + 0.3 or db < da + 1.0 or \
                                 (far.x - near.x) * (near.x - t.x) + \
                                 (far.y - near.y) * (near.y - t.y) <= 0 or \
                                 near.ends != 1 or near.passes or near.tip:
                             continue
-                        target = self._leader_target(nb, na, far, near)
-                        if target is None:
-                            continue
                         if best is None or da < best[0]:
-                            best = (da, target, s.length, na, nb)
+                            best = (da, i, na, nb)
             if best is not None:
-                named[ti] = (best[1], best[2])
-                own.add(best[3])
-                if best[4] != best[1]:
-                    own.add(best[4])
-        return named, own
+                out[ti] = best[1:]
+        return out
 
     def _crossed(self, i: int) -> bool:
         """Whether a point lies on line i: a node where lines meet or an arrowhead points
