@@ -30,6 +30,10 @@ inertia (``Pи3``, ``Фи3``), the working load (``Q``, ``Fпс``, ``Pпс``), a
 force (``Fг2``, ``Fж``)."""
 
 
+_CRANK = re.compile(r"звена 1\b|звено 1\b|кривошип|\blink 1\b|\bcrank", re.IGNORECASE)
+"""A caption of the crank's own scheme."""
+
+
 def is_force_name(name: str) -> bool:
     return bool(_FORCE.match(fold(name)))
 
@@ -421,12 +425,17 @@ def find_h21(scene: Scene) -> list[DrawnArm]:
         _segs, a, b = _whole_line(scene, i)
         na, nb = scene.nodes[a], scene.nodes[b]
         length = math.hypot(nb.x - na.x, nb.y - na.y)
+        # its scheme's caption: the nearest above it (one below counts three times as
+        # far), a caption of the crank's own scheme (where h21 is drawn) at half the
+        # distance — a crank drawn large puts its caption far from the arm
         cap = None
         for c in scene.drawing.texts:
             if caption_kind(c.text) != "scheme" or caption_position(c.text) is None:
                 continue
             d = math.hypot(c.x - t.x, c.y - t.y) * (3.0 if c.y < t.y else 1.0)
-            if d < 120 and (cap is None or d < cap[0]):
+            if _CRANK.search(c.text):
+                d *= 0.5
+            if d < 150 and (cap is None or d < cap[0]):
                 cap = (d, c)
         kl = None
         if cap:

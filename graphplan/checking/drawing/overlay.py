@@ -1,7 +1,8 @@
 """The overlay: graphplan's construction drawn over the student's plans.
 
 One SVG of the whole sheet and one close-up of every plan with a wrong finding (force
-plans too: graphplan's force from the student's start, the wrong ones in red): the
+plans too: graphplan's force from the student's start, the wrong ones in red; schemes of
+a position: the exact position from the student's pivot, a joint off its place in red): the
 student's lines in their own colour, graphplan's construction of the plan's position at
 the student's scale (pole laid on the student's pole) in blue, and in red each segment
 whose length or direction is wrong, with the measured and the expected length
@@ -106,6 +107,8 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
     for j in dc.plans:
         if j.found.kind == "force" and j.pos is not None and j.scale:
             _force_overlay(dc, j, body, crops, H, lang)
+        elif j.found.kind == "scheme" and j.found.kl and dc.ref is not None:
+            _scheme_overlay(dc, j, body, crops, H, lang)
     legend = ("graphplan's construction (green, dashed), wrong segments (red) with the measured ≠ "
               "expected length, rings where the construction puts the point" if lang != "ru"
               else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): "
@@ -155,6 +158,68 @@ def _force_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) -> 
     if any(f.primary for f in bad):
         bx0, by0, bx1, by1 = fp.bbox
         m = 12.0
+        crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m, j.key))
+
+
+def _scheme_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) -> None:
+    """A scheme of a position: the exact position at the scheme's Kl laid from the
+    student's pivot (green, dashed: the links, a ring at each joint), and in red each
+    joint off its place (a line from where it is drawn to the exact place, the distance)
+    and each link drawn at another length (measured ≠ expected)."""
+    sc = j.found
+    ref = dc.ref
+    P = ref.kin.pos.points
+    pivot = ref.mech.crank.pivot
+    o = np.asarray(sc.pivot, float)
+    unit = "мм" if lang == "ru" else "mm"
+
+    def exact(pos: str, name: str) -> np.ndarray:
+        k = ref.index(pos)
+        return o + (np.asarray(P[name][k]) - np.asarray(P[pivot][k])) / sc.kl
+
+    def line(a, b, colour: str, width: float, dash: bool) -> None:
+        body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
+                    f"y2='{H - b[1]:.2f}' stroke='{colour}' stroke-width='{width}'" +
+                    (" stroke-opacity='0.75' stroke-dasharray='1.2,0.6'/>" if dash else "/>"))
+
+    def label(at, text: str) -> None:
+        body.append(f"<text x='{at[0] + 1:.2f}' y='{H - at[1] - 1:.2f}' font-size='2.2' "
+                    f"fill='{RED}' font-family='sans-serif'>{_e(text)}</text>")
+
+    for (pos, link) in sc.links:
+        if pos in ref.labels:
+            a, b = link.split("|")
+            line(exact(pos, a), exact(pos, b), BLUE, 0.3, True)
+    for (pos, name) in sc.joints:
+        if pos in ref.labels:
+            e = exact(pos, name)
+            body.append(f"<circle cx='{e[0]:.2f}' cy='{H - e[1]:.2f}' r='0.9' fill='none' "
+                        f"stroke='{BLUE}' stroke-width='0.25'/>")
+    bad = [f for f in dc.report.findings if f.verdict == "wrong" and j.key and
+           j.key in f.where]
+    for f in bad:
+        if f.position not in ref.labels:
+            continue
+        if f.kind == "point" and (f.position, f.quantity[1:]) in sc.joints:
+            name = f.quantity[1:]
+            m = np.asarray(sc.joints[(f.position, name)], float)
+            e = exact(f.position, name)
+            line(m, e, RED, 0.45, False)
+            body.append(f"<circle cx='{e[0]:.2f}' cy='{H - e[1]:.2f}' r='0.9' fill='none' "
+                        f"stroke='{RED}' stroke-width='0.25'/>")
+            label(m, f"{name}: {num(float(f.stated), lang, 3)} {unit}")
+        elif f.kind == "model":
+            key = next((lk for (p, lk) in sc.links if p == f.position and
+                        lk.replace("|", "") == f.quantity), None)
+            if key is not None:
+                a, b = sc.links[(f.position, key)]
+                line(a, b, RED, 0.45, False)
+                mid = (np.asarray(a, float) + np.asarray(b, float)) / 2
+                label(mid, f"{f.quantity}: {num(float(f.stated), lang, 4)} ≠ "
+                      f"{num(float(f.expected), lang, 4)} {unit}")
+    if any(f.primary for f in bad):
+        bx0, by0, bx1, by1 = sc.bbox
+        m = 15.0
         crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m, j.key))
 
 

@@ -36,7 +36,7 @@ LEADER_MM = 40.0
 """Longest leader line (выноска) from a letter to its point (mm)."""
 LEADER_GAP_MM = 3.5
 """A leader may stop this far short of its point (mm)."""
-CARRY_MM = 0.3
+CARRY_MM = 1.0
 """Shortest line carried on to an arrowhead's tip (mm): a vector a little longer than
 its head is drawn as a stub and the head."""
 OPTION_H = 2.0
@@ -168,8 +168,10 @@ class Scene:
 
         def headed_away(ux: float, uy: float, ox: float, oy: float) -> bool:
             k = (round(ox / SNAP_MM), round(oy / SNAP_MM))
-            return any(-ux * ax - uy * ay > 0.9 for i in (-1, 0, 1) for j in (-1, 0, 1)
-                       for ax, ay in axes.get((k[0] + i, k[1] + j), ()))
+            around = [(k[0] + i, k[1] + j) for i in (-1, 0, 1) for j in (-1, 0, 1)]
+            if sum(len(ends.get(c, ())) for c in around) > 2:
+                return False  # a point where many lines end (a pole): whose head is it?
+            return any(-ux * ax - uy * ay > 0.9 for c in around for ax, ay in axes.get(c, ()))
 
         out = []
         for pts in self.arrow_tips:
@@ -185,8 +187,12 @@ class Scene:
             k = (round(tip[0] / SNAP_MM), round(tip[1] / SNAP_MM))
             # a line that ends at the tip along the head is its vector's; another line
             # ending there (the next vector's start, a construction line) is not
+            # (unless the head's tip is where several lines end — a pole: a line with a
+            # head at each end, from it, is its own vector's)
+            crowded = sum(len(ends.get((k[0] + i, k[1] + j), ()))
+                          for i in (-1, 0, 1) for j in (-1, 0, 1)) > 2
             if hl > 0 and any((tip[0] - bx) * ux / hl + (tip[1] - by) * uy / hl > 0.9
-                              and not headed_away(ux, uy, ox, oy)
+                              and (crowded or not headed_away(ux, uy, ox, oy))
                               for i in (-1, 0, 1) for j in (-1, 0, 1)
                               for ux, uy, ox, oy in ends.get((k[0] + i, k[1] + j), ())):
                 continue
