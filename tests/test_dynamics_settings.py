@@ -58,10 +58,12 @@ def test_without_efficiency_eta_is_one_and_intervals_are_24_a_turn():
 def test_diagram_size_follows_the_frame():
     # A1's frame is 816×584 mm: L = 288 mm (6 × 48), height 120 mm, spans 500 mm, JII at
     # most 90 mm, H at most 80 mm (machine.DIAGRAM_*, SPANS_HEIGHT, ENERGY_WIDTH, MAX_POLE_MM)
-    assert SHEET3_DIAGRAMS == DiagramSize(288.0, 120.0, 500.0, 90.0, 80.0) \
+    # H + JII at most 816 − 185 (title block) − 2 − 26 − 288 − 34 = 281 mm
+    assert SHEET3_DIAGRAMS == DiagramSize(288.0, 120.0, 500.0, 90.0, 80.0, 281.0) \
         == DiagramSize.for_frame(816.0, 584.0)
     # A3's frame, 395×287 mm: kw = 395/816 = 0.484, kh = 287/584 = 0.491;
     # L = 48·⌊6·0.484⌋ = 96, ⌊120·0.491⌋ = 58, spans 287 − 84 = 203, ⌊90·0.484⌋ = 43,
-    # H ≤ 5·⌊80·0.484/5⌋ = 5·⌊7.74⌋ = 35
-    assert DiagramSize.for_frame(395.0, 287.0) == DiagramSize(96.0, 58.0, 203.0, 43.0, 35.0)
+    # H ≤ 5·⌊80·0.484/5⌋ = 5·⌊7.74⌋ = 35, H + JII ≤ 395 − 185 − 2 − 26 − 96 − 34 = 52
+    assert DiagramSize.for_frame(395.0, 287.0) == DiagramSize(96.0, 58.0, 203.0, 43.0, 35.0,
+                                                              52.0)
     assert DiagramSize.for_frame(2000.0, 1000.0) == SHEET3_DIAGRAMS  # never larger than A1's

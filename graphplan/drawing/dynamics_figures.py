@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from shapely import LineString, union_all
+from shapely import box as shapely_box
 
 from ..numbers import fmt, sheet_text
 from .labels import LabelRequest, place_labels
@@ -94,13 +95,15 @@ class Block:
         self.labels.append(LabelRequest((float(anchor[0]), float(anchor[1])), s, h, group,
                                         prefer))
 
-    def finish(self, ident: str, keep_out=()) -> list:
-        """The items with the labels placed clear of the block's lines and texts."""
+    def finish(self, ident: str, keep_out=(), leaders: float = 0.0) -> list:
+        """The items with the labels placed clear of the block's lines and texts (where
+        none is clear near its point, up to ``leaders`` mm away on a thin leader)."""
         obstacles = [g for it in iter_leaves(self.items)
                      if not isinstance(it, Text) and (g := item_geometry(it)) is not None]
         keep = [text_box(t) for t in iter_leaves(self.items) if isinstance(t, Text)]
         texts = place_labels(self.labels, obstacles, layer=LAYER, id_prefix=ident,
-                             merge_mm=0.5, max_radius=10.0, keep_out=[*keep, *keep_out])
+                             merge_mm=0.5, max_radius=10.0, keep_out=[*keep, *keep_out],
+                             leaders=leaders)
         return _broken_under(self.items, [text_box(t) for t in texts if isinstance(t, Text)]) \
             + texts
 
@@ -133,16 +136,17 @@ def _broken_under(items: list, boxes: list) -> list:
 
 def _axes(b: Block, x0: float, y0: float, x_from: float, x_to: float, y_lo: float,
           y_hi: float, ylabel: str, xlabel: str = "φ", left: bool = False,
-          beyond: bool = False) -> None:
+          where: str = "above", shift: float = 0.0) -> None:
     """Abscissa from x_from to x_to at y0 and ordinate from y_lo up to y_hi at x0, arrows;
     the ordinate's letters right of its arrow (``left``: left of it), the abscissa's above
-    its arrow (``beyond``: past its tip)."""
+    its arrow's tip (``where``: "above", "below" or "beyond" it; ``shift`` mm back from it)."""
     b.arrow((x_from, y0), (x_to, y0))
     b.arrow((x0, y_lo), (x0, y_hi))
-    if beyond:
+    if where == "beyond":
         b.text((x_to + 1.0, y0 + 0.5 * TEXT_H), xlabel, TEXT_H)
     else:
-        b.text((x_to - 1.0, y0 - 2.0), xlabel, TEXT_H, "end")
+        b.text((x_to - 1.0 - shift, y0 + 5.0 if where == "below" else y0 - 2.0), xlabel,
+               TEXT_H, "end")
     if left:
         b.text((x0 - 2.0, y_hi + 2.0), ylabel, TEXT_H, "end")
     else:
@@ -156,8 +160,10 @@ def _ticks(b: Block, xs, y0: float, ys_curve, labels) -> None:
         b.label((x, y0), lab, SMALL_H, -90.0 if yc <= y0 else 90.0, group="pos")
 
 
-def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
-    """Mс(φ), Aс/Aд(φ) and ΔT(φ) stacked from (x_left, y_top); returns the items and the
+def work_items(u, x_left: float, y_top: float, lang: str, leaders: float = 0.0
+               ) -> tuple[list, dict]:
+    """Mс(φ), Aс/Aд(φ) and ΔT(φ) stacked from (x_left, y_top) (``leaders`` as in
+    :func:`energy_mass_items`); returns the items and the
     geometry the energy–mass diagram aligns with (``y_T0``, ``T_top``, ``T_bottom``,
     ``right``, ``bottom``)."""
     w = WORDS[lang]
@@ -263,8 +269,8 @@ def work_items(u, x_left: float, y_top: float, lang: str) -> tuple[list, dict]:
     _ticks(b, pos_x, y0, y0 - pos_T, labels)
     bottom = y0 - lo + BELOW
     right = x_end + 12.0
-    return b.finish("s3-work-label"), {"y_T0": y0, "T_top": T_top, "T_bottom": bottom,
-                                        "right": right, "bottom": bottom}
+    return b.finish("s3-work-label", leaders=leaders), {
+        "y_T0": y0, "T_top": T_top, "T_bottom": bottom, "right": right, "bottom": bottom}
 
 
 def unit_parts(u):
@@ -292,10 +298,12 @@ def energy_mass_width(u, least: float = MIN_READ) -> float:
 
 
 def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
-                      least: float = MIN_READ, width: float | None = None) -> list:
+                      least: float = MIN_READ, width: float | None = None,
+                      leaders: float = 0.0) -> list:
     """The energy–mass diagram level with ΔT(φ) and JII(φ) turned above it (``least`` as
     in :func:`energy_mass_width`; JII(φ)'s scales in two lines where they are wider than
-    ``width``)."""
+    ``width``; a position's number with no clear spot near its point up to ``leaders`` mm
+    away on a thin leader)."""
     w = WORDS[lang]
     fw, m = unit_parts(u)
     KJ, KT = fw.KI, fw.KT
@@ -309,14 +317,30 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
     bot_T = float(yT.max())
     y_k, y_l = y0 - fw.k_mm, y0 - fw.l_mm
     x_far = xJ0 + W + 12.0
-    # JII above its axis unless a tangent runs through the letters there (k or l near the
-    # axis): then past the arrow's tip
-    xs = np.linspace(x_far + 1.0 - text_width(Text((0.0, 0.0), "JII", TEXT_H, layer=LAYER)),
-                     x_far + 1.0, 5)
-    ys = [yk - tan * (xs - xJ0) for yk, tan in ((y_k, fw.tan_max), (y_l, fw.tan_min))]
-    crossed = any(bool(np.any((y > y0 - 6.0) & (y < y0 - 0.5))) for y in ys)
+    # JII above its axis; under it where a tangent runs through the letters there (k or l
+    # near the axis), past the arrow's tip where the tangents or the curve leave neither
+    tw = text_width(Text((0.0, 0.0), "JII", TEXT_H, layer=LAYER))
+    drawn = [LineString(((xJ0, yk), (x_far, yk - tan * (x_far - xJ0))))
+             for yk, tan in ((y_k, fw.tan_max), (y_l, fw.tan_min))]
+    drawn.append(LineString(np.column_stack((xI, yT))))
+    r_psi = min(12.0, max(x_far - xJ0 - 2.0, 6.0))  # the ψ arcs and their bases
+    drawn += [g for yk in (y_k, y_l) for g in (
+        LineString(((xJ0, yk), (xJ0 + r_psi + 2.0, yk))),
+        shapely_box(xJ0 - r_psi, yk - r_psi, xJ0 + r_psi, yk + r_psi).boundary)]
+    where, shift = "beyond", 0.0
+    for dx in (0.0, 3.0, 6.0, 9.0, 12.0):  # along the axis, nearest its tip first
+        for place, (ya, yb) in (("above", (y0 - 2.0 - TEXT_H, y0 - 1.0)),
+                                ("below", (y0 + 1.0, y0 + 5.5))):
+            spot = shapely_box(x_far + 1.0 - tw - dx, ya, x_far + 1.0 - dx, yb)
+            if x_far + 1.0 - tw - dx > xJ0 + 1.0 and not any(g.intersects(spot)
+                                                              for g in drawn):
+                where, shift = place, dx
+                break
+        if where != "beyond":
+            break
     _axes(b, xJ0, y0, xJ0 - 3.0, x_far + 2.0, max(bot_T, y_l) + 4.0,
-          min(top_T, y_k) - 9.0, f"ΔT, {w['J']}", "JII", left=True, beyond=crossed)
+          min(top_T, y_k) - 9.0, f"ΔT, {w['J']}", "JII", left=True, where=where,
+          shift=shift)
     b.line(np.column_stack((xI, yT)), MAIN)
     pos_I = xJ0 + np.interp(m.moment.pos_tau, m.tau, m.inertia.I_var) / KJ
     pos_T = y0 - np.interp(m.moment.pos_tau, m.tau, fw.work.dT) / KT
@@ -354,9 +378,12 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_k), THIN, 3.5, 1.0, layer=LAYER))
     b.items.append(Arrow(((xd, (y_k + y_l) / 2)), (xd, y_l), THIN, 3.5, 1.0, layer=LAYER))
     kl = sheet_text(f"kl = {fw.segment_mm:.1f} {w['mm']}", lang)
-    short = text_width(Text((0.0, 0.0), kl, SMALL_H, layer=LAYER)) + 2 * 3.5 + 2.0 > \
-        abs(y_l - y_k)  # the arrowheads reach the number: it stands clear of them
-    b.text((xd - (2.0 if short else 1.0), (y_k + y_l) / 2), kl, SMALL_H, "middle", 90.0)
+    long = text_width(Text((0.0, 0.0), kl, SMALL_H, layer=LAYER))
+    # the arrowheads reach the number: it stands clear of them; longer than kl itself: clear
+    # of the extension lines' ends too
+    off = 1.0 if long + 2 * 3.5 + 2.0 <= abs(y_l - y_k) else \
+        2.0 if long + 1.0 <= abs(y_l - y_k) else 3.5
+    b.text((xd - off, (y_k + y_l) / 2), kl, SMALL_H, "middle", 90.0)
     for x, y, lab in zip(pos_I, pos_T, m.moment.labels, strict=True):
         b.label((x, y), lab, SMALL_H, 0.0)
     for t in caption_texts:
@@ -393,7 +420,7 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
             b.text((x_left, y_top + 6.0), cap[cut + 2:], SMALL_H)
         else:
             b.text((x_left, y_top + 4.0), cap, SMALL_H)
-    return b.finish("s3-em-label")
+    return b.finish("s3-em-label", leaders=leaders)
 
 
 def omega_items(u, box: Rect, lang: str) -> list:

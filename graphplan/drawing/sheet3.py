@@ -143,13 +143,15 @@ def _scale_ratio(need: float) -> float:
     return float(math.ceil(need / 1000.0) * 1000)
 
 
-def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]:
+def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0,
+              shelf_at_start: bool = False) -> list[Item]:
     """A linear dimension between the ends p0, p1 of its dimension line (GOST 2.307).
 
     The arrows' tips touch the extension lines at p0 and p1; the number stands above the
     line (``side`` = +1: on the left of p0→p1, as read), parallel to it. Between ends
     closer than two arrows the arrows are drawn outside, pointing in; a number wider than
-    the space between the extension lines stands on the dimension line drawn on past p1.
+    the space between the extension lines stands on the dimension line drawn on past p1
+    (``shelf_at_start``: past p0).
     """
     (x0, y0), (x1, y1) = p0, p1
     length = math.hypot(x1 - x0, y1 - y0)
@@ -173,8 +175,9 @@ def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]
     tw = text_width(Text((0.0, 0.0), text, 3.5, layer="dimensions"))
     if tw + 1.0 > length:  # no room between the extension lines: the number stands on the
         out = (ARROW_L + 2.0 if length < 2.5 * ARROW_L else 0.0) + 1.0  # dimension line
-        mx, my = x1 + ux * (out + tw / 2), y1 + uy * (out + tw / 2)  # drawn on past p1
-        items.append(Line((x1, y1), (x1 + ux * (out + tw + 1.0), y1 + uy * (out + tw + 1.0)),
+        (ex, ey), sx, sy = ((x0, y0), -ux, -uy) if shelf_at_start else ((x1, y1), ux, uy)
+        mx, my = ex + sx * (out + tw / 2), ey + sy * (out + tw / 2)  # drawn on past an end
+        items.append(Line((ex, ey), (ex + sx * (out + tw + 1.0), ey + sy * (out + tw + 1.0)),
                           DIM, layer="dimensions", id=f"{ident}-shelf"))
     if angle <= -90.0 or angle > 90.0:  # numbers read from the bottom or the right
         angle = (angle + 180.0) % 360.0
@@ -186,7 +189,7 @@ def dimension(p0, p1, text: str, ident: str, *, side: float = 1.0) -> list[Item]
     return items
 
 
-FW_ABOVE, FW_BELOW = CAPTION + 24.0, 14.0  #: the flywheel block above and below its views
+FW_ABOVE, FW_BELOW = CAPTION + 14.0, 14.0  #: the flywheel block above and below its views
 
 
 def _flywheel_scale(u: MachineUnit, width: float, height: float) -> float:
@@ -306,7 +309,8 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
                       id="s3-fw-ext-b0"))
     items.append(Line((sx + b, cy - R_out), (sx + b, yd - 2.0), DIM,
                       layer="dimensions", id="s3-fw-ext-b1"))
-    items += dimension((sx, yd), (sx + b, yd), f"{round(s.b * 1000)}", "s3-fw-dim-b")
+    items += dimension((sx, yd), (sx + b, yd), f"{round(s.b * 1000)}", "s3-fw-dim-b",
+                       shelf_at_start=True)  # a narrow b's number left, clear of the ⌀
     note = (f"М 1:{fmt(n)};  {w['speed']} v = ω·D/2 = {fmt(s.speed, 3)} м/с"
             + ("" if s.speed_ok else " > 40 м/с!"))
     items.append(Text((box.x0, cy + R_out + 9.0), sheet_text(note, lang), 3.5,
@@ -405,7 +409,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
     kh = min(1.0, f.height / 584.0)
     x0, y0 = f.x0 + 4.0, f.y0 + 18.0
     items: list[Item] = []
-    work, geo = work_items(u, x0, y0, lang)
+    work, geo = work_items(u, x0, y0, lang, 0.0 if a1 else 15.0)
     xB = geo["right"] + 4.0
     least = MIN_READ * kw
     wB = energy_mass_width(u, least)
@@ -421,7 +425,8 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
                           "(choose fewer dynamics.intervals)")
     items += work
     top = f.y0 + 4.0  # right of graph 26 the columns start at the frame
-    items += energy_mass_items(u, xB, top, geo, lang, least, None if a1 else wB + GAP - 2.0)
+    items += energy_mass_items(u, xB, top, geo, lang, least, None if a1 else wB + GAP - 2.0,
+                               0.0 if a1 else 15.0)
     right = Rect(xC, top, f.x1 - 4.0, tb.y0 - GAP)
     rows = position_rows(u, lang)
     header = list(TABLE_WORDS[lang]["cols"])

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..paper import TITLE_BLOCK_SIZE
 from ..units import nice_ceil
 from .flywheel import Flywheel, FlywheelSize, flywheel, flywheel_size
 from .motor import MotorChoice, choose_motor, required_power
@@ -47,6 +48,9 @@ ENERGY_HEIGHT = 220.0  #: default largest drawn span of ΔT (energy–mass diagr
 #: energy–mass diagram beside it get what Mс and Aс leave.
 SPANS_HEIGHT = 500.0
 ENERGY_WIDTH = 90.0  #: largest drawn span of JII on the energy–mass diagram, mm
+#: Room for H and JII beside the work diagrams, left of the title block, on A1 (see
+#: :meth:`DiagramSize.for_frame`): 816 − 185 − 2 − 26 − 288 − 34 mm.
+BESIDE_A1 = 281.0
 PSI_MIN_DEG = 20.0  #: the lower tangent's angle ψmin at least this (method D.3: 20…70°)
 #: Scales of sheet 3's ΔT and JII (value per mm): 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10^k.
 SCALE_SERIES = (1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
@@ -113,7 +117,8 @@ def _sheet3_scales(m, intervals: int, size: dict, diagrams: DiagramSize
         room = _room_for_dT(wd, m.moment.M, spans)
         KT, KJ = energy_mass_scales(extent, float(np.ptp(np.append(m.inertia.I_var, 0.0))),
                                     m.omega1, m.delta, height_mm=room,
-                                    width_mm=diagrams.energy_width_mm)
+                                    width_mm=min(diagrams.energy_width_mm,
+                                                 max(diagrams.beside_mm - wd.H, 10.0)))
         drawn = spans - room + extent / KT
         if best is None or (extent / KT >= 0.4 * spans and drawn > best[0] + 1.0):
             best = (drawn, trial, KT, KJ)
@@ -134,13 +139,16 @@ def _extent_with_intercepts(dT, I_var, omega: float, delta: float) -> float:
 class DiagramSize:
     """The abscissa L of the work diagrams, the drawn span of Mс and of Aс with Aд, the
     drawn spans of Mс, Aс and ΔT stacked together, the widest JII of the energy–mass
-    diagram and the farthest pole distance H, mm (A1's by default)."""
+    diagram and the farthest pole distance H, mm (A1's by default); ``beside_mm`` the room
+    left of the title block for H and JII together beside the work diagrams (the
+    energy–mass diagram stands level with ΔT(φ), down to the frame: JII ≤ beside − H)."""
 
     length_mm: float = DIAGRAM_LENGTH
     height_mm: float = DIAGRAM_HEIGHT
     spans_mm: float = SPANS_HEIGHT
     energy_width_mm: float = ENERGY_WIDTH
     max_pole_mm: float = MAX_POLE_MM
+    beside_mm: float = BESIDE_A1
 
     @classmethod
     def for_frame(cls, frame_width_mm: float, frame_height_mm: float = 584.0) -> DiagramSize:
@@ -149,11 +157,17 @@ class DiagramSize:
         spans the frame's height less the room of the three diagrams' axes and letters
         (84 mm), JII and H as wide as the frame's width allows (H a multiple of 5 mm)."""
         k = min(1.0, frame_width_mm / 816.0)
-        return cls(48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k),
+        length = 48.0 * math.floor(DIAGRAM_LENGTH / 48.0 * k)
+        # beside: the frame left of the 185 mm title block, less 2 mm, the 26 mm of the
+        # work diagrams' margins and letters, L, and the 34 mm of the energy–mass
+        # diagram's own (its k, l, kl 20 mm, the tangents past the curve 14 mm)
+        return cls(length,
                    float(math.floor(DIAGRAM_HEIGHT * min(1.0, frame_height_mm / 584.0))),
                    min(SPANS_HEIGHT, frame_height_mm - 84.0),
                    float(math.floor(ENERGY_WIDTH * k)),
-                   5.0 * math.floor(MAX_POLE_MM * k / 5.0))
+                   5.0 * math.floor(MAX_POLE_MM * k / 5.0),
+                   min(BESIDE_A1, frame_width_mm - TITLE_BLOCK_SIZE[0] - 2.0 - 26.0 - length
+                       - 34.0))
 
 
 SHEET3_DIAGRAMS = DiagramSize.for_frame(816.0)  #: sheet 3 on A1
