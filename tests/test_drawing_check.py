@@ -228,8 +228,9 @@ def _two_positions(v) -> list[str]:
 def test_planted_errors_recall(tmp_path, ex):
     """Every planted error (a moved point, a wrong scale, a normal component left out, the
     plan of another position) in two positions of every example, drawn as a CAD user
-    draws (DXF) and as a vector PDF (every other example): recall ≥ 0.95 with the
-    checker's own causes, and no false alarm on the correct drawing."""
+    draws (DXF) and as a vector PDF (every other example): every one found with the
+    checker's own causes (the issue asks recall ≥ 0.95), and no false alarm on the
+    correct drawing."""
     v = EX / f"{ex}.toml"
     labels = _two_positions(v)
     fmt = "pdf" if EXAMPLES.index(ex) % 2 else "dxf"
@@ -249,7 +250,7 @@ def test_planted_errors_recall(tmp_path, ex):
         else:
             missed.append(p)
     assert total >= 12
-    assert hit / total >= 0.95, missed
+    assert hit == total, missed  # 161 of 161 over the twelve examples (the issue asks ≥ 0.95)
 
 
 def test_no_plan_is_one_line(tmp_path):
