@@ -437,3 +437,12 @@ def test_flywheel_on_a2_and_a3_after_gost_2_307(sheet3_on, analysis, name, fmt):
     else:
         assert "s3-fw-dim-b-shelf" not in by_id
         assert x0 < text_box(num).bounds[0] and text_box(num).bounds[2] < x1
+
+
+@pytest.mark.parametrize("name", ["fourbar", "slotter", "engine"])
+def test_english_sheet_3_on_a3(drawn, name):
+    """The English sheet 3 on A3 (longer words: the flywheel's title took 5 mm lettering
+    across the frame on the four-bar and the slotter): no text over a line or a text."""
+    sh = drawn(_path3(name), 3, lang="en", fmt="A3")
+    found = overlaps(sh)
+    assert found == [], f"{len(found)} overlaps, e.g. {found[:5]}"

@@ -248,8 +248,11 @@ def _flywheel_items(u: MachineUnit, box: Rect, lang: str) -> list[Item]:
     shaft = TABLE_WORDS[lang]["shaft_" + u.shaft]
     title = (f"{w['flywheel']} ({w[s.shape]}, {shaft}), {w['mass']} "
              f"{fmt(s.mass, 4)} {'кг' if ru else 'kg'}")
-    items: list[Item] = [Text((box.x0, box.y0 + 5.0), sheet_text(title, lang),
-                              5.0, layer="text", id="s3-fw-title")]
+    title = sheet_text(title, lang)
+    h_title = 5.0 if text_width(Text((0.0, 0.0), title, 5.0, layer="text")) <= box.width \
+        else RESULT_H  # a narrow column (A3): the title in the results' lettering
+    items: list[Item] = [Text((box.x0, box.y0 + 5.0), title, h_title, layer="text",
+                              id="s3-fw-title")]
     D_out = s.D + (s.h if s.shape == "rim" else 0.0)
     D_in = s.D - s.h if s.shape == "rim" else 0.0
     n = _flywheel_scale(u, box.width, box.height)
