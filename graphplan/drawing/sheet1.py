@@ -420,7 +420,7 @@ def title_block(mech, lang: str, sheet_no: int, what: str) -> TitleBlock:
 
 STRUCTURE_WORDS = {
     "ru": {"title": "Структурный анализ", "formula": "Формула строения",
-           "group": "группа II класса {order} порядка {kind} вида",
+           "group": "группа Ассура II класса {order}-го порядка {kind}-го вида",
            "stroke": "H = {v} м (ход звена {link})", "swing": "ψ = {v}° (размах звена {link})",
            "arcs": "φр.х = {w}°, φх.х = {i}° (рабочий и холостой ход)",
            "ratio": "K = {k}", "mech": "механизм II класса"},
@@ -445,7 +445,7 @@ def structure_lines(analysis, lang: str) -> list[str]:
     st, cy, mech = analysis.structure, analysis.cycle, analysis.mech
     lines = [st.mobility_equation, f"{w['formula']}: {st.formula} — {w['mech']}"]
     for g in st.groups:
-        kind = f"{g.kind} ({g.kind_ru})" if lang == "ru" else g.kind
+        kind = g.kind_ru if lang == "ru" else g.kind  # ВПВ, as Russian textbooks write it
         lines.append(f"{kind}({'-'.join(g.links)}): "
                      + w["group"].format(order=g.order, kind=g.kind_number))
     out = mech.output.link

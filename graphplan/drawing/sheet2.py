@@ -31,6 +31,7 @@ import shapely
 from shapely.geometry import Point
 
 from ..forces import reaction_name
+from ..model import russian_kind
 from ..numbers import fmt
 from ..project import (
     CAPTION,
@@ -437,7 +438,8 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
             fig_kl = s2.kl_crank if i == len(figures) - 1 else kl
             items += _group_items(analysis, fp, k, links, cells[2 * i], fig_kl.per_mm, ident,
                                   f"g{i}", s2.slots, lang)
-            title = (f"{w['plan']} {fp.group}" if i < n_groups else w["crank"])
+            group = russian_kind(fp.group) if lang == "ru" else fp.group  # ВВП(2-3)
+            title = (f"{w['plan']} {group}" if i < n_groups else w["crank"])
             cap = f"{title}, {_kp(fp.scale, lang)}"
             cell = cells[2 * i + 1]
             notes = _note_items(_short_notes(fp, lang), cell, f"{ident}-fp{i}", lang)

@@ -34,6 +34,7 @@ import math
 import re
 
 from ..forces import MomentCurve
+from ..model import russian_kind
 from ..numbers import csv_number, finite, fixed, fmt
 from ..plans import (
     ForcePlan,
@@ -155,7 +156,8 @@ def _words(lang: str) -> dict[str, str]:
 
 
 def _group(name: str, lang: str) -> str:
-    return name.replace("crank", "кривошип") if lang == "ru" else name
+    """``RRP(2-3)`` → ``ВВП(2-3)``, ``crank 1`` → ``кривошип 1`` in Russian."""
+    return russian_kind(name.replace("crank", "кривошип")) if lang == "ru" else name
 
 
 def _eq(text: str, lang: str) -> str:
