@@ -219,8 +219,8 @@ def _scheme_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) ->
                       f"{num(float(f.expected), lang, 4)} {unit}")
     if any(f.primary for f in bad):
         bx0, by0, bx1, by1 = sc.bbox
-        m = 15.0
-        crops.append((bx0 - m, H - by1 - m, bx1 - bx0 + 2 * m, by1 - by0 + 2 * m, j.key))
+        pad = 15.0
+        crops.append((bx0 - pad, H - by1 - pad, bx1 - bx0 + 2 * pad, by1 - by0 + 2 * pad, j.key))
 
 
 def _svg(x: float, y: float, w: float, h: float, content: str, title: str) -> str:
