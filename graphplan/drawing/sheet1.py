@@ -551,8 +551,10 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
 
     def notes(n, m):
         if lang == "ru":
-            return [f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)"]
-        return [f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)"]
+            return [f" (столбцов {n} из {m}; полностью — plans.ru.md)", f" ({n}/{m}, plans.ru.md)",
+                    f" ({n}/{m})"]
+        return [f" ({n} of {m} columns; all in plans.en.md)", f" ({n}/{m}, plans.en.md)",
+                f" ({n}/{m})"]
 
     header, rows = summary_rows(analysis, lang)
     r = sc.layout.table
