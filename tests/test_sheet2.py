@@ -236,14 +236,10 @@ def test_technological_force_diagram_runs_over_the_stroke(solved, drawn):
 
 @pytest.mark.parametrize("fmt", ["A2", "A3"])
 @pytest.mark.parametrize("name", ALL)
-def test_sheet_2_on_a2_and_a3_holds_its_table_whole(solved, request, name, fmt):
+def test_sheet_2_on_a2_and_a3_holds_its_table_whole(solved, name, fmt):
     """Every example's sheet 2 on A2 and A3: as many positions as fit (at least one), every
     group of them drawn, nothing out of the frame or over the title block, and the table
     whole — split into parts with the position repeated, never cut."""
-    if (name, fmt) in {("shaper", "A2")}:
-        request.applymarker(pytest.mark.xfail(strict=True, reason=(
-            "issue 18 (sheet2): the lever's F_ур arrow is drawn at the Kf of the applied "
-            "forces (plans/zhukovsky.py) and runs out of its cell at the frame")))
     a = solved(name)
     sheet = kinetostatics_sheet(a, page=Page(fmt))
     bad = [p for p in check_layout(sheet) if "outside" in p or "leaves the inner frame" in p

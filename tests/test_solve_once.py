@@ -39,7 +39,7 @@ STAGES = {
     "sheet_scales": ("graphplan.project",
                      lambda mech, kin, page=None, **kw: (_phi(kin), page)),
     "sheet2_scales": ("graphplan.project",
-                      lambda mech, kin, forces, cycle, page=None: (_phi(kin), page)),
+                      lambda mech, kin, forces, cycle, page=None, **kw: (_phi(kin), page)),
     "moment_curve": ("graphplan.forces", lambda mech, kin, cycle, *a, **kw: (_phi(kin),)),
     "machine_unit": ("graphplan.dynamics", lambda analysis, **kw: ()),
     "dynamic_model": ("graphplan.dynamics", lambda analysis, *a, **kw: ()),

@@ -143,6 +143,25 @@ def place_labels(requests: Sequence[LabelRequest], obstacles: Sequence[BaseGeome
                 texts += [t, Line(line.coords[0], line.coords[-1], THIN, layer=layer,
                                   id=f"{id_prefix}-{n + 1}-leader")]
                 continue
+        if best is None and keep_tree is not None:
+            # everything near is taken: the least crossed spot farther out, still inside
+            # the figure's place (the kept-out area: another cell, the frame)
+            ring = max_radius
+            while ring <= max_radius + max(leaders, 20.0) + 1e-9:
+                for d in [*dirs, *(x + 11.25 for x in _DIRECTIONS)]:
+                    u = np.array([math.cos(math.radians(d)), -math.sin(math.radians(d))])
+                    c = np.asarray(r.anchor) + u * (ring + float(half.max()))
+                    t = text_at_centre((float(c[0]), float(c[1])), r.text, r.height,
+                                       layer=layer, id=f"{id_prefix}-{n + 1}")
+                    box = text_box(t).buffer(0.3)
+                    if any(box.intersects(p) for p in placed) or len(
+                            keep_tree.query(box, predicate="intersects")):
+                        continue
+                    hits = (len(obst_tree.query(box, predicate="intersects"))
+                            if obst_tree is not None else 0)
+                    if best is None or hits * 10.0 + ring < best[0]:
+                        best = (hits * 10.0 + ring, t, box)
+                ring += 2.0
         if best is None:  # everything near is taken: go outwards until free
             ring = max_radius
             while best is None:

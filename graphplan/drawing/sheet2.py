@@ -381,10 +381,11 @@ def _outside(cell: Rect):
 def _plan_items(plan, cell: Rect, captions, ident: str, rename) -> list[Item]:
     """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named),
     its caption the first of ``captions`` that fits the cell."""
+    caption = _caption(cell, captions, f"{ident}-caption")
     items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename,
-                       leaders=LEADERS, keep_out=[_outside(cell)])
-    return [it for it in items if it.id != f"{ident}-caption"] + [
-        _caption(cell, captions, f"{ident}-caption")]
+                       leaders=LEADERS, keep_out=[_outside(cell),
+                                                  text_box(caption).buffer(0.5)])
+    return [it for it in items if it.id != f"{ident}-caption"] + [caption]
 
 
 def _short_notes(plan, lang: str) -> dict[str, str]:
@@ -431,11 +432,12 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     summary = []
     mmax = float(np.max(np.abs(forces.M_bal)))
     figures = group_links(mech)
+    kls = [s2.figure_kl(i) for i in range(len(figures))]
     for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
         plans = analysis.force_plans(k, page)  # the crank's arms at kl_crank; the lessons' too
         for i, (fp, links) in enumerate(zip(plans, figures, strict=True)):
-            fig_kl = s2.kl_crank if i == len(figures) - 1 else kl
+            fig_kl = kls[i]
             items += _group_items(analysis, fp, k, links, cells[2 * i], fig_kl.per_mm, ident,
                                   f"g{i}", s2.slots, lang)
             group = russian_kind(fp.group) if lang == "ru" else fp.group  # ВВП(2-3)
@@ -473,9 +475,17 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
                           if abs(float(crank.M_bal)) >= 1e-9 * max(mmax, 1.0) else "—"])
     lay = s2.layout
     hb = lay.header
-    note = w["header"].format(kl=_units(f"{fmt(kl.per_mm)} m/mm", lang)
-                              + (f", {w['crank'].lower()}: {_units(fmt(s2.kl_crank.per_mm), lang)}"
-                                 if s2.kl_crank.per_mm != kl.per_mm else ""))
+    group_kls = [(("–".join(f), fkl) for f, fkl in zip(figures[:-1], kls[:-1], strict=True))]
+    distinct = sorted({fkl.per_mm for fkl in kls[:-1]})
+    if len(distinct) == 1:
+        kl_text = _units(f"{fmt(distinct[0])} m/mm", lang)
+    else:
+        kl_text = ", ".join(f"{_units(fmt(fkl.per_mm), lang)} ({name})"
+                            for name, fkl in group_kls[0])
+        kl_text = _units(kl_text + " m/mm", lang)
+    note = w["header"].format(kl=kl_text + (
+        f", {w['crank'].lower()}: {_units(fmt(kls[-1].per_mm), lang)}"
+        if kls[-1].per_mm not in distinct else ""))
     items.append(_fitted_text(hb, (note, note.split(";")[0]), "s2-header"))
     items += _qs_items(analysis, s2, lay.qs, lang)
     items += _curve_items(analysis, lay.curve, lang)
@@ -587,8 +597,11 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
                 else np.abs(np.asarray(ld.moment)))
         xs = _position_travel(analysis, unit)
         shown: list[tuple[float, float]] = []
-        x_mm = (width_mm - 26.0) / max(float(np.max(x)), 1e-12)
+        x_mm = (width_mm - 26.0) / max(1.02 * float(np.max(x)), 1e-12)
         y_mm = (height_mm - 32.0) / max(big / div * 1.15, 1e-12)
+        # the ordinates of the analysed positions (thin lines)
+        sel = list(positions)
+        ax.vlines(xs[sel], 0.0, vals[sel] / div, colors="black", lw=0.25 * MM)
         for k in positions:
             px, py = float(xs[k]), float(vals[k]) / div
             ax.plot([px], [py], "o", color="black", markersize=1.2 * MM)
@@ -600,11 +613,14 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
                                                        + 1e-12))[:2]
             j0, j1 = sorted(int(j) for j in near)
             rising = (size[j1] - size[j0]) * (x[j1] - x[j0]) >= 0
-            ax.annotate(kin.labels[k], (px, py),
-                        xytext=((-1.5 if rising else 1.5) * MM, 1.0 * MM),
-                        textcoords="offset points", ha="right" if rising else "left",
-                        va="bottom",
-                        **_font(kin.labels[k], 2.5))
+            lines = [np.column_stack([c[1] * x_mm, c[2] / div * y_mm]) for c in curves]
+            lines += [np.array([[xs[j] * x_mm, 0.0], [xs[j] * x_mm, vals[j] / div * y_mm]])
+                      for j in sel if j != k]  # the other positions' ordinates
+            dx, dy = _free_side(kin.labels[k], (px * x_mm, py * y_mm), rising, lines,
+                                (width_mm - 26.0, height_mm - 32.0))
+            ax.annotate(kin.labels[k], (px, py), xytext=(dx * MM, dy * MM),
+                        textcoords="offset points", ha="right" if dx < 0 else "left",
+                        va="bottom", **_font(kin.labels[k], 2.5))
         ax.set_xlim(0, float(np.max(x)) * 1.02 if np.max(x) > 0 else 1.0)
         ax.set_ylim(0, big / div * 1.15 if big > 0 else 1.0)
         for lab in ax.get_xticklabels() + ax.get_yticklabels():
@@ -646,6 +662,27 @@ def _qs_naming(analysis, names: list[str]) -> tuple[str, str, bool]:
         word = "qs_moment" if moment else "qs"
     symbol = names[0] if len(names) == 1 else ("M" if moment else "F")
     return word, symbol, moment
+
+
+def _free_side(label: str, at, rising: bool, curves, limits) -> tuple[float, float]:
+    """Where a position's number goes by its point on Q(s) (offset in mm, the text's
+    nearer corner): on the side the curve falls away from (left of a rising curve), else
+    the first place next to the point, inside the axes (``limits``: their width and
+    height, mm), that no curve crosses."""
+    from shapely.geometry import LineString, box
+
+    w = text_width(Text((0, 0), label, 2.5, layer="text")) + 0.5
+    lines = [LineString(c) for c in curves if len(c) > 1]
+    first = (-1.5, 1.0) if rising else (1.5, 1.0)
+    frame = box(0.0, 0.0, *limits)
+    for dx, dy in (first, (-first[0], 1.0), (first[0], -4.5), (-first[0], -4.5),
+                   (first[0], 4.5), (-first[0], 4.5), (first[0], 8.0), (-first[0], 8.0)):
+        x0 = at[0] + dx - (w if dx < 0 else 0.0)
+        y0 = at[1] + dy
+        b = box(x0, y0, x0 + w, y0 + 3.0)
+        if frame.contains(b) and not any(b.intersects(ln) for ln in lines):
+            return dx, dy
+    return first
 
 
 def _position_travel(analysis, unit: str) -> np.ndarray:
@@ -703,6 +740,9 @@ def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
                 lw=0.5 * MM)
         ax.plot(curve.position_travel_deg, curve.M_positions, "o", color="black",
                 markersize=1.2 * MM)
+        # the ordinates of the positions, the diagram's construction (thin lines)
+        ax.vlines(curve.position_travel_deg, 0.0, curve.M_positions, colors="black",
+                  lw=0.25 * MM)
         ax.axhline(0.0, color="black", lw=0.25 * MM)
         ax.set_xlim(0, period)
         ax.set_xticks(curve.position_travel_deg)

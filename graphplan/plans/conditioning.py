@@ -366,7 +366,7 @@ def _force_plans_call():
 
 
 def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: float,
-                       room_mm: float | None = None) -> Conditioning:
+                       room_mm: float | tuple[float, ...] | None = None) -> Conditioning:
     """Bounds of the force plans' figures and of Zhukovsky's lever at position k.
 
     The loads are the exact ones (graphplan draws the force plans from them); the
@@ -408,12 +408,14 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
                 reader.calls.extend(range(used))
             else:
                 before = len(reader.calls)
+                # this plan's room (sheet 2 gives one per plan)
+                own = {q: (v[m] if isinstance(v, tuple) else v) for q, v in extra.items()}
                 if gi is None:
                     p = crank_plan(mech, kin, forces, loads, k, scales.get(m), kl=kl,
-                                   reader=reader, known=known, **extra)
+                                   reader=reader, known=known, **own)
                 else:
                     p = force_plan(mech, kin, forces, loads, k, gi, scales.get(m), kl=kl,
-                                   reader=reader, known=known, **extra)
+                                   reader=reader, known=known, **own)
                 scales.setdefault(m, p.scale)
                 used = len(reader.calls) - before
                 if reader.shift < 0:

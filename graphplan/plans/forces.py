@@ -647,7 +647,7 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
 
 
 def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int, kl: Scale,
-                reader: Reader = EXACT, room_mm: float = ROOM_MM, *,
+                reader: Reader = EXACT, room_mm: float | tuple[float, ...] = ROOM_MM, *,
                 scales: dict[int, Scale] | None = None) -> tuple[ForcePlan, ...]:
     """All force plans of position k: the groups from the last to the first, then the crank.
 
@@ -655,19 +655,23 @@ def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: in
     (so a drafting reader's errors propagate), each plan with its own Kp of the series.
     ``scales`` (plan number → Kp), when given, keeps the Kp of each plan: one chosen (by a
     trial build) is stored there, one found there is used — the error bounds build the
-    plans again with one reading shifted, at the scales of the unshifted plans.
+    plans again with one reading shifted, at the scales of the unshifted plans. ``room_mm``:
+    one room for every plan, or one per plan in their order (sheet 2 sizes each plan's cell
+    to its shape).
     """
+    rooms = (tuple(room_mm) if isinstance(room_mm, tuple)
+             else (room_mm,) * (len(mech.dyads) + 1))
     known: dict[str, PlanReaction] = {}
     plans: list[ForcePlan] = []
     kps = scales if scales is not None else {}
     for gi in reversed(range(len(mech.dyads))):
         p = force_plan(mech, kin, forces, loads, k, gi, kps.get(len(plans)), kl=kl,
-                       reader=reader, known=known, room_mm=room_mm)
+                       reader=reader, known=known, room_mm=rooms[len(plans)])
         kps.setdefault(len(plans), p.scale)
         known.update(p.reactions)
         plans.append(p)
     p = crank_plan(mech, kin, forces, loads, k, kps.get(len(plans)), kl=kl, reader=reader,
-                   known=known, room_mm=room_mm)
+                   known=known, room_mm=rooms[len(plans)])
     kps.setdefault(len(plans), p.scale)
     plans.append(p)
     return tuple(plans)

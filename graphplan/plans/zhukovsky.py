@@ -352,6 +352,15 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, loads: Loads | None, k: in
              f"⟂ {pa_}{pb_} в точках {pa_} и {pb_}.", [])
 
     biggest = max((float(np.hypot(*F)) for *_, F in applied), default=0.0)
+    # F_ур is drawn at the same Kf: the scale holds it too (|Σ M_p|/pa, exact arms; a short
+    # pa makes it many times the applied forces, and its arrow ran off the sheet)
+    exact_total = 0.0
+    for _name, _load, link, _kind, point, X, F in applied:
+        letter = images.name_of(link, point)
+        x = (turned["p" if letter == "p" else letter + "'"] if letter is not None
+             else perp(images.place(link, X)))
+        exact_total += float(cross(x, F))
+    biggest = max(biggest, abs(exact_total) / max(pa.mm, 1e-12))
     kf = fit_scale("Kp", "N/mm", max(biggest, 1e-9), FORCE_ARROW_MM)
     forces: list[LeverForce] = []
     readings: dict[str, Reading] = {pa_name: pa}

@@ -96,7 +96,7 @@ class Project:
         """Sheet 2's layout: the force plans' room, the lever's Kv (on the variant's page)."""
         from .scales import sheet2_scales
 
-        return sheet2_scales(self.mech, self.kin, self.forces, self.cycle)
+        return sheet2_scales(self.mech, self.kin, self.forces, self.cycle, loads=self.loads)
 
     def sheet2_on(self, page: Page) -> Sheet2Scales:
         """Sheet 2's layout on another format than the variant's (solved once per format)."""
@@ -105,7 +105,7 @@ class Project:
         if page.format == self._format:
             return self.sheet2
         return self.stage(("sheet2", page.format), lambda: sheet2_scales(
-            self.mech, self.kin, self.forces, self.cycle, page))
+            self.mech, self.kin, self.forces, self.cycle, page, loads=self.loads))
 
     @property
     def _format(self) -> str:
@@ -133,22 +133,22 @@ class Project:
 
     def force_plans(self, k: int, page: Page | None = None) -> tuple[ForcePlan, ...]:
         """Sheet 2's force plans of position k, the groups from the last to the first and then
-        the crank, built once: the groups' arms read at sheet 2's Kl, the crank's at its own
-        (``kl_crank``: a short crank is drawn larger); sheet 2 draws them, the force lesson
-        teaches them."""
+        the crank, built once: each group's arms read at its scheme's Kl, the crank's at its
+        own (a short crank is drawn larger); sheet 2 draws them, the force lesson teaches
+        them."""
         from ..plans import force_plans
 
         s2 = self.sheet2 if page is None else self.sheet2_on(page)
-        kl, kl_crank = s2.kl, s2.kl_crank
-        assert kl is not None and kl_crank is not None  # sheet2_scales sets both
+        kls = [s2.figure_kl(i) for i in range(len(self.mech.dyads) + 1)]
 
         def solve() -> tuple[ForcePlan, ...]:
-            plans = force_plans(self.mech, self.kin, self.forces, self.loads, k, kl,
-                                room_mm=s2.room_mm)
-            if kl_crank.per_mm != kl.per_mm:
-                plans = (*plans[:-1], force_plans(self.mech, self.kin, self.forces, self.loads,
-                                                  k, kl_crank, room_mm=s2.room_mm)[-1])
-            return plans
+            # each figure's arms read on its own drawing, at its Kl (one build per Kl)
+            built: dict[float, tuple[ForcePlan, ...]] = {}
+            for kl in kls:
+                if kl.per_mm not in built:
+                    built[kl.per_mm] = force_plans(self.mech, self.kin, self.forces,
+                                                   self.loads, k, kl, room_mm=s2.room_mm)
+            return tuple(built[kl.per_mm][i] for i, kl in enumerate(kls))
 
         fmt = self._format if page is None else page.format
         return self.stage(("force_plans", k, fmt), solve)
@@ -291,7 +291,7 @@ class Project:
         from .scales import sheet2_scales
 
         s2 = (self.sheet2 if sc is self.sheet1
-              else sheet2_scales(self.mech, self.kin, forces, self.cycle))
+              else sheet2_scales(self.mech, self.kin, forces, self.cycle, loads=loads))
 
         for k, entry in enumerate(positions):
             f = forces.as_json(k)

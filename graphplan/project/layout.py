@@ -415,68 +415,225 @@ def sheet2_cell_min(page: Page) -> float:
     return max(45.0, SHEET2_CELL_MIN * min(1.0, page.frame.height / 584.0) ** 0.5)
 
 
-def _sheet2_grid(x0, y0, w, h, n_pos, per_pos):
-    """Cells of ``n_pos`` positions of ``per_pos`` cells each, a position's cells
-    consecutive in reading order (one or more rows per position): the grid whose smaller
-    cell side (below the caption) is the largest. Returns (that side, rows of cells)."""
+@dataclass(frozen=True, slots=True)
+class FigureShape:
+    """What one figure of sheet 2 asks of its cell: its drawing's width over height
+    (``aspect``), the longest side it is drawn at at most (``cap``, mm: a force plan's
+    longest vector stays within the method's 100 mm, a group is not drawn larger than a
+    draftsman would), the room its cell keeps around it (``pad_w``, ``pad_h``: the arrows
+    of its loads, its letters, its caption and equations, mm) and the least width of its
+    cell (its caption fits), mm."""
+
+    aspect: float
+    cap: float
+    pad_w: float
+    pad_h: float
+    min_w: float = 60.0
+
+    def content_h(self, h: float) -> float:
+        """Height of the drawing in a cell ``h`` mm tall, as wide as it wants."""
+        return max(min(h - self.pad_h, self.cap / max(self.aspect, 1.0)), 0.0)
+
+
+UNIFORM = FigureShape(1.0, math.inf, 2 * LABEL_ROOM, CAPTION + 2 * LABEL_ROOM)
+
+
+def _row(shapes: list[FigureShape], width: float, h: float
+         ) -> tuple[list[float], float, float, float]:
+    """One row of figures ``h`` mm tall in ``width``: each cell as wide as its figure at
+    that height wants, all narrowed alike when they do not fit (never under a cell's
+    least width), the width left shared in proportion. Returns the cells' widths, the
+    height the row uses, the area of its drawings (mm²) and the width it needs."""
+    c = [s.content_h(h) for s in shapes]
+    nat = [s.aspect * ci for s, ci in zip(shapes, c, strict=True)]
+
+    def total(f: float) -> float:
+        return sum(max(s.min_w, s.pad_w + n * f) for s, n in zip(shapes, nat, strict=True))
+
+    f = 1.0
+    if total(1.0) > width:
+        lo, hi = 0.0, 1.0
+        for _ in range(30):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if total(mid) <= width else (lo, mid)
+        f = lo
+    widths = [max(s.min_w, s.pad_w + n * f) for s, n in zip(shapes, nat, strict=True)]
+    need = sum(widths)
+    spare = max(width - need, 0.0)
+    widths = [w + spare * w / sum(widths) for w in widths]
+    # a figure narrowed by f is f times smaller in both directions
+    used = max(s.pad_h + ci * f for s, ci in zip(shapes, c, strict=True))
+    area = sum((1.0 + s.aspect) * ci * f for s, ci in zip(shapes, c, strict=True))
+    return widths, used, area, need
+
+
+def _splits(n: int, parts: int) -> list[list[int]]:
+    """The ways to cut a sequence of n into ``parts`` consecutive non-empty runs (the
+    first index of each run)."""
+    import itertools
+
+    return [[0, *cut] for cut in itertools.combinations(range(1, n), parts - 1)]
+
+
+def _sheet2_grid(x0, y0, w, h, shapes: list[list[FigureShape]], row_least: float = 0.0):
+    """Cells of the positions' figures (``shapes``: per position, its figures in order),
+    a position's cells consecutive in reading order: either several positions in a row, or
+    each position in one or more rows cut where the rows come out most even. Of these the
+    arrangement whose drawings are the largest (their total area, each figure as large as
+    its row's height and width let it), no row lower than ``row_least`` where the height
+    allows (the lever's arrows, the letters need it). Returns (the smallest drawing side,
+    the rows of cells per position, the height used, the drawings' area, the width the
+    rows need, the rows' height)."""
+    n_pos = len(shapes)
+    per_pos = len(shapes[0])
     best = None
-    for rows_per in range(1, per_pos + 1):
-        ncol = math.ceil(per_pos / rows_per)
-        if rows_per > 1 and math.ceil(per_pos / (rows_per - 1)) == ncol:
+    options: list[list[list[tuple[int, int]]]] = []
+    for m in range(1, n_pos + 1):  # m positions side by side in a row
+        rows = [[(p, i) for p in range(r, min(r + m, n_pos)) for i in range(per_pos)]
+                for r in range(0, n_pos, m)]
+        options.append(rows)
+    for r in range(2, min(per_pos, 3) + 1):  # each position in r rows
+        def cut_cost(starts, p=0):
+            runs = [list(range(a, b)) for a, b in zip(starts, [*starts[1:], per_pos],
+                                                        strict=True)]
+            return max(sum(shapes[p][i].aspect + 0.3 for i in run) for run in runs), runs
+        starts = min(_splits(per_pos, r), key=lambda st: cut_cost(st)[0])
+        runs = cut_cost(starts)[1]
+        options.append([[(p, i) for i in run] for p in range(n_pos) for run in runs])
+    for rows in options:
+        rh = h / len(rows)
+        if rh - CAPTION < 20.0:
             continue
-        nrow = rows_per * n_pos
-        cw, ch = w / ncol, h / nrow
-        side = min(cw, ch - CAPTION)
-        if best is None or side > best[0] + 1e-9:
-            best = (side, ncol, rows_per, cw, ch)
-    side, ncol, rows_per, cw, ch = best  # type: ignore[misc]
-    out = []
-    for p in range(n_pos):
-        cells = []
-        for i in range(per_pos):
-            r, c = p * rows_per + i // ncol, i % ncol
-            # the last cell of a position (the lever) takes the rest of its row
-            c1 = ncol if i == per_pos - 1 else c + 1
-            cells.append(Rect(x0 + c * cw, y0 + r * ch, x0 + c1 * cw, y0 + (r + 1) * ch))
-        out.append(tuple(cells))
-    return side, tuple(out)
+        laid = [_row([shapes[p][i] for p, i in row], w, rh) for row in rows]
+        if any(nd > w + 1e-6 for _, _, _, nd in laid):  # the least widths overflow
+            continue
+        if any(rh < max(shapes[p][i].pad_h for p, i in row) + 10.0 for row in rows):
+            continue  # a figure's arrows and letters need more height than the row has
+        area = sum(a for _, _, a, _ in laid)
+        if best is None or area > best[0] * 1.02:
+            best = (area, rows, laid, rh)
+    fits = best is not None
+    if best is None:  # nothing fits: one row per position, as narrow as it comes
+        rows = [[(p, i) for i in range(per_pos)] for p in range(n_pos)]
+        rh = h / n_pos
+        best = (0.0, rows, [_row([shapes[p][i] for p, i in row], w, rh) for row in rows], rh)
+    _, rows, laid, rh = best
+    # each row as tall as its figures use; what is left of the height is the caller's
+    used = [min(rh, max(u, row_least)) for _, u, _, _ in laid]
+    out: list[list[Rect | None]] = [[None] * per_pos for _ in range(n_pos)]
+    y = y0
+    side = math.inf
+    for row, (widths, _, _, _), uh in zip(rows, laid, used, strict=True):
+        x = x0
+        for (p, i), wd in zip(row, widths, strict=True):
+            out[p][i] = Rect(x, y, x + wd, y + uh)
+            side = min(side, wd, rh - CAPTION) if fits else 0.0
+            x += wd
+        y += uh
+    need = max(nd for _, _, _, nd in laid)
+    return (side, tuple(tuple(c for c in cells if c is not None) for cells in out), y - y0,
+            best[0], need, rh)
 
 
-def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height) -> Sheet2Layout:
+def _stretch(rows, y0: float, extra: float):
+    """The cells moved down and made taller so that ``extra`` mm more height is shared by
+    their rows alike."""
+    tops = sorted({round(c.y0, 6) for cells in rows for c in cells})
+    each = extra / max(len(tops), 1)
+    shift = {t: n * each for n, t in enumerate(tops)}
+    return tuple(tuple(Rect(c.x0, c.y0 + shift[round(c.y0, 6)], c.x1,
+                            c.y1 + shift[round(c.y0, 6)] + each) for c in cells)
+                 for cells in rows)
+
+
+COLUMN_AREA = 0.8  #: the column is taken when its figures are this share of the strip's or more
+SIDE_W = 250.0  #: least width of sheet 2's column of the charts and the table (A1), mm
+CHART_MIN_H = 150.0  #: Q(s) goes under the table when it has this much height there, A1, mm
+STRIP_MAX = 0.42  #: sheet 2's strip of the charts grows to this share of the frame's height
+
+
+def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
+                  shapes=None, table_width: float | None = None) -> Sheet2Layout:
     """Cut ``page`` for sheet 2: as many of the ``n_wanted`` positions as give cells of at
     least :func:`sheet2_cell_min` (at least one), the strip of the charts and the table.
 
-    ``table_height(width)`` is the height the table needs (split into parts) in a box
-    ``width`` mm wide; the strip is as tall as the charts want or the table needs, the
-    table above the title block, right of the two charts. Raises LayoutError when even
-    one position leaves no useful cell.
+    ``shapes`` (per wanted position, a :class:`FigureShape` per figure in the order of the
+    force plans) sizes each cell to its figure (:func:`_sheet2_grid`): a thin group or plan
+    gets a narrow cell, one analysed position gets large figures. The height the figures do
+    not use (each is drawn at most at its cap) goes to the strip, whose charts grow up to
+    STRIP_MAX of the frame, then back to the rows. ``table_height(width)`` is the height
+    the table needs (split into parts) in a box ``width`` mm wide, ``table_width`` its
+    width in one part: the table stands above the title block, as wide as it needs, the
+    two charts share the rest of the strip's width. Raises LayoutError when even one
+    position leaves no useful cell.
     """
     f = page.frame
     k = min(1.0, f.height / 584.0)
     kw = min(1.0, f.width / 816.0)
     x0, x1 = f.x0 + 4.0, f.x1 - 4.0
-    tb_h = TITLE_BLOCK_SIZE[1]
-    wq, wm = CHART_W[0] * kw, CHART_W[1] * kw
-    tx0 = x0 + wq + GAP + wm + GAP
-    t_w = x1 - tx0
+    tb_w, tb_h = TITLE_BLOCK_SIZE
+    charts_min = (CHART_W[0] + CHART_W[1]) * kw + GAP
+    t_w = x1 - x0 - charts_min - GAP
+    if table_width is not None:
+        t_w = min(max(table_width, tb_w - 4.0), t_w)
     t_h = table_height(t_w)
     strip = max(SHEET2_STRIP * k, t_h + GAP + tb_h + 2.0)
     header = Rect(f.x0 + GRAPH26_SIZE[0] + GAP, f.y0 + 1.0, x1, f.y0 + GRAPH26_SIZE[1] - 1.0)
-    y0, y1 = f.y0 + GRAPH26_SIZE[1] + 3.0, f.y1 - strip - GAP
+    y0 = f.y0 + GRAPH26_SIZE[1] + 3.0
     per_pos = 2 * n_groups + 3
     least = sheet2_cell_min(page)
+    H = f.y1 - strip - GAP - y0
+    side_min = SIDE_W * kw
     for n in range(max(n_wanted, 1), 0, -1):
-        side, rows = _sheet2_grid(x0, y0, x1 - x0, y1 - y0, n, per_pos)
-        if side >= least or n == 1:
+        sh = [list(shapes[p]) if shapes else [UNIFORM] * per_pos for p in range(n)]
+        side, rows, used, area, _, rh = _sheet2_grid(x0, y0, x1 - x0, H, sh, 2 * least)
+        # several positions in rows under twice the least cell: their plans too small to read
+        side = side if n == 1 or rh >= 2 * least else min(side, rh / 2)
+        # the charts and the table in a column right of the figures, when the figures
+        # leave that width free at the full height of the frame
+        col = None
+        if shapes and n > 1:  # one position: its figures are few, the charts wide
+            full = f.y1 - 4.0 - y0
+            wg = x1 - x0 - side_min - GAP
+            g = _sheet2_grid(x0, y0, wg, full, sh, 2 * least)
+            # the column holds the table and two charts of a useful height
+            charts_h = f.y1 - tb_h - 2 * GAP - y0 - table_height(x1 - x0 - GAP - g[4])
+            if (g[0] >= least and g[4] <= wg + 1e-6 and g[3] >= COLUMN_AREA * area
+                    and charts_h >= 2 * CHART_MIN_H * k):
+                wg = g[4]  # the rows as wide as they need, the column the rest
+                col = (wg, _sheet2_grid(x0, y0, wg, full, sh, 2 * least))
+        if side >= least or n == 1 or col is not None:
             break
+    if col is not None:
+        wg, (side, rows, used, area, _, _) = col
+        rows = _stretch(rows, y0, f.y1 - 4.0 - y0 - used)
+        cx0 = x0 + wg + GAP
+        t_w2 = x1 - cx0
+        t_h2 = table_height(t_w2)
+        cy1 = f.y1 - tb_h - GAP
+        table = Rect(cx0, y0, x1, y0 + t_h2)
+        top = y0 + t_h2 + GAP
+        hm = (cy1 - top - GAP) * 0.55
+        return Sheet2Layout(page, rows, header, Rect(cx0, top + hm + GAP, x1, cy1),
+                            Rect(cx0, top, x1, top + hm), table)
     if side < 0.75 * least:
         raise LayoutError(f"sheet 2 leaves cells of {side:.0f} mm on {page.format}: "
                           "choose a larger format")
+    left = H - used
+    grow = min(left, max(STRIP_MAX * f.height - strip, 0.0))
+    strip += grow
+    rows = _stretch(rows, y0, left - grow)
     sy0, sy1 = f.y1 - strip, f.y1 - 4.0
+    tx0 = x1 - t_w
+    table = Rect(tx0, sy0, x1, f.y1 - tb_h - GAP)
+    under = Rect(tx0, sy0 + t_h + GAP, x1, f.y1 - tb_h - GAP)
+    if under.height >= 0.6 * CHART_MIN_H * k:
+        # a tall strip: Q(s) under the table, above the title block; Mур(φ) the rest
+        return Sheet2Layout(page, rows, header, under, Rect(x0, sy0, tx0 - GAP, sy1), table)
+    wc = tx0 - GAP - x0 - GAP
+    wq = wc * CHART_W[0] / (CHART_W[0] + CHART_W[1])
     return Sheet2Layout(page, rows, header, Rect(x0, sy0, x0 + wq, sy1),
-                        Rect(x0 + wq + GAP, sy0, x0 + wq + GAP + wm, sy1),
-                        Rect(tx0, sy0, x1, f.y1 - tb_h - GAP))
-
+                        Rect(x0 + wq + GAP, sy0, tx0 - GAP, sy1), table)
 
 def plan_room(cell: Rect) -> float:
     """The largest extent (diameter) of a plan that fits ``cell`` with its letters, mm."""

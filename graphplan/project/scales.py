@@ -25,6 +25,7 @@ from ..units import PLAN_SERIES, Scale, fit_scale, nice_ceil
 from .layout import (
     CAPTION,
     GAP,
+    LABEL_ROOM,
     VECTOR_HARD,
     VECTOR_MAX,
     Rect,
@@ -32,7 +33,6 @@ from .layout import (
     Sheet2Layout,
     cell_room,
     diagram_min,
-    plan_room,
     sheet1_layout,
     sheet2_layout,
     sheet2_table_header,
@@ -354,23 +354,43 @@ class Sheet2Scales:
 
     positions: tuple[int, ...]
     cells: tuple[tuple[Rect, ...], ...]
-    room_mm: float
+    room_mm: float | tuple[float, ...]  #: of each force plan, in their order
     kl: Scale | None = None  #: of the groups
     kl_crank: Scale | None = None  #: of the crank (its own: a short crank is drawn larger)
     layout: Sheet2Layout | None = None
     slots: dict[str, tuple[float, float]] | None = None
     wanted: tuple[int, ...] = ()
+    kls: tuple[Scale, ...] = ()  #: Kl of each figure: the groups, then the crank
 
     def lever_kv(self, kin, k: int) -> Scale:
         """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
         (any Kv gives the same Mур; the arms in mm are read at this one)."""
-        cell = self.cells[0][-1]
+        row = self.positions.index(k) if k in self.positions else 0
+        cell = self.cells[row][-1]
         v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
-        ext = float(np.max(np.ptp(v, axis=0)))
-        # the loads are drawn up to FORCE_ARROW_MM (30 mm) from their points
-        side = min(cell.width, cell.height - CAPTION)
-        room = max(side - 60.0, 0.4 * side)
-        return Scale("Kv", nice_ceil(max(ext, 1e-12) / room), "(m/s)/mm")
+        w, h = (float(x) for x in np.ptp(v, axis=0))
+        # the loads are drawn up to FORCE_ARROW_MM (30 mm) from their points; the plan is
+        # turned by 90°: its width is the cell's height
+        tall = max(cell.height - CAPTION - LEVER_PAD, 0.25 * (cell.height - CAPTION))
+        wide = max(cell.width - LEVER_PAD, 0.25 * cell.width)
+        room = min(tall / max(w, 1e-12), wide / max(h, 1e-12)) * max(w, h, 1e-12)
+        room = min(room, LEVER_CAP)
+        return Scale("Kv", nice_ceil(max(w, h, 1e-12) / room), "(m/s)/mm")
+
+    def figure_kl(self, i: int) -> Scale:
+        """Kl of the i-th figure (the groups from the last attached, then the crank)."""
+        if self.kls and i < len(self.kls):
+            return self.kls[i]
+        assert self.kl is not None and self.kl_crank is not None
+        return self.kl_crank if i == len(self.cells[0]) // 2 - 1 else self.kl
+
+
+LEVER_PAD = 60.0  #: kept around Zhukovsky's lever in its cell for the loads' arrows, mm
+LEVER_CAP = 110.0  #: the longest side of the lever's turned velocity plan at most, mm
+PLAN_CAP = 110.0  #: a force plan's extent at most (its longest vector within 100 mm), mm
+GROUP_CAP = 160.0  #: the longest side of a group drawn separately at most, mm
+CRANK_CAP = 140.0  #: the longest side of the crank drawn separately at most, mm
+PLAN_CELL_W = 90.0  #: least width of a force plan's cell (its letters crowd a thin plan), mm
 
 
 GROUP_ROOM = 18.0  #: kept on each side of a group drawn on sheet 2 for its loads' arrows, mm
@@ -384,31 +404,82 @@ def group_links(mech: Mechanism) -> list[tuple[str, ...]]:
         (mech.crank.link,)]
 
 
-def _group_kl(mech: Mechanism, kin, positions, rows, crank: bool = False) -> Scale:
-    """Kl of the groups drawn separately (``crank``: of the crank): the usual series value
-    (1, 2, 2.5, 4, 5 × 10^k) at which every group (the crank) of every position fits its
-    cell with its arrows."""
+def _points_of(mech, kin, links, k):
+    return np.array([kin.pos.points[p][k] for ln in links for p in mech.points_of(ln)
+                     if p in kin.pos.points])
+
+
+def _group_kl(mech: Mechanism, kin, positions, rows, fig: int) -> Scale:
+    """Kl of figure ``fig`` (a group drawn separately, or the crank): the usual series
+    value (1, 2, 2.5, 4, 5 × 10^k) at which it fits its cell, with its arrows and
+    equations, in every position."""
     need = 0.0
-    figures = group_links(mech)
+    links = group_links(mech)[fig]
     for k, cells in zip(positions, rows, strict=False):
-        for n, links in enumerate(figures):
-            if (n == len(figures) - 1) != crank:
-                continue
-            cell = cells[2 * n]
-            pts = np.array([kin.pos.points[p][k] for ln in links for p in mech.points_of(ln)
-                            if p in kin.pos.points])
-            if len(pts) < 2:
-                continue
-            w, h = np.ptp(pts, axis=0)
-            rw = max(cell.width - 2 * GROUP_ROOM, 10.0)
-            rh = max(cell.height - CAPTION - 2 * GROUP_ROOM - GROUP_EQ_ROOM, 10.0)
-            need = max(need, float(w) / rw, float(h) / rh)
+        cell = cells[2 * fig]
+        pts = _points_of(mech, kin, links, k)
+        if len(pts) < 2:
+            continue
+        w, h = np.ptp(pts, axis=0)
+        rw = max(cell.width - 2 * GROUP_ROOM, 10.0)
+        rh = max(cell.height - CAPTION - 2 * GROUP_ROOM - GROUP_EQ_ROOM, 10.0)
+        need = max(need, float(w) / rw, float(h) / rh)
     return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
 
 
-def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None
-                  ) -> Sheet2Scales:
-    """Positions, cells, plan room and Kl of sheet 2 (see :mod:`graphplan.drawing.sheet2`)."""
+def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page):
+    """The :class:`FigureShape` of each figure sheet 2 draws for position k, in the order
+    of its cells: per group (from the last attached) its scheme and its force plan, the
+    crank and its plan, Zhukovsky's lever. Shapes from the kinematics (the schemes, the
+    lever's velocity plan) and from the force plans' ``units`` (:func:`plan_units`)."""
+    from .layout import FigureShape
+
+    s = min(1.0, page.frame.height / 584.0)
+    least = max(45.0, 60.0 * s)
+
+    def aspect(w: float, h: float) -> float:
+        return float(np.clip(w / max(h, 1e-12), 0.08, 8.0)) if max(w, h) > 0 else 1.0
+
+    out = []
+    pad_g = (2 * GROUP_ROOM, CAPTION + 2 * GROUP_ROOM + GROUP_EQ_ROOM)
+    pad_p = (2 * LABEL_ROOM + 16.0, CAPTION + 2 * LABEL_ROOM + 9.0)  # the letters at the sides
+    for n, (links, (uw, uh)) in enumerate(zip(group_links(mech), units, strict=True)):
+        w, h = (float(x) for x in np.ptp(_points_of(mech, kin, links, k), axis=0))
+        crank = n == len(units) - 1
+        out.append(FigureShape(aspect(w, h), (CRANK_CAP if crank else GROUP_CAP) * s,
+                               *pad_g, least))
+        # the plan's extent is PLAN_CAP at most: its longest side that share of it
+        out.append(FigureShape(aspect(uw, uh), PLAN_CAP * s * max(uw, uh), *pad_p,
+                               max(least, PLAN_CELL_W * s)))
+    v = np.array([np.zeros(2)] + [p[k] for p in kin.vel.points.values()])
+    vw, vh = (float(x) for x in np.ptp(v, axis=0))
+    # its loads' arrows are FORCE_ARROW_MM long on any format: the cell keeps room for them
+    out.append(FigureShape(aspect(vh, vw), LEVER_CAP * s, LEVER_PAD, CAPTION + LEVER_PAD,
+                           max(least, LEVER_PAD + 40.0)))
+    return out
+
+
+def plan_units(mech: Mechanism, kin, forces, loads, k: int, kl: Scale
+               ) -> list[tuple[float, float]]:
+    """Width and height of each force plan of position k per mm of its extent."""
+    from ..plans import force_plans
+
+    out = []
+    for fp in force_plans(mech, kin, forces, loads, k, kl, room_mm=100.0):
+        pts = np.array(list(fp.points.values()))
+        ext = max(fp.extent_mm, 1e-9)
+        pw, ph = (float(x) for x in np.ptp(pts, axis=0))
+        out.append((pw / ext, ph / ext))
+    return out
+
+
+def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
+                  loads=None) -> Sheet2Scales:
+    """Positions, cells, plan room and Kl of sheet 2 (see :mod:`graphplan.drawing.sheet2`);
+    ``loads``: the project's (computed here when not given)."""
+    from ..forces import compute_loads
+    from .layout import _column_widths
+
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
     wanted = sheet2_positions(mech, kin, forces, cycle)
     header = sheet2_table_header(forces.reactions, "ru")
@@ -422,13 +493,26 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None
     def table_height(width: float) -> float:
         return split_table_height(header, sample, 0.9 * width)
 
-    lay = sheet2_layout(page, len(mech.dyads), len(wanted), table_height)
+    loads = compute_loads(mech, kin, cycle) if loads is None else loads
+    trial = Scale("Kl", 0.001, "m/mm")
+    units = {k: plan_units(mech, kin, forces, loads, k, trial) for k in wanted}
+    shapes = [figure_shapes(mech, kin, units[k], k, page) for k in wanted]
+    lay = sheet2_layout(page, len(mech.dyads), len(wanted), table_height, shapes,
+                        sum(_column_widths(header, sample)) / 0.9)
     positions = wanted[:len(lay.rows)]
-    kl = _group_kl(mech, kin, positions, lay.rows)
-    # the crank at the groups' scale or larger
-    kl_crank = Scale("Kl", min(kl.per_mm, _group_kl(mech, kin, positions, lay.rows, True).per_mm),
-                     "m/mm")
+    n_fig = len(mech.dyads) + 1
+    kls = tuple(_group_kl(mech, kin, positions, lay.rows, i) for i in range(n_fig))
+    # each plan's room: the extent its cells hold in every position (PLAN_CAP at most)
+    s = min(1.0, page.frame.height / 584.0)
+    rooms = []
+    for i in range(n_fig):
+        room = PLAN_CAP * s
+        for k, cells, sh in zip(positions, lay.rows, shapes, strict=False):
+            cell, (uw, uh), fs = cells[2 * i + 1], units[k][i], sh[2 * i + 1]
+            room = min(room, (cell.width - fs.pad_w) / max(uw, 1e-9),
+                       (cell.height - fs.pad_h) / max(uh, 1e-9))
+        rooms.append(max(room, 20.0))
     slots = slot_ranges(mech, one_turn(mech, kin)) if any(
         key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
-    return Sheet2Scales(positions, lay.rows, plan_room(lay.rows[0][1]), kl, kl_crank, lay, slots,
-                        wanted)
+    return Sheet2Scales(positions, lay.rows, tuple(rooms), kls[0], kls[-1], lay, slots, wanted,
+                        kls)

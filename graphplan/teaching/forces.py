@@ -42,11 +42,10 @@ def forces_lesson(analysis, k: int) -> Lesson:
     panels: list[Panel] = []
     steps: list[LessonStep] = []
     known: dict = {}
-    for fp in plans:
+    for i, fp in enumerate(plans):
         links = _plan_links(mech, fp)
         crank = fp.group.startswith("crank")
-        kl = s2.kl_crank if crank else s2.kl  # as sheet 2 draws the group or the crank
-        assert kl is not None  # sheet2_scales sets both
+        kl = s2.figure_kl(i)  # as sheet 2 draws the group or the crank
         P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
         name = {"ru": f"кривошип {mech.crank.link}" if crank else group_name(fp.group, "ru"),
                 "en": f"crank {mech.crank.link}" if crank else group_name(fp.group, "en")}
