@@ -383,10 +383,14 @@ FORCE_TODO = {
     "fourbar": "positions 3 and 10: Rτ43 written beside R43's line, G2/Pи2/G3 under a "
                "cluster of collinear arrows drawn over each other",
     "offset_slider": "position 4: Rτ12 (2.4 mm) read at its 4.7 mm neighbour",
-    "slotter": "position 3: G3 (3.9 mm) drawn as a 0.9 mm stub and its head, read as the "
-               "head alone (3.0 mm)",
-    "crusher-svg": "position 4: G5 (5.0 mm) drawn on one line with G4 (0.4 mm), its name "
-                   "10 mm under the cluster: read as the line of both (5.6 mm)",
+    "crusher": "position 4: G5 (5.0 mm) drawn on one line with G4 (0.4 mm), its name "
+               "10 mm under the cluster: read as the line of both (5.6 mm); in the DXF also "
+               "R12's names read at another line",
+    # since sheet 2's cells were sized to their figures (093536f, after the reader's last
+    # change): the sheet's plans equal the rebuilt ones (tests/test_teach_sheets.py), the
+    # reader misreads these
+    "engine": "position 14: ∠R12 read off another line of the enlarged plan (false 'direction')",
+    "pump": "position 8: the polygon read as not closing (false 'closure')",
 }
 
 

@@ -238,7 +238,7 @@ def test_sheet_1_carries_the_structural_analysis(analysis, sheet, name):
     assert texts["structure-title"] == "Структурный анализ"
     assert a.structure.mobility_equation in body
     assert any(a.structure.formula in t for t in body)
-    assert sum("группа II класса" in t for t in body) == len(a.structure.groups)
+    assert sum("группа Ассура II класса 2-го порядка" in t for t in body) == len(a.structure.groups)
     key = "ψ = " if a.cycle.output_kind == "rocker" else "H = "
     assert any(t.startswith(key) for t in body)
 

@@ -127,8 +127,8 @@ def _plan_panels(les) -> list[int]:
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
 def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
-    """The force lesson = sheet 2's force plans (the groups' arms at sheet 2's Kl, the crank's
-    at its own), the lever lesson = sheet 2's lever (its Kl and Kv), at the sheet's positions
+    """The force lesson = sheet 2's force plans (each group's arms at its scheme's Kl, the
+    crank's at its own), the lever lesson = sheet 2's lever (its Kl and Kv), at the sheet's positions
     (read off the sheet) and at every position (rebuilt from sheet 2's scales)."""
     p = solved(path)
     s2 = p.sheet2
@@ -136,10 +136,10 @@ def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
     compared = 0
     for k, label in enumerate(p.kin.labels):
         les = lesson(p, "forces", label)
-        plans = force_plans(p.mech, p.kin, p.forces, p.loads, k, s2.kl, room_mm=s2.room_mm)
-        crank = force_plans(p.mech, p.kin, p.forces, p.loads, k, s2.kl_crank,
-                            room_mm=s2.room_mm)[-1]
-        plans = (*plans[:-1], crank)
+        # each figure (the groups, then the crank) at its own Kl, as sheet 2 draws it
+        kls = [s2.figure_kl(i) for i in range(len(p.mech.dyads) + 1)]
+        plans = tuple(force_plans(p.mech, p.kin, p.forces, p.loads, k, kl,
+                                  room_mm=s2.room_mm)[i] for i, kl in enumerate(kls))
         panels = _plan_panels(les)
         assert len(panels) == len(plans)
         for i, (panel, fp) in enumerate(zip(panels, plans, strict=True)):
@@ -147,7 +147,7 @@ def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
             assert les.panels[panel].scale == fp.scale.basis
             scheme = les.panels[panel - 1]
             assert scheme.key == f"scheme-{fp.group}"
-            assert scheme.scale == (s2.kl_crank if i == len(plans) - 1 else s2.kl).basis
+            assert scheme.scale == kls[i].basis
             mine = _vectors(m for s in les.steps if s.panel == panel for m in s.marks)
             _same(mine, _plan_vectors(fp), f"forces {label} {fp.group}: rebuilt")
             assert _letters(les, panel) == set(fp.points), (label, fp.group)
