@@ -128,8 +128,8 @@ def _plan_panels(les) -> list[int]:
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
 def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
     """The force lesson = sheet 2's force plans (each group's arms at its scheme's Kl, the
-    crank's at its own), the lever lesson = sheet 2's lever (its Kl and Kv), at the sheet's positions
-    (read off the sheet) and at every position (rebuilt from sheet 2's scales)."""
+    crank's at its own), the lever lesson = sheet 2's lever (its Kl and Kv), at the sheet's
+    positions (read off the sheet) and at every position (rebuilt from sheet 2's scales)."""
     p = solved(path)
     s2 = p.sheet2
     sheet2 = drawn(path, 2, "en")
