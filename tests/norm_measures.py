@@ -18,6 +18,7 @@ from __future__ import annotations
 import io
 import math
 import re
+import statistics
 
 import numpy as np
 import pytest
@@ -111,3 +112,32 @@ def overlaps(sh) -> list[str]:
                 out.append(f"text {t.text!r} ({t.id}) crossed by {type(it).__name__} "
                            f"{it.id} [{it.layer}]")
     return out
+
+
+
+# ------------------------------------------------- the checks both test files make
+
+
+def check_links_on_sheet_1(a, sheet) -> None:
+    """Every moving link drawn in every position of the plan of positions."""
+    moving = set(a.mech.moving_links)
+    drawn = drawn_links(sheet, "pp-")
+    for k in range(a.kin.n):
+        assert moving <= drawn.get(f"pp-{k}", set()), (k, moving - drawn.get(f"pp-{k}", set()))
+
+
+def check_links_on_sheet_2(a, sheet) -> None:
+    """Every moving link drawn in every scheme of sheet 2 (its groups and its crank)."""
+    moving = set(a.mech.moving_links)
+    drawn = drawn_links(sheet, "s2p")
+    assert drawn
+    for fig, links in drawn.items():
+        assert moving <= links, (fig, moving - links)
+
+
+def check_plans_readable(sheet) -> None:
+    """Each plan's longest vector ≥ LONGEST_MIN and their median ≥ MEDIAN_MIN, in mm."""
+    longest = plan_longest(sheet)
+    assert longest
+    assert min(longest.values()) >= LONGEST_MIN, sorted(longest.items(), key=lambda kv: kv[1])[:3]
+    assert statistics.median(longest.values()) >= MEDIAN_MIN
