@@ -55,7 +55,7 @@ from .fonts import (
 )
 from .labels import LabelRequest, merge_coincident, place_labels
 from .mpl_items import MIN_WIDTH, figure_items
-from .scheme import mechanism_scheme, scheme_links
+from .scheme import mechanism_scheme, scheme_links, scheme_paper
 from .sheet import (
     DASHDOT,
     DASHDOTDOT,
@@ -245,6 +245,7 @@ __all__ = [
     "results_lines",
     "scales_items",
     "scheme_links",
+    "scheme_paper",
     "signatures",
     "slider_point",
     "spaced_labels",

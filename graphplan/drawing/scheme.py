@@ -10,6 +10,7 @@ draw the link its step is about in colour (:func:`scheme_links`).
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
@@ -31,13 +32,14 @@ LAYER = "position_plan"
 _PAD = 14.0  #: room around the links for the supports and the letters, mm
 
 
-def mechanism_scheme(analysis, k: int, width_mm: float = 120.0,
-                     height_mm: float = 90.0) -> tuple[Item, ...]:
-    """The mechanism at position ``k`` in a box (0, 0)–(width_mm, height_mm), y down."""
+def scheme_paper(analysis, k: int, width_mm: float = 120.0,
+                 height_mm: float = 90.0) -> Callable[[object], tuple[float, float]]:
+    """Model metres → the mm of :func:`mechanism_scheme`'s box (y down): the mechanism at
+    position ``k`` centred in the box at the round Kl that fits it with a margin,
+    ``(x, y) = origin + ((X, Y) − O)·(1, −1) / Kl``."""
     mech, kin = analysis.mech, analysis.kin
-    pts = {n: p[k] for n, p in kin.pos.points.items()}
-    allp = np.array(list(pts.values()) + [np.asarray(v, float)
-                                          for v in mech.frame_points.values()])
+    allp = np.array([p[k] for p in kin.pos.points.values()]
+                    + [np.asarray(v, float) for v in mech.frame_points.values()])
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     ext = np.maximum(hi - lo, 1e-9)
     kl = nice_ceil(float(np.max(ext / (np.array([width_mm, height_mm]) - 2 * _PAD))))
@@ -45,7 +47,15 @@ def mechanism_scheme(analysis, k: int, width_mm: float = 120.0,
     mid = (lo + hi) / 2
     origin = (width_mm / 2 + float(pivot[0] - mid[0]) / kl,
               height_mm / 2 - float(pivot[1] - mid[1]) / kl)
-    P = _Paper(origin, kl, pivot)
+    return _Paper(origin, kl, pivot)
+
+
+def mechanism_scheme(analysis, k: int, width_mm: float = 120.0,
+                     height_mm: float = 90.0) -> tuple[Item, ...]:
+    """The mechanism at position ``k`` in a box (0, 0)–(width_mm, height_mm), y down."""
+    mech, kin = analysis.mech, analysis.kin
+    pts = {n: p[k] for n, p in kin.pos.points.items()}
+    P = scheme_paper(analysis, k, width_mm, height_mm)
     items: list[Item] = list(link_items(mech, kin, k, P, MAIN, "scheme", LAYER))
     for key, (G, u) in kin.pos.guides.items():
         slider, carrier = key.split("/")

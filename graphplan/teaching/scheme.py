@@ -90,6 +90,19 @@ SCHEME_WIDTH_MM = 120.0
 SCHEME_HEIGHT_MM = (90.0, 240.0)
 
 
+def _scheme_height(analysis, k: int) -> float:
+    """The lesson scheme's height: the mechanism's own proportion at
+    :data:`SCHEME_WIDTH_MM`, within :data:`SCHEME_HEIGHT_MM`."""
+    import numpy as np
+
+    mech, kin = analysis.mech, analysis.kin
+    pts = np.array([p[k] for p in kin.pos.points.values()]
+                   + [np.asarray(v, float) for v in mech.frame_points.values()])
+    ext = np.maximum(np.ptp(pts, axis=0), 1e-9)
+    lo, hi = SCHEME_HEIGHT_MM
+    return float(min(hi, max(lo, SCHEME_WIDTH_MM * ext[1] / ext[0])))
+
+
 def lesson_scheme(analysis, k: int) -> tuple:
     """The mechanism at position k for the column beside a lesson's plan, readable however
     tall it is.
@@ -101,8 +114,6 @@ def lesson_scheme(analysis, k: int) -> tuple:
     are placed again, clear of each other and of the links
     (:func:`graphplan.drawing.place_labels`, letters of coincident points written as one).
     """
-    import numpy as np
-
     from ..drawing import (
         Group,
         LabelRequest,
@@ -112,13 +123,7 @@ def lesson_scheme(analysis, k: int) -> tuple:
         place_labels,
     )
 
-    mech, kin = analysis.mech, analysis.kin
-    pts = np.array([p[k] for p in kin.pos.points.values()]
-                   + [np.asarray(v, float) for v in mech.frame_points.values()])
-    ext = np.maximum(np.ptp(pts, axis=0), 1e-9)
-    lo, hi = SCHEME_HEIGHT_MM
-    height = float(min(hi, max(lo, SCHEME_WIDTH_MM * ext[1] / ext[0])))
-    items = mechanism_scheme(analysis, k, SCHEME_WIDTH_MM, height)
+    items = mechanism_scheme(analysis, k, SCHEME_WIDTH_MM, _scheme_height(analysis, k))
     labels = [it for it in items if isinstance(it, Text)
               and (it.id or "").startswith("scheme-label-")]
     rest = [it for it in items if it not in labels]
@@ -144,32 +149,21 @@ def mechanism_picture(analysis, lang: str = "ru") -> str:
     """
     import math
 
-    import numpy as np
     import svgwrite
 
-    from ..drawing import Circle, Polyline, Style, Text
+    from ..drawing import Polyline, Style, Text, scheme_paper
     from ..numbers import plain
     from ..render import svg as svg_render
 
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
     items = list(lesson_scheme(analysis, 0))
-    # the scheme's mm ↔ the model's m, from two of its joints (one scale, y down)
-    joints = {(it.id or "").removeprefix("scheme-joint-"): it.centre for it in items
-              if isinstance(it, Circle) and (it.id or "").startswith("scheme-joint-")}
-    pair = [j for j in joints if j in kin.pos.points][:2]
+    paper = scheme_paper(analysis, 0, SCHEME_WIDTH_MM, _scheme_height(analysis, 0))
     out_pts = [p for p in mech.points_of(mech.output.link) if p in kin.pos.points
                and p not in mech.frame_points]
-    if len(pair) == 2:
-        (a, b), (qa, qb) = pair, (kin.pos.points[pair[0]][0], kin.pos.points[pair[1]][0])
-        span = float(np.hypot(*(qb - qa)))
-        s = math.dist(joints[a], joints[b]) / span if span > 0 else 0.0
-        if s > 0:
-            for p in out_pts:
-                path = kin.pos.points[p]
-                xy = tuple((joints[a][0] + (float(x) - float(qa[0])) * s,
-                            joints[a][1] - (float(y) - float(qa[1])) * s) for x, y in path)
-                items.append(Polyline(xy, Style(0.25, (3.0, 1.5)), True,
-                                      layer="position_plan", id=f"path-{p}"))
+    for p in out_pts:  # the scheme's own transform: its paths fall on its joints
+        items.append(Polyline(tuple(paper(xy) for xy in kin.pos.points[p]),
+                              Style(0.25, (3.0, 1.5)), True, layer="position_plan",
+                              id=f"path-{p}"))
     ru = lang == "ru"
     sense = (("против часовой стрелки" if ru else "counter-clockwise") if mech.crank.sense > 0
              else ("по часовой стрелке" if ru else "clockwise"))
