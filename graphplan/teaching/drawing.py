@@ -222,9 +222,7 @@ def frame_svg(lesson: Lesson, number: int, *, lang: str = "ru", standalone: bool
                                 layer=_LAYER))
         w = max(w, max(text_box(t).bounds[2] for t in heading) - x0 + 4.0)
     vb = (x0, y0 - head, w, h + head)
-    dwg = svgwrite.Drawing(size=(f"{svg_render.num(vb[2])}mm", f"{svg_render.num(vb[3])}mm"),
-                           viewBox=" ".join(svg_render.num(v) for v in vb), profile="full",
-                           debug=False)
+    dwg = svg_document(vb)
     dwg.attribs["class"] = "frame"
     dwg.attribs["data-step"] = str(number)
     if standalone and font_css:
@@ -288,9 +286,7 @@ def scheme_svg(lesson: Lesson, number: int) -> str:
         xs += [x0, x1]
         ys += [y0, y1]
     vb = (min(xs) - 3.0, min(ys) - 5.0, max(xs) - min(xs) + 8.0, max(ys) - min(ys) + 8.0)
-    dwg = svgwrite.Drawing(size=(f"{svg_render.num(vb[2])}mm", f"{svg_render.num(vb[3])}mm"),
-                           viewBox=" ".join(svg_render.num(v) for v in vb), profile="full",
-                           debug=False)
+    dwg = svg_document(vb)
     dwg.attribs["class"] = "scheme"
     dwg.attribs["data-links"] = " ".join(step.links)
     rest, lit_g = dwg.g(**{"class": "links"}), dwg.g(**{"class": "lit"})
@@ -312,6 +308,14 @@ def scheme_svg(lesson: Lesson, number: int) -> str:
     dwg.add(lit_g)
     return dwg.tostring()
 
+
+
+def svg_document(vb: tuple[float, float, float, float]) -> svgwrite.Drawing:
+    """An empty SVG of the view box ``vb`` = (x, y, width, height) in mm (a user unit is a
+    mm), for a lesson's frame, its scheme or ``analyze --picture``."""
+    return svgwrite.Drawing(size=(f"{svg_render.num(vb[2])}mm", f"{svg_render.num(vb[3])}mm"),
+                            viewBox=" ".join(svg_render.num(v) for v in vb), profile="full",
+                            debug=False)
 
 def bar_mm(zoom: float) -> float:
     """Length of a frame's scale bar: 10 mm, or 20, 50 mm on a large panel."""

@@ -149,11 +149,10 @@ def mechanism_picture(analysis, lang: str = "ru") -> str:
     """
     import math
 
-    import svgwrite
-
     from ..drawing import Polyline, Style, Text, scheme_paper
     from ..numbers import plain
     from ..render import svg as svg_render
+    from .drawing import svg_document
 
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
     items = list(lesson_scheme(analysis, 0))
@@ -194,9 +193,7 @@ def mechanism_picture(analysis, lang: str = "ru") -> str:
                           id=f"picture-line-{n}"))
         width = max(width, text_box(items[-1]).bounds[2] - x0 + 4.0)
     height = top + 6.0 * len(lines) - y0
-    dwg = svgwrite.Drawing(size=(f"{svg_render.num(width)}mm", f"{svg_render.num(height)}mm"),
-                           viewBox=" ".join(svg_render.num(v) for v in (x0, y0, width, height)),
-                           profile="full", debug=False)
+    dwg = svg_document((x0, y0, width, height))
     dwg.add(dwg.rect((x0, y0), (width, height), fill="white"))
     for it in items:
         dwg.add(svg_render._element(dwg, it))
