@@ -115,3 +115,33 @@ def test_no_fork_with_threads(monkeypatch):
     finally:
         stop.set()
         t.join()
+
+
+def test_a_refused_hand_over_draws_in_line(monkeypatch):
+    """A pool that cannot fork (OSError on the hand-over) draws this preview and every later
+    one in line; a preview's own error made in line is raised as it is, not caught or
+    chained to the hand-over's."""
+    monkeypatch.setenv(workers.JOBS_ENV, "2")
+    handed: list = []
+
+    class Refusing:
+        def __init__(self, *a, **kw):
+            pass
+
+        def submit(self, fn, *args):
+            handed.append(fn)
+            raise OSError("fork refused")
+
+        def shutdown(self, **kw):
+            pass
+
+    monkeypatch.setattr(workers, "ProcessPoolExecutor", Refusing)
+    monkeypatch.setattr(workers, "worker_count", lambda tasks: 2)
+    monkeypatch.setattr(workers.threading, "active_count", lambda: 1)
+    with PreviewPool(3) as pool:
+        assert pool.submit(_square, 7) == 49  # refused, drawn here
+        assert pool.workers == 0
+        with pytest.raises(ValueError, match="bad 8") as err:
+            pool.submit(_fail, 8)
+        assert err.value.__context__ is None  # not raised while handling the refusal
+    assert handed == [_square]  # once refused, never handed over again

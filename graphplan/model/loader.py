@@ -910,216 +910,280 @@ def _loads(r: _Reader, data: dict, ctx: dict) -> list[Resistance]:
     the crank's travel in radians; a bare ``diagram`` keeps the classical meaning: the
     output's working stroke, resisting.
     """
-    frame_link, link_points = ctx["frame_link"], ctx["link_points"]
-    dyads, crank, output, unit = ctx["dyads"], ctx["crank"], ctx["output"], ctx["unit"]
-    cycle = ctx["cycle"]
-    n_strokes = 2 * cycle // 360
-    moving = [x for x in ctx["link_order"] if x != frame_link]
-    out: list[Resistance] = []
-    raw_loads = r.array(data.get("loads", []), "loads")
     names: set[str] = set()
-    needs_two_turns = False
-    for n, lt in enumerate(raw_loads):
-        path = f"loads[{n}]"
-        r.table(lt, path)
-        r.keys(lt, path, LOAD_KEYS, {"link"})
-        gas = "bore" in lt
-        if "kind" in lt:
-            kind = r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
-        elif gas:
-            kind = "force"
-        else:
-            raise r.fail(f"{path}.kind", "missing required key ('force' or 'moment')")
-        ln = r.link(lt["link"], f"{path}.link")
-        if ln == frame_link:
-            raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
-        if ln not in link_points:
-            raise r.fail(f"{path}.link", f"link {ln!r} is not a link of this mechanism "
-                         f"(moving links: {', '.join(moving)})")
-        name = None
-        if "name" in lt:
-            name = r.string(lt["name"], f"{path}.name").strip()
-            if not name or _CONTROL.search(name) or _MARKUP.search(name) or len(name) > 12:
-                raise r.fail(f"{path}.name", f"expected a short one-line name like 'Fг' "
-                             f"(got {lt['name']!r})")
-            if name in names:
-                raise r.fail(f"{path}.name", f"name {name!r} is already used by another load")
-            names.add(name)
-        point = None
-        if kind == "force":
-            if "point" not in lt:
-                raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
-            point = r.name(lt["point"], f"{path}.point")
-            if point not in link_points[ln]:
-                raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
-                             f"(its points: {', '.join(link_points[ln])})")
-        elif "point" in lt:
-            raise r.fail(f"{path}.point", "a moment load has no point")
-        elif _translates_on_frame(ln, dyads, frame_link):
-            raise r.fail(f"{path}.link", f"a couple on link {ln!r}, which only translates on a "
-                         "frame guide, does no work (put a force on it)")
-        if gas and kind != "force":
-            raise r.fail(f"{path}.bore", "a pressure (bore) gives a force on a piston, "
-                         "not a moment")
-        slider = _translates_on_frame(ln, dyads, frame_link)
-        rocker = _rotates_about_frame(ln, dyads, crank, ctx["known_points"], frame_link)
-        if gas and not slider:
-            raise r.fail(f"{path}.link", f"a gas force (bore) acts on a piston sliding in a "
-                         f"frame guide (cylinder); link {ln!r} is not one")
-        sense = r.string(lt.get("sense", "diagram" if gas else "resists"), f"{path}.sense",
-                         ("resists", "drives", "diagram"))
-        angle = None
-        if "angle" in lt:
-            if kind != "force" or sense != "diagram":
-                raise r.fail(f"{path}.angle", "the direction 'angle' goes with a force of "
-                             "sense = \"diagram\"; a resisting or driving load follows the motion")
-            angle = math.radians(r.number(lt["angle"], f"{path}.angle"))
-        elif kind == "force" and sense == "diagram" and not slider:
-            raise r.fail(f"{path}.angle", f"missing: the direction of the force (degrees) — "
-                         f"link {ln!r} does not slide on a frame guide to give one")
-        over = r.string(lt.get("over", "stroke"), f"{path}.over", ("stroke", "crank"))
-        # the link whose travel is the abscissa
-        if "travel_link" in lt:
-            tl = r.link(lt["travel_link"], f"{path}.travel_link")
-            if tl not in link_points or tl == frame_link:
-                raise r.fail(f"{path}.travel_link", f"link {tl!r} is not a moving link of this "
-                             f"mechanism (moving links: {', '.join(moving)})")
-        else:
-            tl = ln if (slider or (rocker and ln != crank.link)) else output.link
-        working = output.working
-        if "working" in lt:
-            working = 1 if r.string(lt["working"], f"{path}.working", ("+", "-")) == "+" else -1
-        phase = math.radians(r.number(lt.get("phase", 0.0), f"{path}.phase", lo=0.0,
-                                      hi=float(cycle)))
-        # the scale of the values
-        offset = 0.0
-        if gas:
-            if "unit" in lt:
-                raise r.fail(f"{path}.unit", "a gas force is p·πD²/4: its unit is "
-                             "pressure_unit (MPa, bar …), with the bore in the length unit")
-            for k in ("max", "value"):
-                if k in lt:
-                    raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
-                                 "(diagram/strokes, p_max) and the bore, not the force")
-            D = r.length(lt["bore"], f"{path}.bore", unit)
-            area = math.pi * D * D / 4.0
-            pu = r.string(lt.get("pressure_unit", "MPa"), f"{path}.pressure_unit",
-                          tuple(PRESSURE_UNITS))
-            pmax = r.number(lt.get("p_max", 1.0), f"{path}.p_max", positive=True, hi=1e9)
-            pamb = r.number(lt.get("p_ambient", 0.0), f"{path}.p_ambient", nonneg=True, hi=1e9)
-            maximum = pmax * PRESSURE_UNITS[pu] * area
-            offset = pamb * PRESSURE_UNITS[pu] * area
-            if maximum > MAX_LOAD:
-                raise r.fail(f"{path}.p_max", f"p_max·πD²/4 = {maximum:.3g} N is beyond "
-                             f"{MAX_LOAD:g} N (check pressure_unit and bore)")
-        else:
-            for k in ("p_max", "p_ambient", "pressure_unit"):
-                if k in lt:
-                    raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
-            units = FORCE_UNITS if kind == "force" else MOMENT_UNITS
-            factor = units[r.string(lt.get("unit", "N" if kind == "force" else "N·m"),
-                                    f"{path}.unit", tuple(units))]
-            top = MAX_LOAD / factor
-            if "value" in lt:
-                for k in ("max", "diagram", "strokes", "travel"):
-                    if k in lt:
-                        raise r.fail(f"{path}.{k}", "a constant load is given by 'value' alone")
-                lo = -top if sense == "diagram" else 0.0
-                maximum = 1.0
-                const = r.number(lt["value"], f"{path}.value", lo=lo, hi=top) * factor
-            elif "max" not in lt:
-                raise r.fail(f"{path}.max", "missing required key (the scale of the diagram, "
-                             "N or N·m; or give 'value' for a constant load)")
-            else:
-                maximum = r.number(lt["max"], f"{path}.max", nonneg=True, hi=top) * factor
-        signed = sense == "diagram"
-        strokes: tuple = ()
-        if "value" in lt:  # constant: the whole cycle, or the strokes named
-            if "stroke" in lt:
-                which = r.string(lt["stroke"], f"{path}.stroke", STROKE_SETS)
-                d: Diagram = ((0.0, const), (1.0, const))
-                strokes = _stroke_set(which, d, n_strokes)
-            else:
-                over = "crank"
-                strokes = (((0.0, const), (math.radians(cycle), const)),)
-        elif over == "crank":
-            for k in ("stroke", "strokes", "travel"):
-                if k in lt:
-                    raise r.fail(f"{path}.{k}", "a diagram over the crank angle has no strokes")
-            if "diagram" not in lt:
-                raise r.fail(f"{path}.diagram", "missing required key (pairs [φ°, value])")
-            d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=float(cycle))
-            _covers(r, d, f"{path}.diagram", float(cycle), "the cycle (crank angle 0 … "
-                    f"{cycle}°)")
-            strokes = (tuple((math.radians(x), v) for x, v in d),)
-            if cycle == 720:
-                needs_two_turns = True
-        else:
-            if "diagram" not in lt and "strokes" not in lt:
-                raise r.fail(f"{path}.diagram", "missing required key: 'diagram' (one "
-                             "stroke's diagram) or 'strokes' (one diagram per stroke)")
-            if "diagram" in lt and "strokes" in lt:
-                raise r.fail(f"{path}.diagram", "give either 'diagram' (one stroke's diagram) "
-                             "or 'strokes' (one diagram per stroke of the cycle), not both")
-            travel = None
-            if "travel" in lt:
-                if "strokes" not in lt:
-                    raise r.fail(f"{path}.travel", "goes with 'strokes' (a table: the travel "
-                                 "column and one column of values per stroke)")
-                tv = r.array(lt["travel"], f"{path}.travel", minlen=2)
-                travel = [r.number(x, f"{path}.travel[{m}]", lo=0.0, hi=1.0)
-                          for m, x in enumerate(tv)]
-                for m in range(1, len(travel)):
-                    if travel[m] < travel[m - 1]:
-                        raise r.fail(f"{path}.travel[{m}]", "travel fractions must not "
-                                     f"decrease (got {travel[m]} after {travel[m - 1]})")
-            if "diagram" in lt:
-                d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=1.0)
-                _covers(r, d, f"{path}.diagram", 1.0, "the stroke (travel 0 … 1)")
-                which = r.string(lt.get("stroke", "working"), f"{path}.stroke", STROKE_SETS)
-                strokes = _stroke_set(which, d, n_strokes)
-            else:
-                if "stroke" in lt:
-                    raise r.fail(f"{path}.stroke", "goes with 'diagram'; 'strokes' lists "
-                                 "every stroke")
-                ss = r.array(lt["strokes"], f"{path}.strokes", minlen=1)
-                if len(ss) != n_strokes:
-                    hint = (" (4 strokes: a four-stroke cycle needs positions.cycle = 720)"
-                            if len(ss) == 4 and cycle == 360 else "")
-                    raise r.fail(f"{path}.strokes", f"expected {n_strokes} diagrams, one per "
-                                 f"stroke of the {cycle}° cycle (got {len(ss)}){hint}")
-                items: list[Diagram | None] = []
-                for m, sd in enumerate(ss):
-                    sp = f"{path}.strokes[{m}]"
-                    sd = r.array(sd, sp)
-                    if not sd:
-                        items.append(None)
-                        continue
-                    if travel is not None:
-                        if len(sd) != len(travel):
-                            raise r.fail(sp, f"expected {len(travel)} values, one per 'travel' "
-                                         f"(got {len(sd)})")
-                        lo = -MAX_LOAD if signed else 0.0
-                        vals = [r.number(v, f"{sp}[{k}]", lo=lo, hi=MAX_LOAD)
-                                for k, v in enumerate(sd)]
-                        d = tuple(zip(travel, vals, strict=True))
-                    else:
-                        d = _pairs(r, sd, sp, signed, hi_x=1.0)
-                    _covers(r, d, sp, 1.0, "the stroke (travel 0 … 1)")
-                    items.append(d)
-                if all(x is None for x in items):
-                    raise r.fail(f"{path}.strokes", "every stroke is empty: no load")
-                strokes = tuple(items)
-                if cycle == 720 and strokes[:2] != strokes[2:]:
-                    needs_two_turns = True
-        first = next((d for d in strokes if d is not None), ())
-        out.append(Resistance(kind, ln, point, maximum, tuple(first), name, sense, over,
-                              strokes, angle, tl, working, phase, offset, gas))
-    if cycle == 720 and not needs_two_turns:
+    read = [_load(r, lt, f"loads[{n}]", ctx, names)
+            for n, lt in enumerate(r.array(data.get("loads", []), "loads"))]
+    if ctx["cycle"] == 720 and not any(two for _, two in read):
         raise r.fail("positions.cycle", "a 720° cycle needs a process over two turns — a load "
                      "with 4 different strokes (a four-stroke indicator diagram) or a diagram "
                      "over the crank angle to 720°; no load has one (use 360)")
-    return out
+    return [load for load, _ in read]
+
+
+def _load(r: _Reader, lt: Any, path: str, ctx: dict, names: set[str]
+          ) -> tuple[Resistance, bool]:
+    """One ``[[loads]]`` table, and whether its process takes two turns of the crank (a
+    720° cycle's diagram over the crank angle, or strokes that differ between the turns).
+    The keys are read in the order of the errors a student meets first: what and where
+    the load is, its sense, its abscissa, its scale, its diagram."""
+    r.table(lt, path)
+    r.keys(lt, path, LOAD_KEYS, {"link"})
+    gas = "bore" in lt
+    kind = _load_kind(r, lt, path, gas)
+    ln = _load_link(r, lt, path, ctx)
+    name = _load_name(r, lt, path, names)
+    point = _load_point(r, lt, path, kind, ln, gas, ctx)
+    slider, sense, angle = _load_sense(r, lt, path, kind, ln, gas, ctx)
+    over = r.string(lt.get("over", "stroke"), f"{path}.over", ("stroke", "crank"))
+    tl = _travel_link(r, lt, path, ln, slider, ctx)
+    working = ctx["output"].working
+    if "working" in lt:
+        working = 1 if r.string(lt["working"], f"{path}.working", ("+", "-")) == "+" else -1
+    phase = math.radians(r.number(lt.get("phase", 0.0), f"{path}.phase", lo=0.0,
+                                  hi=float(ctx["cycle"])))
+    if gas:
+        maximum, offset, const = *_gas_scale(r, lt, path, ctx["unit"]), 0.0
+    else:
+        (maximum, const), offset = _value_scale(r, lt, path, kind, sense), 0.0
+    strokes, over, two_turns = _load_strokes(r, lt, path, over, sense == "diagram", const,
+                                             ctx["cycle"])
+    first = next((d for d in strokes if d is not None), ())
+    return Resistance(kind, ln, point, maximum, tuple(first), name, sense, over, strokes,
+                      angle, tl, working, phase, offset, gas), two_turns
+
+
+def _load_kind(r: _Reader, lt: dict, path: str, gas: bool) -> str:
+    """``kind``: a force or a moment (a gas force, given by its bore, is a force)."""
+    if "kind" in lt:
+        return r.string(lt["kind"], f"{path}.kind", ("force", "moment"))
+    if gas:
+        return "force"
+    raise r.fail(f"{path}.kind", "missing required key ('force' or 'moment')")
+
+
+def _load_link(r: _Reader, lt: dict, path: str, ctx: dict) -> str:
+    """``link``: a moving link of the mechanism."""
+    frame_link, link_points = ctx["frame_link"], ctx["link_points"]
+    ln = r.link(lt["link"], f"{path}.link")
+    if ln == frame_link:
+        raise r.fail(f"{path}.link", "a load acts on a moving link, not the frame")
+    if ln not in link_points:
+        moving = [x for x in ctx["link_order"] if x != frame_link]
+        raise r.fail(f"{path}.link", f"link {ln!r} is not a link of this mechanism "
+                     f"(moving links: {', '.join(moving)})")
+    return ln
+
+
+def _load_name(r: _Reader, lt: dict, path: str, names: set[str]) -> str | None:
+    """``name``: a short one-line name, each load's its own (None: named by its kind)."""
+    if "name" not in lt:
+        return None
+    name = r.string(lt["name"], f"{path}.name").strip()
+    if not name or _CONTROL.search(name) or _MARKUP.search(name) or len(name) > 12:
+        raise r.fail(f"{path}.name", f"expected a short one-line name like 'Fг' "
+                     f"(got {lt['name']!r})")
+    if name in names:
+        raise r.fail(f"{path}.name", f"name {name!r} is already used by another load")
+    names.add(name)
+    return name
+
+
+def _load_point(r: _Reader, lt: dict, path: str, kind: str, ln: str, gas: bool, ctx: dict
+                ) -> str | None:
+    """``point``: where a force acts, on its link; a couple has none and must do work."""
+    frame_link, dyads = ctx["frame_link"], ctx["dyads"]
+    point = None
+    if kind == "force":
+        if "point" not in lt:
+            raise r.fail(f"{path}.point", "missing required key (the point the force acts at)")
+        point = r.name(lt["point"], f"{path}.point")
+        if point not in ctx["link_points"][ln]:
+            raise r.fail(f"{path}.point", f"point {point!r} is not on link {ln!r} "
+                         f"(its points: {', '.join(ctx['link_points'][ln])})")
+    elif "point" in lt:
+        raise r.fail(f"{path}.point", "a moment load has no point")
+    elif _translates_on_frame(ln, dyads, frame_link):
+        raise r.fail(f"{path}.link", f"a couple on link {ln!r}, which only translates on a "
+                     "frame guide, does no work (put a force on it)")
+    if gas and kind != "force":
+        raise r.fail(f"{path}.bore", "a pressure (bore) gives a force on a piston, "
+                     "not a moment")
+    return point
+
+
+def _load_sense(r: _Reader, lt: dict, path: str, kind: str, ln: str, gas: bool, ctx: dict
+                ) -> tuple[bool, str, float | None]:
+    """``sense`` and ``angle``: whether the load resists, drives or follows its diagram's
+    sign, and a diagram force's direction (rad) where no frame guide gives one. Returns
+    (the link slides on a frame guide, sense, angle)."""
+    slider = _translates_on_frame(ln, ctx["dyads"], ctx["frame_link"])
+    if gas and not slider:
+        raise r.fail(f"{path}.link", f"a gas force (bore) acts on a piston sliding in a "
+                     f"frame guide (cylinder); link {ln!r} is not one")
+    sense = r.string(lt.get("sense", "diagram" if gas else "resists"), f"{path}.sense",
+                     ("resists", "drives", "diagram"))
+    angle = None
+    if "angle" in lt:
+        if kind != "force" or sense != "diagram":
+            raise r.fail(f"{path}.angle", "the direction 'angle' goes with a force of "
+                         "sense = \"diagram\"; a resisting or driving load follows the motion")
+        angle = math.radians(r.number(lt["angle"], f"{path}.angle"))
+    elif kind == "force" and sense == "diagram" and not slider:
+        raise r.fail(f"{path}.angle", f"missing: the direction of the force (degrees) — "
+                     f"link {ln!r} does not slide on a frame guide to give one")
+    return slider, sense, angle
+
+
+def _travel_link(r: _Reader, lt: dict, path: str, ln: str, slider: bool, ctx: dict) -> str:
+    """``travel_link``: the link whose travel is the diagram's abscissa (by default the
+    loaded link where it slides on or turns about the frame, else the output)."""
+    frame_link, link_points = ctx["frame_link"], ctx["link_points"]
+    if "travel_link" in lt:
+        tl = r.link(lt["travel_link"], f"{path}.travel_link")
+        if tl not in link_points or tl == frame_link:
+            moving = [x for x in ctx["link_order"] if x != frame_link]
+            raise r.fail(f"{path}.travel_link", f"link {tl!r} is not a moving link of this "
+                         f"mechanism (moving links: {', '.join(moving)})")
+        return tl
+    crank = ctx["crank"]
+    rocker = _rotates_about_frame(ln, ctx["dyads"], crank, ctx["known_points"], frame_link)
+    return ln if (slider or (rocker and ln != crank.link)) else ctx["output"].link
+
+
+def _gas_scale(r: _Reader, lt: dict, path: str, unit: float) -> tuple[float, float]:
+    """A gas force's scale p_max·πD²/4 and the ambient pressure's force p_ambient·πD²/4, N."""
+    if "unit" in lt:
+        raise r.fail(f"{path}.unit", "a gas force is p·πD²/4: its unit is "
+                     "pressure_unit (MPa, bar …), with the bore in the length unit")
+    for k in ("max", "value"):
+        if k in lt:
+            raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
+                         "(diagram/strokes, p_max) and the bore, not the force")
+    D = r.length(lt["bore"], f"{path}.bore", unit)
+    area = math.pi * D * D / 4.0
+    pu = r.string(lt.get("pressure_unit", "MPa"), f"{path}.pressure_unit",
+                  tuple(PRESSURE_UNITS))
+    pmax = r.number(lt.get("p_max", 1.0), f"{path}.p_max", positive=True, hi=1e9)
+    pamb = r.number(lt.get("p_ambient", 0.0), f"{path}.p_ambient", nonneg=True, hi=1e9)
+    maximum = pmax * PRESSURE_UNITS[pu] * area
+    if maximum > MAX_LOAD:
+        raise r.fail(f"{path}.p_max", f"p_max·πD²/4 = {maximum:.3g} N is beyond "
+                     f"{MAX_LOAD:g} N (check pressure_unit and bore)")
+    return maximum, pamb * PRESSURE_UNITS[pu] * area
+
+
+def _value_scale(r: _Reader, lt: dict, path: str, kind: str, sense: str
+                 ) -> tuple[float, float]:
+    """A load's scale in SI (``max`` in its ``unit``; 1 for a constant), and the constant
+    ``value`` in SI (0 for a diagram)."""
+    for k in ("p_max", "p_ambient", "pressure_unit"):
+        if k in lt:
+            raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
+    units = FORCE_UNITS if kind == "force" else MOMENT_UNITS
+    factor = units[r.string(lt.get("unit", "N" if kind == "force" else "N·m"),
+                            f"{path}.unit", tuple(units))]
+    top = MAX_LOAD / factor
+    if "value" in lt:
+        for k in ("max", "diagram", "strokes", "travel"):
+            if k in lt:
+                raise r.fail(f"{path}.{k}", "a constant load is given by 'value' alone")
+        lo = -top if sense == "diagram" else 0.0
+        return 1.0, r.number(lt["value"], f"{path}.value", lo=lo, hi=top) * factor
+    if "max" not in lt:
+        raise r.fail(f"{path}.max", "missing required key (the scale of the diagram, "
+                     "N or N·m; or give 'value' for a constant load)")
+    return r.number(lt["max"], f"{path}.max", nonneg=True, hi=top) * factor, 0.0
+
+
+def _load_strokes(r: _Reader, lt: dict, path: str, over: str, signed: bool, const: float,
+                  cycle: int) -> tuple[tuple, str, bool]:
+    """The load's diagram per stroke of the cycle, or over the crank angle (radians): a
+    constant over the whole cycle or the strokes named, a diagram over the crank angle,
+    one stroke's diagram or one per stroke. Returns (strokes, over, two turns)."""
+    n_strokes = 2 * cycle // 360
+    if "value" in lt:  # constant: the whole cycle, or the strokes named
+        if "stroke" in lt:
+            which = r.string(lt["stroke"], f"{path}.stroke", STROKE_SETS)
+            d: Diagram = ((0.0, const), (1.0, const))
+            return _stroke_set(which, d, n_strokes), over, False
+        return (((0.0, const), (math.radians(cycle), const)),), "crank", False
+    if over == "crank":
+        for k in ("stroke", "strokes", "travel"):
+            if k in lt:
+                raise r.fail(f"{path}.{k}", "a diagram over the crank angle has no strokes")
+        if "diagram" not in lt:
+            raise r.fail(f"{path}.diagram", "missing required key (pairs [φ°, value])")
+        d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=float(cycle))
+        _covers(r, d, f"{path}.diagram", float(cycle), "the cycle (crank angle 0 … "
+                f"{cycle}°)")
+        return (tuple((math.radians(x), v) for x, v in d),), over, cycle == 720
+    if "diagram" not in lt and "strokes" not in lt:
+        raise r.fail(f"{path}.diagram", "missing required key: 'diagram' (one "
+                     "stroke's diagram) or 'strokes' (one diagram per stroke)")
+    if "diagram" in lt and "strokes" in lt:
+        raise r.fail(f"{path}.diagram", "give either 'diagram' (one stroke's diagram) "
+                     "or 'strokes' (one diagram per stroke of the cycle), not both")
+    travel = _travel_column(r, lt, path)
+    if "diagram" in lt:
+        d = _pairs(r, lt["diagram"], f"{path}.diagram", signed, hi_x=1.0)
+        _covers(r, d, f"{path}.diagram", 1.0, "the stroke (travel 0 … 1)")
+        which = r.string(lt.get("stroke", "working"), f"{path}.stroke", STROKE_SETS)
+        return _stroke_set(which, d, n_strokes), over, False
+    strokes = _stroke_table(r, lt, path, signed, travel, cycle)
+    return strokes, over, cycle == 720 and strokes[:2] != strokes[2:]
+
+
+def _travel_column(r: _Reader, lt: dict, path: str) -> list[float] | None:
+    """``travel``: the travel fractions (0 … 1, not decreasing) of a ``strokes`` table."""
+    if "travel" not in lt:
+        return None
+    if "strokes" not in lt:
+        raise r.fail(f"{path}.travel", "goes with 'strokes' (a table: the travel "
+                     "column and one column of values per stroke)")
+    tv = r.array(lt["travel"], f"{path}.travel", minlen=2)
+    travel = [r.number(x, f"{path}.travel[{m}]", lo=0.0, hi=1.0) for m, x in enumerate(tv)]
+    for m in range(1, len(travel)):
+        if travel[m] < travel[m - 1]:
+            raise r.fail(f"{path}.travel[{m}]", "travel fractions must not "
+                         f"decrease (got {travel[m]} after {travel[m - 1]})")
+    return travel
+
+
+def _stroke_table(r: _Reader, lt: dict, path: str, signed: bool,
+                  travel: list[float] | None, cycle: int) -> tuple:
+    """``strokes``: one diagram per stroke of the cycle (an empty one: no load on that
+    stroke), as pairs or as a column of values at the ``travel`` fractions."""
+    n_strokes = 2 * cycle // 360
+    if "stroke" in lt:
+        raise r.fail(f"{path}.stroke", "goes with 'diagram'; 'strokes' lists "
+                     "every stroke")
+    ss = r.array(lt["strokes"], f"{path}.strokes", minlen=1)
+    if len(ss) != n_strokes:
+        hint = (" (4 strokes: a four-stroke cycle needs positions.cycle = 720)"
+                if len(ss) == 4 and cycle == 360 else "")
+        raise r.fail(f"{path}.strokes", f"expected {n_strokes} diagrams, one per "
+                     f"stroke of the {cycle}° cycle (got {len(ss)}){hint}")
+    items: list[Diagram | None] = []
+    for m, sd in enumerate(ss):
+        sp = f"{path}.strokes[{m}]"
+        sd = r.array(sd, sp)
+        if not sd:
+            items.append(None)
+            continue
+        if travel is not None:
+            if len(sd) != len(travel):
+                raise r.fail(sp, f"expected {len(travel)} values, one per 'travel' "
+                             f"(got {len(sd)})")
+            lo = -MAX_LOAD if signed else 0.0
+            vals = [r.number(v, f"{sp}[{k}]", lo=lo, hi=MAX_LOAD) for k, v in enumerate(sd)]
+            d: Diagram = tuple(zip(travel, vals, strict=True))
+        else:
+            d = _pairs(r, sd, sp, signed, hi_x=1.0)
+        _covers(r, d, sp, 1.0, "the stroke (travel 0 … 1)")
+        items.append(d)
+    if all(x is None for x in items):
+        raise r.fail(f"{path}.strokes", "every stroke is empty: no load")
+    return tuple(items)
 
 
 def _stroke_set(which: str, d, n_strokes: int) -> tuple:

@@ -200,6 +200,20 @@ class Conditioning:
         return None if f is None else f.bound
 
 
+class Bounded:
+    """A mixin of a position's readings that carry their :class:`Conditioning` (None when
+    read exactly): :meth:`bound` of a figure."""
+
+    __slots__ = ()
+    conditioning: Conditioning | None
+
+    def bound(self, plan: str, name: str) -> float | None:
+        """± of a figure (``("velocity", "pb")``, ``("force", "R12")``, ``("lever", "Mур")``),
+        or None (exact mode, or a figure with no bound)."""
+        c = self.conditioning
+        return None if c is None else c.bound(plan, name)
+
+
 # ------------------------------------------------------------------ the sensitivity engine
 
 
@@ -478,6 +492,6 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
     return Conditioning(kin.labels[k], float(precision), marks, figures, same and lsame)
 
 
-__all__ = ["ILL_ANGLE_DEG", "SAFETY", "Conditioning", "Figure", "Intersection",
+__all__ = ["ILL_ANGLE_DEG", "SAFETY", "Bounded", "Conditioning", "Figure", "Intersection",
            "force_conditioning", "ill_conditioned", "intersections", "kinematic_conditioning",
            "note", "point_error"]

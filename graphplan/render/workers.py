@@ -53,24 +53,31 @@ class PreviewPool:
         self._pool: ProcessPoolExecutor | None = None
 
     def submit(self, fn, *args):
-        if self.workers and self._pool is None and threading.active_count() > 1:
-            self.workers = 0  # a process with threads is not forked (they may hold locks)
-        if self.workers:
-            if self._pool is None:
-                import multiprocessing
-
-                try:
-                    self._pool = ProcessPoolExecutor(
-                        self.workers, mp_context=multiprocessing.get_context("fork"))
-                    return Pending(self._pool.submit(fn, *args), fn, args)
-                except (OSError, ValueError, RuntimeError, BrokenExecutor):
-                    self.workers = 0  # no worker processes here: draw in line
-                    return fn(*args)
+        """``fn(*args)`` handed to a worker (a :class:`Pending`), or its value made here when
+        there are no workers or the pool cannot take it. Only the hand-over's own errors send
+        it in line; ``fn``'s errors are raised as they are, never caught here."""
+        pool = self._started()
+        if pool is not None:
             try:
-                return Pending(self._pool.submit(fn, *args), fn, args)
-            except (RuntimeError, BrokenExecutor):
-                return fn(*args)
+                return Pending(pool.submit(fn, *args), fn, args)
+            except (OSError, RuntimeError):  # BrokenExecutor is a RuntimeError
+                self.workers = 0  # the pool cannot fork or is broken: this and later in line
         return fn(*args)
+
+    def _started(self) -> ProcessPoolExecutor | None:
+        """The worker pool, made on the first call; None where previews are made in line."""
+        if self.workers and self._pool is None:
+            if threading.active_count() > 1:
+                self.workers = 0  # a process with threads is not forked (they may hold locks)
+                return None
+            import multiprocessing
+
+            try:
+                self._pool = ProcessPoolExecutor(
+                    self.workers, mp_context=multiprocessing.get_context("fork"))
+            except (OSError, ValueError, RuntimeError):
+                self.workers = 0  # no worker processes here: draw in line
+        return self._pool if self.workers else None
 
     def close(self) -> None:
         if self._pool is not None:

@@ -14,6 +14,7 @@ import numpy as np
 from ..forces import Loads
 from ..plans import (
     EXACT,
+    Bounded,
     Conditioning,
     ForcePlan,
     Lever,
@@ -46,7 +47,7 @@ class LoadRow:
 
 
 @dataclass(frozen=True, slots=True)
-class PositionForces:
+class PositionForces(Bounded):
     """The force analysis of one position, built exactly and drafted.
 
     Attributes
@@ -96,11 +97,6 @@ class PositionForces:
     kl: Scale
     M_scale: float = 0.0
     conditioning: Conditioning | None = None
-
-    def bound(self, plan: str, name: str) -> float | None:
-        """± of a drafted figure (``("force", "R12")``, ``("lever", "Mур")``), or None."""
-        c = self.conditioning
-        return None if c is None else c.bound(plan, name)
 
     @property
     def neglected(self) -> tuple[str, ...]:

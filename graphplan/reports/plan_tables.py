@@ -29,6 +29,7 @@ from ..geometry import norm
 from ..kinematics import output_coordinate
 from ..numbers import cell, csv_number, finite, fmt
 from ..plans import (
+    Bounded,
     Conditioning,
     Plan,
     Reader,
@@ -90,7 +91,7 @@ _PLANS = ("velocity", "acceleration")
 
 
 @dataclass(frozen=True, slots=True)
-class PositionPlans:
+class PositionPlans(Bounded):
     """The velocity and acceleration plans of one position, as drawn and exact.
 
     Attributes
@@ -124,11 +125,6 @@ class PositionPlans:
     index: int
     precision: float = 0.0
     conditioning: Conditioning | None = None
-
-    def bound(self, plan: str, name: str) -> float | None:
-        """± of a figure (a segment's name, ``"ω2"``), or None (exact mode)."""
-        c = self.conditioning
-        return None if c is None else c.bound(plan, name)
 
     def plans(self, kind: str) -> tuple[Plan, Plan]:
         """The plan of ``kind`` (``"velocity"``/``"acceleration"``) as drawn, and exact."""
