@@ -7,6 +7,7 @@ the frame, plans inside their cells); the title block sits at its GOST place.
 """
 
 import math
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -294,3 +295,28 @@ def test_structural_scheme_draws_each_assur_group_apart(built, name):
         drawn = {it.id.split("-")[3] for it in leaves
                  if it.id.startswith((f"groups-{i}-link-", f"groups-{i}-slider-"))}
         assert set(g.links) <= drawn, (g.formula, drawn)
+
+
+@pytest.mark.parametrize("path", ["sixbar_press", "crusher",
+                                  "tests/data/variants/crusher_force.toml",
+                                  "tests/data/variants/loom_beater.toml"])
+def test_the_table_of_the_plans_keeps_every_column_on_a1(drawn, solved, path):
+    """Issue 18: a table is split or moved, never cut. The six-bar's 18 columns and the
+    crushers' and loom's 20 are 401–443 mm wide at 3.5 mm, their place 309–330 mm: lettered
+    2.5 mm they take 286–316 mm (3.5 → 2.5 mm: widths × 5/7, pads 3 → 2.14 mm), every column
+    is drawn and the title says nothing is left out."""
+    from graphplan.reports import summary_rows
+
+    a, sheet = solved(path), drawn(path, 1)
+    header, _ = summary_rows(a, "ru")
+    heads = [it for it in iter_leaves(sheet.items) if isinstance(it, Text)
+             and re.fullmatch(r"plans-table-r0c\d+", it.id or "")]
+    assert [h.text for h in sorted(heads, key=lambda t: int(t.id.rsplit("c", 1)[1]))] == [
+        str(h) for h in header]
+    title = next(it for it in iter_leaves(sheet.items) if it.id == "table-title")
+    assert title.text == "Таблица планов"
+    assert {it.height for it in iter_leaves(sheet.items) if isinstance(it, Text)
+            and (it.id or "").startswith("plans-table-r")} == {2.5}
+    # the table stays left of the title block, inside the frame
+    xs = [it.p0[0] for it in iter_leaves(sheet.items) if (it.id or "").startswith("plans-table-v")]
+    assert max(xs) <= sheet.page.title_block_rect.x0 and min(xs) >= sheet.page.frame.x0

@@ -546,7 +546,9 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
 
 
 def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
-    """The table of the plans (main values of every position) in the bottom strip."""
+    """The table of the plans (main values of every position) in the bottom strip, lettered
+    3.5 mm, or 2.5 mm where that keeps every column (a six-bar's 18–20 columns); cut, with
+    its title saying so, only where not even 2.5 mm fits (A2, A3)."""
     from ..reports import summary_rows
 
     def notes(n, m):
@@ -559,7 +561,8 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     header, rows = summary_rows(analysis, lang)
     r = sc.layout.table
     return titled_table(r.x0, r.y0, r.width, WORDS[lang]["table"], header, rows,
-                        ident="plans-table", title_id="table-title", notes=notes)
+                        ident="plans-table", title_id="table-title", notes=notes,
+                        lettering=(3.5, 2.5))
 
 
 DIAGRAM_LENGTH_MAX = 400.0  #: longest abscissa of one cycle on sheet 1, mm

@@ -371,6 +371,7 @@ SHEET2_CELL_MIN = 60.0  #: smallest useful cell of sheet 2, mm
 LABEL_ROOM = 12.0  #: room kept around a plan in its cell for letters, mm
 CHART_W = (180.0, 240.0)  #: widths of the Q(s) and Mур(φ) charts on A1, mm
 TABLE_PART_GAP = 4.0  #: between the parts of a split table, mm
+TABLE_PAD = 3.0 / 3.5  #: room round a column's widest entry per mm of lettering (3 mm at 3.5)
 
 
 @dataclass(frozen=True, slots=True)
@@ -641,15 +642,26 @@ def plan_room(cell: Rect) -> float:
 
 
 def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *,
-                 ident: str, title_id: str, notes=None) -> list:
+                 ident: str, title_id: str, notes=None,
+                 lettering: tuple[float, ...] = (3.5,)) -> list:
     """A table under its title at (x0, y0), cut to ``width`` by :func:`fit_columns`.
 
-    When columns were left out, ``notes(shown, total)`` gives the remarks to append to the
-    title, longest first; the first that fits the width at 3.5 or 2.5 mm is used.
+    ``lettering``: the heights of the table's lettering to try, largest first (GOST 2.304's
+    3.5 and 2.5 mm): the first at which every column fits is used, its rows kept ROW tall and
+    (a smaller one) its columns widened alike to span ``width``; when none fits, the last,
+    cut. When columns were left out, ``notes(shown, total)`` gives the remarks to append to
+    the title, longest first; the first that fits the width at 3.5 or 2.5 mm is used.
     """
     from ..drawing.sheet import Text, table_items, text_width
 
-    fit = fit_columns(header, rows, width)
+    for lh in lettering:
+        fit = fit_columns(header, rows, width, lh, TABLE_PAD * lh)
+        if fit.shown == fit.total:
+            break
+    if lh < lettering[0] and fit.shown == fit.total:
+        # smaller lettering to keep every column: the table still spans its place
+        k = width / sum(fit.widths)
+        fit = FittedTable(fit.header, fit.rows, [w * k for w in fit.widths], fit.shown, fit.total)
     text, height = title, 5.0
     if fit.shown < fit.total and notes is not None:
         for note in notes(fit.shown, fit.total):
@@ -660,7 +672,8 @@ def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *
             if height < 5.0:
                 break
     items: list[object] = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
-    items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, 3.5, id=ident)
+    items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, lh,
+                         row_height=ROW, id=ident)
     return items
 
 
