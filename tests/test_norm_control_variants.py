@@ -2,7 +2,9 @@
 (``tests/data/variants/*.toml``, discovered: a variant added there is checked the day it is
 added): a two-stroke engine, an in-line compressor, an in-line twin over 720°, a pump with a
 kN diagram, a crusher with a force on the jaw, a four-bar clockwise at 12 rad/s, a shaper
-cutting part of its stroke, a four-bar with a fixed-direction force…
+cutting part of its stroke, a four-bar with a fixed-direction force, an in-line twin with cranks
+at 180°, a two-stage V compressor in кгс/см², a dough mixer loaded at a coupler point, rocking
+shears (кулиса → RRR) in rad/s and N…
 
 Issue 17 holds the assignment families to the sheets issue's norm control: each variant's
 sheets are measured with the same measures as the examples' (``norm_measures``):
@@ -42,6 +44,16 @@ TODO = {
     *((n, 2, "filled") for n in VARIANTS),
     ("loom_beater", 3, "filled"),
     ("loom_beater", 2, "overlaps"),
+    # Session 8's unseen variants (DEFECTS.md, → sheet1 / → sheet2): the in-line twin's 24
+    # positions over 720° thinned to every second one at one Kv (plans 44 mm, the second turn
+    # repeating the first); the shears' acceleration plans a, b at 30 mm beside pos. 10's
+    # 100 mm at one Ka, and its pole letters 'p, a3, b, s3, d, s4, s5' crossed by the plan's
+    # lines; the two-stage compressor's crank scheme (Kl 0.00025) running its R21 line over
+    # group 4–5's equations.
+    ("inline_twin_180", 1, "plans"),
+    ("shears_rocking", 1, "plans"),
+    ("shears_rocking", 1, "overlaps"),
+    ("v_two_stage_compressor", 2, "overlaps"),
 }
 
 
