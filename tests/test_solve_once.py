@@ -21,6 +21,7 @@ import graphplan.drawing
 import graphplan.outputs
 import graphplan.reports
 from graphplan.files import bundled_example
+from graphplan.project import solve_project
 
 
 def _phi(kin) -> bytes:
@@ -107,3 +108,41 @@ def test_the_count_sees_a_stage_solved_twice(count_stages):
     sheet_scales(p.mech, p.kin)
     assert count_stages[("sheet_scales", (_phi(p.kin), None))] == 2
     assert p.sheet1 is p.sheet1  # the project's: solved once, kept
+
+
+@pytest.mark.parametrize("example", ["press", "sixbar_press"])
+def test_the_json_reports_the_figures_sheet_2_draws(example):
+    """analyze --json's force plans and lever are sheet 2's, each figure at the Kl it is drawn
+    at (the groups' schemes, the crank's own), each group taking the reactions as read off
+    the plans drawn before it: the same objects the sheet and the lessons draw."""
+    from graphplan.plans import crank_plan, force_plan
+
+    p = solve_project(graphplan.load(bundled_example(example)))
+    s2 = p.sheet2
+    out = p.to_json()
+    n_fig = len(p.mech.dyads) + 1
+    for k, entry in enumerate(out["positions"]):
+        plans = p.force_plans(k)
+        # the chain built by hand: each figure at its own Kl, knowing the plans before it
+        known: dict = {}
+        for i, gi in enumerate([*reversed(range(len(p.mech.dyads))), None]):
+            kl = s2.figure_kl(i)
+            room = s2.room_mm[i] if isinstance(s2.room_mm, tuple) else s2.room_mm
+            by_hand = (crank_plan(p.mech, p.kin, p.forces, p.loads, k, kl=kl, known=known,
+                                  room_mm=room) if gi is None else
+                       force_plan(p.mech, p.kin, p.forces, p.loads, k, gi, kl=kl, known=known,
+                                  room_mm=room))
+            known.update(by_hand.reactions)
+            assert {r.name: r.mm for r in by_hand.readings.values()} == {
+                r.name: r.mm for r in plans[i].readings.values()}
+            assert by_hand.arms_mm == plans[i].arms_mm
+        assert len(entry["force_plans"]) == n_fig
+        for i, (fj, fp) in enumerate(zip(entry["force_plans"], plans, strict=True)):
+            assert fj["Kl"] == s2.figure_kl(i).per_mm
+            assert fj["segments_mm"] == {r.name: r.mm for r in fp.readings.values()}
+            assert fj["M_bal"] == fp.M_bal
+        lever = p.lever(k)
+        assert entry["zhukovsky"]["Kl"] == s2.kl.per_mm
+        assert entry["zhukovsky"]["Kv"] == s2.lever_kv(p.kin, k).per_mm
+        assert entry["zhukovsky"]["arms_mm"] == {r.name: r.mm for r in lever.readings.values()}
+        assert entry["zhukovsky"]["M_bal"] == lever.M_bal

@@ -136,10 +136,10 @@ def test_force_and_lever_lessons_draw_sheet_2s_plans(path, solved, drawn):
     compared = 0
     for k, label in enumerate(p.kin.labels):
         les = lesson(p, "forces", label)
-        # each figure (the groups, then the crank) at its own Kl, as sheet 2 draws it
+        # each figure (the groups, then the crank) at its own Kl, as sheet 2 draws it, each
+        # taking the reactions as read off the plans drawn before it
         kls = [s2.figure_kl(i) for i in range(len(p.mech.dyads) + 1)]
-        plans = tuple(force_plans(p.mech, p.kin, p.forces, p.loads, k, kl,
-                                  room_mm=s2.room_mm)[i] for i, kl in enumerate(kls))
+        plans = force_plans(p.mech, p.kin, p.forces, p.loads, k, tuple(kls), room_mm=s2.room_mm)
         panels = _plan_panels(les)
         assert len(panels) == len(plans)
         for i, (panel, fp) in enumerate(zip(panels, plans, strict=True)):

@@ -646,8 +646,9 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
     return build(_choose_kp(build, kp, {f.name for f in fs}, room_mm), reader)
 
 
-def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int, kl: Scale,
-                reader: Reader = EXACT, room_mm: float | tuple[float, ...] = ROOM_MM, *,
+def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,
+                kl: Scale | tuple[Scale, ...], reader: Reader = EXACT,
+                room_mm: float | tuple[float, ...] = ROOM_MM, *,
                 scales: dict[int, Scale] | None = None) -> tuple[ForcePlan, ...]:
     """All force plans of position k: the groups from the last to the first, then the crank.
 
@@ -657,21 +658,24 @@ def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: in
     trial build) is stored there, one found there is used — the error bounds build the
     plans again with one reading shifted, at the scales of the unshifted plans. ``room_mm``:
     one room for every plan, or one per plan in their order (sheet 2 sizes each plan's cell
-    to its shape).
+    to its shape). ``kl``: the Kl of the position plan every plan's arms are read on, or one
+    per plan (sheet 2 draws each group and the crank at its own Kl; each group then takes
+    the reactions as read off the plans drawn before it, at theirs).
     """
-    rooms = (tuple(room_mm) if isinstance(room_mm, tuple)
-             else (room_mm,) * (len(mech.dyads) + 1))
+    n = len(mech.dyads) + 1
+    rooms = tuple(room_mm) if isinstance(room_mm, tuple) else (room_mm,) * n
+    kls = tuple(kl) if isinstance(kl, tuple) else (kl,) * n
     known: dict[str, PlanReaction] = {}
     plans: list[ForcePlan] = []
     kps = scales if scales is not None else {}
     for gi in reversed(range(len(mech.dyads))):
-        p = force_plan(mech, kin, forces, loads, k, gi, kps.get(len(plans)), kl=kl,
+        p = force_plan(mech, kin, forces, loads, k, gi, kps.get(len(plans)), kl=kls[len(plans)],
                        reader=reader, known=known, room_mm=rooms[len(plans)])
         kps.setdefault(len(plans), p.scale)
         known.update(p.reactions)
         plans.append(p)
-    p = crank_plan(mech, kin, forces, loads, k, kps.get(len(plans)), kl=kl, reader=reader,
-                   known=known, room_mm=rooms[len(plans)])
+    p = crank_plan(mech, kin, forces, loads, k, kps.get(len(plans)), kl=kls[-1], reader=reader,
+                   known=known, room_mm=rooms[-1])
     kps.setdefault(len(plans), p.scale)
     plans.append(p)
     return tuple(plans)

@@ -133,25 +133,17 @@ class Project:
 
     def force_plans(self, k: int, page: Page | None = None) -> tuple[ForcePlan, ...]:
         """Sheet 2's force plans of position k, the groups from the last to the first and then
-        the crank, built once: each group's arms read at its scheme's Kl, the crank's at its
-        own (a short crank is drawn larger); sheet 2 draws them, the force lesson teaches
-        them."""
+        the crank, built once, each figure at the Kl it is drawn at (a group's arms on its
+        scheme, the crank's on its own: a short crank is drawn larger), each group taking the
+        reactions as read off the plans drawn before it; sheet 2 draws them, the force lesson
+        teaches them, the JSON reports them."""
         from ..plans import force_plans
 
         s2 = self.sheet2 if page is None else self.sheet2_on(page)
-        kls = [s2.figure_kl(i) for i in range(len(self.mech.dyads) + 1)]
-
-        def solve() -> tuple[ForcePlan, ...]:
-            # each figure's arms read on its own drawing, at its Kl (one build per Kl)
-            built: dict[float, tuple[ForcePlan, ...]] = {}
-            for kl in kls:
-                if kl.per_mm not in built:
-                    built[kl.per_mm] = force_plans(self.mech, self.kin, self.forces,
-                                                   self.loads, k, kl, room_mm=s2.room_mm)
-            return tuple(built[kl.per_mm][i] for i, kl in enumerate(kls))
-
+        kls = tuple(s2.figure_kl(i) for i in range(len(self.mech.dyads) + 1))
         fmt = self._format if page is None else page.format
-        return self.stage(("force_plans", k, fmt), solve)
+        return self.stage(("force_plans", k, fmt), lambda: force_plans(
+            self.mech, self.kin, self.forces, self.loads, k, kls, room_mm=s2.room_mm))
 
     def lever(self, k: int, page: Page | None = None) -> Lever:
         """Sheet 2's Zhukovsky lever of position k (its Kl, the lever's Kv), built once and
@@ -275,7 +267,7 @@ class Project:
             segments.update({r.name: r.mm for r in ap.readings.values()})
             entry["plans"] = {"Kl": kl.per_mm, "Kv": kv.per_mm, "Ka": ka.per_mm,
                               "segments_mm": segments, **_marks(vp, ap)}
-        self._add_forces(positions, sc)
+        self._add_forces(positions)
         out = {"mechanism": mechanism, "positions": positions, "warnings": list(self.warnings)}
         if "delta" in self.mech.settings.get("dynamics", {}):
             from ..dynamics import machine_unit
@@ -283,16 +275,14 @@ class Project:
             out["dynamics"] = (unit or self.unit or machine_unit(self)).to_json()
         return out
 
-    def _add_forces(self, positions: list[dict], sc) -> None:
-        """Per position: the exact kinetostatics (``forces``) with the variant's rules, and
-        ``M_bal_full``, the balancing moment with nothing neglected (N·m, CCW+)."""
-        loads, forces, full = self.loads, self.forces, self.forces_full
-        from ..plans import force_plans, zhukovsky_lever
-        from .scales import sheet2_scales
-
-        s2 = (self.sheet2 if sc is self.sheet1
-              else sheet2_scales(self.mech, self.kin, forces, self.cycle, loads=loads))
-
+    def _add_forces(self, positions: list[dict]) -> None:
+        """Per position: the exact kinetostatics (``forces``) with the variant's rules,
+        ``M_bal_full``, the balancing moment with nothing neglected (N·m, CCW+), and the force
+        plans and Zhukovsky's lever as sheet 2 draws them (each figure at its own Kl)."""
+        forces, full, s2 = self.forces, self.forces_full, self.sheet2
+        kls = [s2.figure_kl(i) for i in range(len(self.mech.dyads) + 1)]
+        lever_kl = s2.kl
+        assert lever_kl is not None  # sheet2_scales sets it
         for k, entry in enumerate(positions):
             f = forces.as_json(k)
             del f["label"], f["phi_deg"]
@@ -300,16 +290,15 @@ class Project:
             entry["M_bal_full"] = float(full.M_bal[k])
             entry["force_plans"] = [
                 {"group": fp.group, "Kp": fp.scale.per_mm, "basis": fp.scale.basis,
+                 "Kl": kl.per_mm,
                  "segments_mm": {r.name: r.mm for r in fp.readings.values()},
                  "values": {q: r.value for q, r in fp.readings.items()},
                  "equations": list(fp.equations),
                  "M_bal": fp.M_bal, **_marks(fp)}
-                for fp in force_plans(self.mech, self.kin, forces, loads, k, sc.kl,
-                                      room_mm=s2.room_mm)]
-            lever = zhukovsky_lever(self.mech, self.kin, loads, k, sc.kl, s2.lever_kv(self.kin, k),
-                                    reference=float(forces.M_bal[k]))
+                for fp, kl in zip(self.force_plans(k), kls, strict=True)]
+            lever = self.lever(k)
             entry["zhukovsky"] = {"M_bal": lever.M_bal, "discrepancy_pct": lever.discrepancy_pct,
-                                  "Kv": lever.plan.scale.per_mm,
+                                  "Kv": lever.plan.scale.per_mm, "Kl": lever_kl.per_mm,
                                   "arms_mm": {r.name: r.mm for r in lever.readings.values()},
                                   **_marks(lever)}
 
