@@ -2,21 +2,39 @@
 
 The page's content stream is walked operator by operator: the graphics state
 (``q``/``Q``, ``cm``), paths (``m l c v y h re``) painted by stroking (``S s B b``) or
-filling (``f F f* B b``), colours (``G RG K g rg k SC SCN sc scn``) and form XObjects
-(``Do``, :data:`~.primitives.MAX_DEPTH` deep). Texts are pypdf's own decoding
-(``extract_text`` with a visitor: fonts, encodings, ToUnicode) with the text matrix of
-each run; runs on one baseline that follow each other are joined. Points (1/72 in)
-become mm; the page's y already points up. Only the first :data:`MAX_PAGES` pages are
-read.
+filling (``f F f* B b``), colours (``G RG K g rg k SC SCN sc scn``), form XObjects
+(``Do``, :data:`~.primitives.MAX_DEPTH` deep) and text: the text state (``Tf Tc Tw Tz
+TL Ts Tr``), the text matrix (``BT Td TD Tm T*``) and every code shown (``Tj TJ ' "``),
+each placed where the PDF puts it, with its character (:mod:`.pdf_fonts`: the font's
+``ToUnicode`` map or encoding) and its advance (the font's widths). The characters are
+then joined into texts as the drawing shows them (:func:`_texts`): PDF writers place
+glyphs one by one (Typst, which makes graphplan's own PDFs, shows every glyph in its own
+text object), leave out the spaces between words, and show a subscript as a smaller text
+lower down — ``R`` then ``12`` is the text ``R12``. A page whose fonts this reader cannot
+decode is read by pypdf's own text extraction instead.
+
+Points (1/72 in) become mm; the page's y already points up. Only the first
+:data:`MAX_PAGES` pages are read.
 """
 
 from __future__ import annotations
 
+import contextlib
 import io
 import math
+from dataclasses import dataclass, replace
 from pathlib import Path
 
-from .primitives import MAX_DEPTH, Collector, Drawing, DrawingError, read_bytes, text_centre
+from .pdf_fonts import PdfFont
+from .primitives import (
+    MAX_DEPTH,
+    MAX_ITEMS,
+    Collector,
+    Drawing,
+    DrawingError,
+    read_bytes,
+    text_centre,
+)
 
 PT_MM = 25.4 / 72
 MAX_PAGES = 8
@@ -85,8 +103,13 @@ def read_pdf(path: Path) -> Drawing:
         if n == 0:
             size = (0.0, 0.0, float(box.width) * PT_MM, h * PT_MM)
         try:
-            _Paths(reader, col, base).run(page, page.get("/Resources"), 0)
-            _texts(page, col, base)
+            walker = _Page(reader, col, base)
+            walker.run(page, page.get("/Resources"), 0)
+            if walker.unknown > 0.2 * (walker.unknown + len(walker.glyphs)):
+                # fonts whose codes no map here decodes: pypdf's own extraction
+                _pypdf_texts(page, col, base)
+            else:
+                _texts(walker.glyphs, col)
         except DrawingError:
             raise
         except Exception as exc:
@@ -96,12 +119,80 @@ def read_pdf(path: Path) -> Drawing:
     return col.drawing("pdf", size)
 
 
-class _Paths:
+class _Glyph:
+    """One shown character: its text, where its origin and its advance end are (mm), the
+    baseline's unit direction and the em height across it (mm), its colour."""
+
+    __slots__ = ("char", "colour", "ex", "ey", "nx", "ny", "size", "ux", "uy", "x", "y")
+
+    def __init__(self, char, origin, end, up, size, colour):
+        self.char = char
+        self.x, self.y = origin
+        self.ex, self.ey = end
+        L = math.hypot(self.ex - self.x, self.ey - self.y)
+        if L > 1e-9:
+            self.ux, self.uy = (self.ex - self.x) / L, (self.ey - self.y) / L
+        else:  # a zero advance: the baseline's direction from the glyph's up
+            self.ux, self.uy = up[1], -up[0]
+        self.nx, self.ny = -self.uy, self.ux
+        if self.nx * up[0] + self.ny * up[1] < 0:  # the text is mirrored: keep its up
+            self.nx, self.ny = -self.nx, -self.ny
+        self.size = size
+        self.colour = colour
+
+
+@dataclass(slots=True)
+class _TextState:
+    """The text state kept with the graphics state (``q``/``Q``): font and size (``Tf``),
+    character and word spacing (``Tc``, ``Tw``), horizontal scaling (``Tz``, as a
+    fraction), leading (``TL``), rise (``Ts``), render mode (``Tr``)."""
+
+    font: PdfFont | None = None
+    size: float = 1.0
+    char_space: float = 0.0
+    word_space: float = 0.0
+    scale: float = 1.0
+    leading: float = 0.0
+    rise: float = 0.0
+    mode: int = 0
+
+    def set(self, op: str, value: float) -> None:
+        if op == "Tc":
+            self.char_space = value
+        elif op == "Tw":
+            self.word_space = value
+        elif op == "Tz":
+            self.scale = value / 100
+        elif op == "TL":
+            self.leading = value
+        elif op == "Ts":
+            self.rise = value
+        elif op == "Tr":
+            self.mode = int(value)
+
+
+class _Page:
+    """Walks a page's (or a form's) content stream: paths to the collector, shown text to
+    :attr:`glyphs` (module doc)."""
+
     def __init__(self, reader, col: Collector, base):
         self.reader = reader
         self.col = col
         self.base = base
         self.ops = 0
+        self.glyphs: list[_Glyph] = []
+        self.unknown = 0  # codes whose character no map gives
+        self._fonts: dict[int, PdfFont] = {}
+
+    def _font(self, resources, name) -> PdfFont | None:
+        try:
+            ref = resources["/Font"].get_object()[name]
+        except (KeyError, TypeError, AttributeError):
+            return None
+        key = id(ref.get_object())
+        if key not in self._fonts:
+            self._fonts[key] = PdfFont(ref)
+        return self._fonts[key]
 
     def run(self, obj, resources, depth: int, ctm=None) -> None:
         from pypdf.generic import ContentStream
@@ -116,8 +207,12 @@ class _Paths:
         ctm = ctm or (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
         stack = []
         stroke, fill, width = "#000000", "#000000", 1.0
+        # text state (kept with the graphics state): font, size, Tc, Tw, Tz, TL, rise, Tr
+        ts = _TextState()
+        tm = tlm = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
         sub: list[list[tuple[float, float]]] = []
         closed: list[bool] = []
+        curve = False
         cur = None
         op: bytes | str
         for operands, op in cs.operations:
@@ -128,16 +223,17 @@ class _Paths:
             op = op.decode("latin-1") if isinstance(op, bytes) else op
             try:
                 v = [float(x) for x in operands] if op in (
-                    "cm", "m", "l", "c", "v", "y", "re", "w") else []
+                    "cm", "m", "l", "c", "v", "y", "re", "w", "Td", "TD", "Tm", "Tc", "Tw",
+                    "Tz", "TL", "Ts", "Tr") else []
             except (TypeError, ValueError):
                 continue
             if op == "q":
-                stack.append((ctm, stroke, fill, width))
+                stack.append((ctm, stroke, fill, width, replace(ts)))
                 if len(stack) > 10_000:
                     raise DrawingError(f"{self.col.source}: graphics states nested too deep")
             elif op == "Q":
                 if stack:
-                    ctm, stroke, fill, width = stack.pop()
+                    ctm, stroke, fill, width, ts = stack.pop()
             elif op == "cm" and len(v) == 6:
                 ctm = _m(tuple(v), ctm)
             elif op == "w" and v:
@@ -146,6 +242,34 @@ class _Paths:
                 stroke = _hex(operands)
             elif op in ("g", "rg", "k", "sc", "scn"):
                 fill = _hex(operands)
+            elif op == "BT":
+                tm = tlm = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+            elif op == "Tf" and len(operands) == 2:
+                with contextlib.suppress(TypeError, ValueError):
+                    ts.font, ts.size = self._font(resources, operands[0]), float(operands[1])
+            elif op in ("Tc", "Tw", "Tz", "TL", "Ts", "Tr") and v:
+                ts.set(op, v[0])
+            elif op in ("Td", "TD") and len(v) == 2:
+                if op == "TD":
+                    ts.leading = -v[1]
+                tm = tlm = _m((1.0, 0.0, 0.0, 1.0, v[0], v[1]), tlm)
+            elif op == "Tm" and len(v) == 6:
+                tm = tlm = (v[0], v[1], v[2], v[3], v[4], v[5])
+            elif op in ("T*", "'", '"'):
+                if op == '"' and len(operands) == 3:
+                    with contextlib.suppress(TypeError, ValueError):
+                        ts.word_space, ts.char_space = float(operands[0]), float(operands[1])
+                tm = tlm = _m((1.0, 0.0, 0.0, 1.0, 0.0, -ts.leading), tlm)
+                if op != "T*" and operands:
+                    tm = self._show([operands[-1]], ts, tm, ctm, stroke, fill)
+            elif op == "Tj" and operands:
+                tm = self._show([operands[0]], ts, tm, ctm, stroke, fill)
+            elif op == "TJ" and operands:
+                try:
+                    items = list(operands[0])
+                except TypeError:
+                    continue
+                tm = self._show(items, ts, tm, ctm, stroke, fill)
             elif op == "m" and len(v) == 2:
                 cur = [(v[0], v[1])]
                 sub.append(cur)
@@ -165,10 +289,7 @@ class _Paths:
                     cur.append((s**3 * p0[0] + 3 * s * s * t * c1[0] + 3 * s * t * t * c2[0]
                                 + t**3 * p3[0], s**3 * p0[1] + 3 * s * s * t * c1[1]
                                 + 3 * s * t * t * c2[1] + t**3 * p3[1]))
-                closed[-1] = closed[-1] or False
-                sub[-1] = cur
-                # mark as a curve by a sentinel in a parallel list
-                self._curve = True
+                curve = True
             elif op == "re" and len(v) == 4:
                 x, y, w, h = v
                 cur = [(x, y), (x + w, y), (x + w, y + h), (x, y + h)]
@@ -184,15 +305,52 @@ class _Paths:
                 for pts, cl in zip(sub, closed, strict=False):
                     tp = [_pt(m, x, y) for x, y in pts]
                     if op in ("S", "s", "B", "B*", "b", "b*"):
-                        self.col.polyline(tp, cl, stroke, width * k, "", len(pts) > 2 and
-                                          getattr(self, "_curve", False))
+                        self.col.polyline(tp, cl, stroke, width * k, "", len(pts) > 2 and curve)
                     if op in ("f", "F", "f*", "B", "B*", "b", "b*") and len(tp) >= 3 and \
                             fill != "#ffffff":
                         self.col.fill(tp, fill)
                 sub, closed, cur = [], [], None
-                self._curve = False
+                curve = False
             elif op == "Do" and operands:
                 self._form(operands[0], resources, depth, ctm)
+
+    def _show(self, items, ts, tm, ctm, stroke, fill):
+        """Place the codes of a shown string (``TJ``'s numbers move the pen back by
+        thousandths of the font size); the text matrix after them."""
+        font, fs, tc, tw, th = ts.font, ts.size, ts.char_space, ts.word_space, ts.scale
+        rise, mode = ts.rise, ts.mode
+        for it in items:
+            if isinstance(it, (int, float)) or type(it).__name__ in (
+                    "FloatObject", "NumberObject"):
+                with contextlib.suppress(TypeError, ValueError):
+                    tm = _m((1.0, 0.0, 0.0, 1.0, -float(it) / 1000 * fs * th, 0.0), tm)
+                continue
+            raw = getattr(it, "original_bytes", None)
+            if raw is None:
+                try:
+                    raw = bytes(it)
+                except (TypeError, ValueError):
+                    continue
+            if font is None:
+                continue
+            for _code, text, adv, space in font.codes(raw):
+                m = _m(_m(tm, ctm), self.base)
+                tx = (adv * fs + tc + (tw if space else 0.0)) * th
+                if mode not in (3, 7) and text is not None and text.strip():
+                    # the em along the glyphs' own up (a slanted font's, as the SVG
+                    # reader takes it)
+                    up = (fs * m[2], fs * m[3])
+                    size = math.hypot(*up)
+                    self.glyphs.append(_Glyph(text, _pt(m, 0.0, rise),
+                                              _pt(m, adv * fs * th, rise), up, size,
+                                              stroke if mode in (1, 5) else fill))
+                elif text is None:
+                    self.unknown += 1
+                tm = _m((1.0, 0.0, 0.0, 1.0, tx, 0.0), tm)
+                if len(self.glyphs) > MAX_ITEMS:
+                    raise DrawingError(f"{self.col.source}: more than {MAX_ITEMS} characters: "
+                                       "not read")
+        return tm
 
     def _form(self, name, resources, depth, ctm) -> None:
         try:
@@ -208,7 +366,7 @@ class _Paths:
         self.run(x, res, depth + 1, _m(mat, ctm))
 
 
-def _texts(page, col: Collector, base) -> None:
+def _pypdf_texts(page, col: Collector, base) -> None:
     runs: list[list] = []  # [text, x, y, size, angle, cm, tm]
 
     def visit(text, cm, tm, _font, size):
@@ -243,6 +401,58 @@ def _texts(page, col: Collector, base) -> None:
         cap = 0.72 * h
         cx, cy = text_centre(x, y, cap, angle, len(t), 0.0, 0.0)
         col.text(t, cx, cy, cap, angle)
+
+
+JOIN_ALONG = (-0.3, 0.6)
+"""How far (em of the text so far) the next character's origin may sit behind or past the
+pen for it to continue the text: nearer than a word's gap plus a space."""
+JOIN_ACROSS = 0.45
+"""How far (em) off the text's baseline a character continuing it may sit: a subscript
+(graphplan's: 0.7 of the size, 0.22 em down) or a superscript."""
+SPACE_GAP = 0.16
+"""A gap along the baseline wider than this (em) between two characters is a space: PDF
+writers (Typst among them) often place words without a space character between them."""
+
+
+def _texts(glyphs: list[_Glyph], col: Collector) -> None:
+    """Join the characters of a page into texts, as the drawing shows them.
+
+    A character continues the text before it (in the order they are shown) when it runs
+    the same way (within 2°), is 0.45–1.6 times its size, starts within
+    :data:`JOIN_ALONG` of its pen and within :data:`JOIN_ACROSS` of its baseline — so a
+    subscript shown smaller and lower (``R`` then ``12``) is one text ``R12``, and a
+    label written glyph by glyph is one text. A gap wider than :data:`SPACE_GAP` is a
+    space. Each text's centre is the middle of its first character's origin and its
+    last one's advance, half a capital height (0.72 em) above the baseline."""
+    runs: list[list] = []  # [chars, first glyph, pen x, pen y, size, colour]
+    for g in glyphs:
+        r = runs[-1] if runs else None
+        if r is not None:
+            f = r[1]
+            size = r[4]
+            along = (g.x - r[2]) * f.ux + (g.y - r[3]) * f.uy
+            across = (g.x - f.x) * f.nx + (g.y - f.y) * f.ny
+            if g.ux * f.ux + g.uy * f.uy > math.cos(math.radians(2.0)) and \
+                    0.45 * size <= g.size <= 1.6 * size and \
+                    JOIN_ALONG[0] * size <= along <= JOIN_ALONG[1] * size and \
+                    abs(across) <= JOIN_ACROSS * size:
+                if along > SPACE_GAP * min(size, g.size) and r[0][-1] != " " and \
+                        g.char[:1] != " ":
+                    r[0].append(" ")
+                r[0].append(g.char)
+                r[2], r[3] = g.ex, g.ey
+                r[4] = max(size, g.size)
+                continue
+        runs.append([[g.char], g, g.ex, g.ey, g.size, g.colour])
+    for chars, f, px, py, size, colour in runs:
+        text = " ".join("".join(chars).split())
+        if not text:
+            continue
+        length = (px - f.x) * f.ux + (py - f.y) * f.uy
+        cap = 0.72 * size
+        cx = f.x + 0.5 * length * f.ux + 0.5 * cap * f.nx
+        cy = f.y + 0.5 * length * f.uy + 0.5 * cap * f.ny
+        col.text(text, cx, cy, cap, math.degrees(math.atan2(f.uy, f.ux)), colour)
 
 
 __all__ = ["read_pdf"]
