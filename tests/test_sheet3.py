@@ -120,6 +120,23 @@ def test_sheet_texts_are_the_calculation(unit):
         assert [texts[f"s3-table-r{i}c{j}"] for j in range(1, len(row) + 1)] == row
 
 
+def test_a_four_stroke_table_gives_the_cycle_angle(unit):
+    """The engine (720°, 24 positions from the ВМТ of intake at φ = 90°): sheet 3's table gives
+    φ as the cycle angle of its diagrams, 0, 30 … 690° (30° a position over two turns), not
+    the angle of O→A modulo 720°, which reads 90 … 690, 0, 30, 60; the one-turn press keeps
+    the angle of O→A, as its sheets 1 and 2 give it."""
+    a, u = unit("engine")
+    sheet = dynamics_sheet(a, unit=u)
+    texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
+    column = [float(texts[f"s3-table-r{i}c2"].replace(",", ".")) for i in range(1, 25)]
+    assert column == [30.0 * k for k in range(24)]
+    assert column == pytest.approx(np.degrees(u.model.moment.pos_tau).tolist())
+    p, up = unit("press")
+    phi = {r[0]: float(r[1]) for r in position_rows(up)}
+    assert phi == pytest.approx({lab: p.mech.positions.phi_deg(f) % 360.0
+                                 for lab, f in zip(p.kin.labels, p.kin.phi, strict=True)})
+
+
 def test_round_off_is_written_as_zero(unit):
     """The shaper's crank has no inertia of its own and the dyads stand still at the dead
     centres 0 and 0': Iп there is round-off (~1e-31 kg·m²), written 0 as in the moments."""

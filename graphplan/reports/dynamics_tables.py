@@ -61,8 +61,13 @@ def _table(header, rows) -> list[str]:
 
 
 def position_rows(u: MachineUnit, lang: str | None = None) -> list[list[str]]:
-    """Per position: label, φ (absolute, °), Mс, Jпр, Aс, Aд, ΔT; round-off next to the
-    largest value written as 0; with the decimal comma for ``lang="ru"`` (a sheet)."""
+    """Per position: label, φ (°), Mс, Jпр, Aс, Aд, ΔT; round-off next to the largest value
+    written as 0; with the decimal comma for ``lang="ru"`` (a sheet).
+
+    φ is the crank's angle (of O→A, as on sheets 1 and 2) over a one-turn cycle; over a
+    four-stroke cycle (720°) it is the cycle angle, the crank's travel from the first position
+    (0 … 690° for 24 positions, as the diagrams beside the table and the engine books count it
+    from the ВМТ of intake), where the angle of O→A modulo 720° would read 90 … 690, 0, 30, 60."""
     m, wd = u.model, u.flywheel.work
     big_m, big_a = float(np.max(np.abs(m.moment.M))), float(np.max(np.abs(wd.A_c)))
     big_i = float(np.max(np.abs(m.inertia.I_red)))
@@ -73,8 +78,8 @@ def position_rows(u: MachineUnit, lang: str | None = None) -> list[list[str]]:
     rows = []
     for k, lab in enumerate(m.moment.labels):
         t = float(m.moment.pos_tau[k])
-        # φ in [0°, 720°) over a four-stroke cycle: the two turns' positions differ
-        phi = math.degrees(m.moment.phi[0] + m.moment.sense * t) % math.degrees(m.period)
+        phi = (math.degrees(t) if m.period > 2 * math.pi + 1e-9
+               else math.degrees(m.moment.phi[0] + m.moment.sense * t) % 360.0)
         rows.append([lab, f"{phi:.1f}", v(float(m.moment.pos_M[k]), big_m),
                      v(float(m.pos_inertia.I_red[k]), big_i),
                      v(float(np.interp(t, wd.tau, wd.A_c)), big_a),
