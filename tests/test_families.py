@@ -506,3 +506,33 @@ def test_a_position_on_a_dead_centre_is_in_the_stroke_it_starts():
     assert gas["Fг1"][12] == pytest.approx((5.2 - 0.1) * 1e6 * area, rel=1e-9)
     assert gas["Fг2"][21] == pytest.approx((5.2 - 0.1) * 1e6 * area, rel=1e-9)  # 630°
     assert gas["Fг1"][11] == pytest.approx(gas["Fг2"][20], rel=1e-9)  # 30° before each firing
+
+
+def test_loads_on_two_rockers_share_the_crank_angle_on_q(solved):
+    """Sheet 2's diagram of the loads: the loom's beat-up moment (on the beater 5, over its
+    swing ψ5) and its friction (on the rocker 3, over ψ3) are two links' travels, which one ψ
+    axis cannot carry: both are drawn over the crank's travel φ, 0 … 360°, each curve equal to
+    its load at the positions (at their φ); the compressor's two pistons, of one stroke, keep
+    the common s axis of their indicator diagrams."""
+    from graphplan.drawing.sheet2 import _position_travel, q_curves
+    from graphplan.forces import resistance_loads
+
+    a = solved(ROOT / "tests" / "data" / "variants" / "loom_beater.toml")
+    curves, unit = q_curves(a)
+    assert unit == "deg_crank" and len(curves) == 2
+    at = _position_travel(a, unit)
+    by_crank = np.degrees(np.mod((a.kin.phi - a.kin.phi[0]) * a.mech.crank.sense, 2 * math.pi))
+    assert at == pytest.approx(by_crank)
+    for (name, x, size, _work, _), ld in zip(curves, resistance_loads(a.mech, a.kin, a.cycle),
+                                           strict=True):
+        assert float(x[0]) == 0.0 and float(x[-1]) == pytest.approx(360.0)
+        want = np.abs(np.asarray(ld.moment))
+        # the curve read at each position's φ away from the load's jumps (the beat-up's
+        # end at the beater's dead centre), linearly between its 361 points
+        got = np.interp(at, x, size)
+        smooth = np.abs(np.interp(at + 1.0, x, size) - np.interp(at - 1.0, x, size)) \
+            < 0.05 * float(size.max()) + 1e-9
+        assert smooth.sum() >= 8, name
+        assert got[smooth] == pytest.approx(want[smooth], rel=2e-3, abs=1e-6 * want.max()), name
+    _, unit = q_curves(solved("compressor"))
+    assert unit == "m"

@@ -520,11 +520,12 @@ def q_curves(analysis, n: int = 361):
     fine = solve(mech, phi)
     work = in_working_stroke(mech, cycle, np.mod(phi, 2 * math.pi))
     out = []
-    unit = "m"
+    common = _common_abscissa(mech, cycle)
+    unit = common or "m"
     for res, load in zip(mech.resistances, resistance_loads(mech, fine, cycle), strict=False):
         size = (np.hypot(*np.asarray(load.vector).T) if hasattr(load, "vector")
                 else np.abs(np.asarray(load.moment)))
-        if res.over == "crank":
+        if res.over == "crank" or common:
             x, unit = np.degrees(tau), "deg_crank"
         else:
             tl = res.travel_link or mech.output.link
@@ -540,6 +541,24 @@ def q_curves(analysis, n: int = 361):
             own = stroke_index(res, mech, cycle, cycle_travel(mech, cycle, phi)) % 2 == 0
         out.append((load.name, x, size, own, kin.phi[0] + 0.0))
     return out, unit
+
+
+def _common_abscissa(mech, cycle) -> str:
+    """``"deg_crank"`` where the loads' own abscissae are not one quantity — two rockers'
+    swings (the loom's Mс on the beater over ψ5 and Mтр over ψ3), sliders of different
+    strokes, or a load over the crank angle beside one over a travel: then every load of
+    Q(s) is drawn over the crank's travel φ, which they share; ``""`` where they share one
+    travel (one link, or pistons of one stroke, whose s/H diagrams are drawn together)."""
+    keys: set[tuple] = set()
+    for res in mech.resistances:
+        if res.over == "crank":
+            keys.add(("crank",))
+            continue
+        tl = res.travel_link or mech.output.link
+        lt = cycle.travels[(tl, res.working or mech.output.working)]
+        span = abs(lt.q_end - lt.q_start)
+        keys.add((lt.kind, tl) if lt.kind == "rocker" else (lt.kind, round(span, 9)))
+    return "deg_crank" if len(keys) > 1 else ""
 
 
 def _qs_items(analysis, s2, box: Rect, lang: str) -> list[Item]:
@@ -583,10 +602,19 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
             # runs of one stroke: the working stroke solid, the idle stroke dashed
             edges = np.flatnonzero(np.diff(work.astype(int))) + 1
             for run in np.split(np.arange(len(x)), edges):
+                # each run to the next one's first point: the jump where a stroke ends
+                # (the beat-up's 600 N·m falling to 0) drawn, not left as a gap
+                run = np.append(run, run[-1] + 1) if run[-1] + 1 < len(x) else run
                 if len(run) < 2:
                     continue
                 ax.plot(x[run], y[run], "-" if work[run[0]] else "--", color="black",
                         lw=(0.5 if work[run[0]] else 0.3) * MM)
+        if unit == "deg_crank" and len(curves) > 1:  # several loads over φ: each named
+            for name, x, size, _work, _ in curves:
+                j = int(np.argmax(size))
+                ax.annotate(name, (float(x[j]), float(size[j]) / div), xytext=(1.5 * MM, 1.0 * MM),
+                            textcoords="offset points", ha="left", va="bottom",
+                            **_font(name, 2.5))
         # the analysed positions on the curve of the first load
         _name, x, size, work, _ = curves[0]
         from ..forces import resistance_loads
@@ -691,7 +719,7 @@ def _position_travel(analysis, unit: str) -> np.ndarray:
 
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
     res = mech.resistances[0]
-    if res.over == "crank":
+    if res.over == "crank" or unit == "deg_crank":
         return np.degrees(np.mod((kin.phi - kin.phi[0]) * mech.crank.sense, cycle.period))
     tl = res.travel_link or mech.output.link
     lt = cycle.travels[(tl, res.working or mech.output.working)]
