@@ -193,22 +193,25 @@ def test_the_balancing_moment_curve_is_smooth_closed_and_says_its_rule(analysis,
     from graphplan.forces import moment_curve
 
     seen = {}
-    real = s2.moment_figure
+    real = s2.moment_items
 
     def spy(curve, *args, **kw):
         seen["curve"] = curve
-        seen["fig"] = real(curve, *args, **kw)
-        return seen["fig"]
+        seen["group"] = real(curve, *args, **kw)
+        return seen["group"]
 
-    monkeypatch.setattr(s2, "moment_figure", spy)
+    monkeypatch.setattr(s2, "moment_items", spy)
     a = analysis("press")
     s2.kinetostatics_sheet(a)
     every = moment_curve(a.mech, a.kin, a.cycle, neglect_below=0.0)
     ruled = moment_curve(a.mech, a.kin, a.cycle)
     assert np.allclose(seen["curve"].M, every.M, rtol=0, atol=1e-9)
     assert not np.allclose(ruled.M, every.M, rtol=0, atol=1.0)  # the rule does drop loads
-    x, y = seen["fig"].axes[0].lines[0].get_data()
-    assert x[0] == 0.0 and x[-1] == 360.0 and y[-1] == y[0]
+    # the curve (the group's first line, 0.5 mm) runs from 0° to 360° and ends where it began
+    line = seen["group"].items[0]
+    assert line.style.width == 0.5 and len(line.points) == len(every.M) + 1
+    (x0, y0), (x1, y1) = line.points[0], line.points[-1]
+    assert y1 == y0 and x1 > x0
     assert "все нагрузки" in s2.WORDS["ru"]["curve"]
 
 

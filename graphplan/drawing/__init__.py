@@ -18,7 +18,6 @@ from .dynamics_figures import (
 )
 from .figures import (
     TEXT,
-    diagrams_figure,
     diagrams_items,
     diagrams_size,
     fit_diagrams,
@@ -54,7 +53,6 @@ from .fonts import (
     uncovered_chars,
 )
 from .labels import LabelRequest, merge_coincident, place_labels
-from .mpl_items import MIN_WIDTH, figure_items
 from .scheme import mechanism_scheme, scheme_links, scheme_paper
 from .sheet import (
     DASHDOT,
@@ -118,7 +116,7 @@ from .sheet1 import (
     title_block,
     turning_arrow,
 )
-from .sheet2 import ARROW_MM, kinetostatics_sheet, moment_figure, table_header
+from .sheet2 import ARROW_MM, kinetostatics_sheet, moment_items, table_header
 from .sheet3 import (
     AXIS,
     DIM,
@@ -165,7 +163,6 @@ __all__ = [
     "MARGIN_LEFT",
     "MEDIUM",
     "MIN_READ",
-    "MIN_WIDTH",
     "PLAN_LAYERS",
     "REQUIRED_CHARS",
     "RESULT_H",
@@ -207,7 +204,6 @@ __all__ = [
     "coverage_report",
     "decimal_comma",
     "diagram_block",
-    "diagrams_figure",
     "diagrams_items",
     "diagrams_size",
     "dimension",
@@ -215,7 +211,6 @@ __all__ = [
     "energy_mass_items",
     "energy_mass_width",
     "fallback_font_files",
-    "figure_items",
     "find_font_file",
     "find_system_font",
     "fit_diagrams",
@@ -237,7 +232,7 @@ __all__ = [
     "mechanism_scheme",
     "merge_coincident",
     "missing_chars",
-    "moment_figure",
+    "moment_items",
     "omega_items",
     "place_labels",
     "plan_items",

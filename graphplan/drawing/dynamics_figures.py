@@ -13,8 +13,8 @@ times the printed scale is the value (method B.4):
   their angles marked, the points k and l they cut on the ΔT axis and the segment kl;
   above it JII(φ) turned 90° (φ downwards) at the same KJ, or magnified when JII varies
   too little to be read (its scale written).
-* :func:`omega_items` — the check ω(φ) of the steady motion with the flywheel: a
-  matplotlib plot turned into items by :mod:`graphplan.drawing.mpl_items`.
+* :func:`omega_items` — the check ω(φ) of the steady motion with the flywheel, a plot
+  drawn by :class:`graphplan.drawing.chart.Chart`.
 
 The scales come from :func:`graphplan.dynamics.machine.machine_unit` (KT and KJ chosen so
 that ψ is tens of degrees). Numbers on Russian sheets carry the decimal comma.
@@ -31,11 +31,11 @@ from shapely import box as shapely_box
 
 from ..numbers import fmt, sheet_text
 from .labels import LabelRequest, place_labels
-from .mpl_items import MM, figure_items
 from .sheet import (
     Arc,
     Arrow,
     Circle,
+    Group,
     Polyline,
     Rect,
     Style,
@@ -425,45 +425,35 @@ def energy_mass_items(u, x_left: float, y_top: float, geo: dict, lang: str,
 
 def omega_items(u, box: Rect, lang: str) -> list:
     """ω(φ) of the steady motion with Jп + Jрот + Jм and constant Mд (energy form), with
-    ωmax, ωmin, ωср and δ — a matplotlib plot turned into the sheet's items."""
-    import matplotlib
-    from matplotlib.figure import Figure
-    from matplotlib.ticker import MaxNLocator
-
-    from .figures import _font, spaced_labels
+    ωmax, ωmin, ωср and δ, drawn in ``box`` (:class:`graphplan.drawing.chart.Chart`: its
+    axes 24 mm in from the left, 10 mm from the top, 12 mm from the bottom, 6 mm from the
+    right)."""
+    from .chart import ALL_STEPS, Chart, auto_limits, tick_labels
+    from .figures import spaced_labels
 
     w = WORDS[lang]
     s = u.simulation
     deg = np.degrees(s.tau)
     width_mm, height_mm = box.width, box.height
-    with matplotlib.rc_context({"axes.unicode_minus": False, "lines.solid_capstyle": "round"}):
-        fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4))
-        ax = fig.add_axes((24 / width_mm, 12 / height_mm, 1 - 30 / width_mm,
-                           1 - 22 / height_mm))
-        ax.plot(deg, s.omega, "-k", lw=0.5 * MM)
-        for v in (s.omega_max, s.omega_min, s.omega_avg):
-            ax.axhline(v, color="black", lw=0.25 * MM, dashes=(4 * MM, 1.5 * MM))
-        ax.set_xlim(0, float(deg[-1]))
-        ticks = np.degrees(u.model.moment.pos_tau)
-        ax.set_xticks(ticks)
-        ax.set_xticklabels(spaced_labels(ticks, list(u.model.moment.labels),
-                                   (width_mm - 30.0) / float(deg[-1])),
-                           **_font("0123456789()", SMALL_H))
-        ax.grid(True, color="black", lw=0.25 * MM)
-        # at most 5 values of ω, 8 mm apart at least (a low plot on a small format)
-        ax.yaxis.set_major_locator(MaxNLocator(min(5, max(2, int((height_mm - 22.0) / 8.0)))))
-        for lab in ax.get_yticklabels():
-            lab.set(**_font("0123456789.", SMALL_H))
-        ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", SMALL_H)["fontsize"])
-        for sp in ax.spines.values():
-            sp.set_linewidth(0.25 * MM)
-        ax.set_ylabel(f"ω, {w['rad']}/{w['s']}", **_font("ω, рад/с", TEXT_H))
-        title = (f"{w['omega' if u.flywheel.needed else 'omega_none']}: "
-                 f"δ = {s.delta_actual:.4f} "
-                 f"({w['target']} {s.delta_target:g})")
-        fig.text(0.5, 1 - 1.5 / height_mm, title, ha="center", va="top", **_font(title, TEXT_H))
-        group = figure_items(fig, (box.x0, box.y0), id="s3-omega", lang=lang)
-    return [group]
+    levels = (s.omega_max, s.omega_min, s.omega_avg)
+    ax = Chart(box.x0 + 24.0, box.y0 + 10.0, width_mm - 30.0, height_mm - 22.0,
+               (0.0, float(deg[-1])), auto_limits([s.omega, levels]), lang)
+    ticks = np.degrees(u.model.moment.pos_tau)
+    # at most 5 values of ω, 8 mm apart at least (a low plot on a small format)
+    yv = ax.y_values(most=min(5, max(2, int((height_mm - 22.0) / 8.0))), steps=ALL_STEPS)
+    ax.grid(ticks, yv, 0.25)
+    ax.plot(deg, s.omega, 0.5)
+    for v in levels:
+        ax.hline(v, 0.25, (4.0, 1.5))
+    ax.frame(0.25)
+    ax.xticks(ticks, spaced_labels(ticks, list(u.model.moment.labels),
+                                   (width_mm - 30.0) / float(deg[-1])))
+    ax.ylabel(f"ω, {w['rad']}/{w['s']}", ax.yticks(yv, tick_labels(yv)))
+    title = (f"{w['omega' if u.flywheel.needed else 'omega_none']}: "
+             f"δ = {s.delta_actual:.4f} "
+             f"({w['target']} {s.delta_target:g})")
+    ax.letter(box.x0 + 0.5 * width_mm, box.y0 + 1.5, title, TEXT_H, "center", "top")
+    return [Group(tuple(ax.items), layer=LAYER, id="s3-omega")]
 
 
 __all__ = ["energy_mass_items", "energy_mass_width", "omega_items", "work_items"]

@@ -1,24 +1,19 @@
-"""Figures drawn with matplotlib (imported lazily): the kinematic diagrams of sheet 1.
+"""The kinematic diagrams of sheet 1, drawn as the sheet's own items.
 
 Sheet 1 carries the three diagrams at their own scales: one millimetre of the figure
 is one millimetre of the sheet, so the abscissa is ``length_mm`` long and an ordinate
 of y mm stands for ``y·Ks`` (``Kv``, ``Ka``). :func:`fit_diagrams` chooses the length
-and the heights for the box the sheet gives, :func:`diagrams_figure` draws them with
-matplotlib and :func:`diagrams_items` plays that drawing into the sheet's own items
-(:mod:`graphplan.drawing.mpl_items`): its lines become polylines in sheet millimetres,
-its letters :class:`~graphplan.drawing.sheet.Text` in the sheet's lettering (GOST 2.304 type
-B, slanted; decimal comma on Russian sheets), so that they stay text in the SVG, the
-DXF and the PDF and the layout checks see them. matplotlib lays the letters out in the
-font the sheet letters them in (:func:`_font`: osifont, bundled, where it draws every
-character of a text, else DejaVu Sans), so their widths agree.
+and the heights for the box the sheet gives and :func:`diagrams_items` draws them
+(:class:`graphplan.drawing.chart.Chart`): polylines in sheet millimetres and
+:class:`~graphplan.drawing.sheet.Text` in the sheet's lettering (GOST 2.304 type B,
+slanted; decimal comma on Russian sheets), so that they stay text in the SVG, the DXF
+and the PDF and the layout checks see them.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import Any
 
 import numpy as np
 
@@ -28,8 +23,9 @@ from ..model import Mechanism
 from ..numbers import plain
 from ..plans import MIN_NODES, KinematicDiagrams, kinematic_diagrams
 from . import fonts
+from .chart import MIN_DOT, Chart
+from .sheet import Circle, Group, Item, Style
 
-MM = 72 / 25.4  #: points per millimetre
 THIN, MAIN = 0.25, 0.5  #: line widths, mm
 TEXT_H, SMALL_H = 3.5, 2.5  #: capital heights of labels and of position numbers, mm
 #: Margins, mm: the legend strip on top, below, between panels, left and right of the axes
@@ -43,30 +39,6 @@ TEXT = {
     "ru": {"exact": "точно", "chords": "метод хорд", "m": "м", "s": "с", "rad": "рад",
            "mm": "мм"},
 }
-
-
-@lru_cache(maxsize=8)
-def _font_file(family: str):
-    """matplotlib FontProperties of the bundled file of ``family`` (see graphplan.drawing.fonts).
-
-    Given by file, not by name: matplotlib's own font lookup (its cache, the system's
-    fonts, ``MPL_IGNORE_SYSTEM_FONTS``) never decides which font letters a figure.
-    """
-    from matplotlib.font_manager import FontProperties
-
-    path = fonts.find_font_file(family)
-    return FontProperties(fname=str(path)) if path is not None else FontProperties(family=family)
-
-
-def _font(text: str, height_mm: float) -> dict:
-    """Font keywords lettering ``text`` with capitals ``height_mm`` tall.
-
-    osifont when it draws every character (its blank Ё ё Э э and missing −, ₁ … are
-    checked by :mod:`graphplan.drawing.fonts`), else DejaVu Sans.
-    """
-    family = "osifont" if not fonts.missing_chars("osifont", text) else "DejaVu Sans"
-    return {"fontproperties": _font_file(family),
-            "fontsize": height_mm / fonts.cap_ratio(family) * MM}
 
 
 def spaced_labels(xs, labels, mm_per_unit: float, height: float = SMALL_H) -> list[str]:
@@ -160,7 +132,7 @@ def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: floa
                       "mm at any whole-mm length and height")
 
 
-def _position_numbers(ax, d: KinematicDiagrams, k: int, K: float, x_per_mm: float,
+def _position_numbers(ch: Chart, d: KinematicDiagrams, k: int, K: float, x_per_mm: float,
                       v_end: float) -> None:
     """The numbers of the main positions on the φ axis of panel k, each on the side of the
     axis away from the curve and the chords there (below where they run above), the one
@@ -181,28 +153,18 @@ def _position_numbers(ax, d: KinematicDiagrams, k: int, K: float, x_per_mm: floa
         sel = (d.phi_deg >= lo_x) & (d.phi_deg <= hi_x)
         vals = np.r_[curve[sel], np.interp([lo_x, x, hi_x], cx, cy)]
         above = vals.max() <= 0.0 or (vals.min() < 0.0 < vals.max() and vals.mean() < 0.0)
-        ax.text(x + (0.8 * x_per_mm if x <= 1e-9 else 0.0), gap if above else -gap, lab,
-                ha="left" if x <= 1e-9 else "center", va="bottom" if above else "top",
-                **_font("0123456789", SMALL_H))
+        ch.text(x + (0.8 * x_per_mm if x <= 1e-9 else 0.0), gap if above else -gap, lab,
+                SMALL_H, "left" if x <= 1e-9 else "center", "bottom" if above else "top")
 
 
 def diagrams_items(d: KinematicDiagrams, origin, width_mm: float, height_mm: float,
-                   lang: str = "ru", *, id: str = "kin-diagrams"):
-    """The diagrams of :func:`diagrams_figure` as a group of sheet items whose box has its
-    top-left corner at ``origin`` (mm)."""
-    from .mpl_items import figure_items
+                   lang: str = "ru", *, id: str = "kin-diagrams") -> Group:
+    """The diagrams s(φ), v(φ), a(φ) in a box ``width_mm`` × ``height_mm`` whose top-left
+    corner is at ``origin`` (sheet mm), as a group of the sheet's items.
 
-    return figure_items(diagrams_figure(d, width_mm, height_mm, lang), origin, id=id,
-                        lang=lang)
-
-
-def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
-                    lang: str = "ru"):
-    """matplotlib figure of the diagrams s(φ), v(φ), a(φ), ``width_mm`` × ``height_mm``.
-
-    Three stacked axes share the φ axis (crank travel from the first position, the
+    Three stacked panels share the φ axis (crank travel from the first position, the
     main positions numbered at the nodes), drawn at the scales of ``d`` and centred in
-    the figure. The s diagram shows the exact curve (main line) with the node
+    the box. The s diagram shows the exact curve (main line) with the node
     ordinates and the chords between them; the v and a diagrams show the exact curve
     (thin) and the method of chords: the pole P1 (P2) at H1 (H2) mm left of the
     origin, its rays parallel to the chords, the ordinates their heights are transferred
@@ -229,90 +191,80 @@ def diagrams_figure(d: KinematicDiagrams, width_mm: float, height_mm: float,
     units = (t["rad"] if rocker else t["m"], per, per + "²")
     v_end = 0.5 * (d.v_chords[0] + d.v_chords[-1])  # the periodic v polyline at 0° and 360°
 
-    import matplotlib
-    from matplotlib.figure import Figure
-    from matplotlib.lines import Line2D
-
-    with matplotlib.rc_context({"axes.unicode_minus": False, "lines.solid_capstyle": "round",
-                                "lines.solid_joinstyle": "round"}):
-        fig = Figure(figsize=(width_mm / 25.4, height_mm / 25.4))
-        x0 = (width_mm - f.box_w) / 2
-        y = height_mm - TOP - (height_mm - f.height) / 2  # top of the next panel, mm from below
-        first = None
-        for k, (lo, hi, K, pad_bot, box_h) in enumerate(f.panels):
-            y -= box_h
-            ax = fig.add_axes((x0 / width_mm, y / height_mm, f.box_w / width_mm,
-                               box_h / height_mm), sharex=first)
-            y -= GAP
-            first = first or ax
-            ax.set_xlim(f.xlo, f.xhi)
-            ax.set_ylim(lo - pad_bot * K, hi + PAD_TOP * K)
-            ax.patch.set_visible(False)
-            for side in ("top", "right"):
-                ax.spines[side].set_visible(False)
-            pole = (0.0, d.H1, d.H2)[k]
-            tip = hi + (PAD_TOP - 3.0) * K  # the ordinate axis' arrow
-            ax.spines["left"].set_position(("data", 0.0))
-            ax.spines["left"].set_bounds(lo - 1.5 * K, tip)
-            ax.spines["bottom"].set_position(("data", 0.0))
-            ax.spines["bottom"].set_bounds(-pole * x_per_mm, 360.0 + 6 * x_per_mm)
-            for sp in ("left", "bottom"):
-                ax.spines[sp].set_linewidth(THIN * MM)
-            ax.set_yticks([])
-            ax.set_xticks(d.node_deg[[bool(s) for s in d.node_labels]])
-            ax.set_xticks([x for x, s in zip(d.node_deg, d.node_labels, strict=True) if not s],
-                          minor=True)
-            ax.set_xticklabels([])
-            _position_numbers(ax, d, k, K, x_per_mm, v_end)
-            ax.tick_params(axis="x", which="both", direction="inout", width=THIN * MM,
-                           length=1.5 * MM, pad=0.6 * MM)
-            ax.tick_params(axis="x", which="major", length=2.5 * MM)
-            arrow: dict[str, Any] = {"clip_on": False, "color": "black",
-                                     "markersize": 2.2 * MM, "lw": 0}
-            ax.plot([360.0 + 6 * x_per_mm], [0.0], ">", **arrow)
-            ax.plot([0.0], [tip], "^", **arrow)
-            ax.text(360.0 + 7 * x_per_mm, 1.0 * K, "φ", ha="left", va="bottom",
-                    **_font("φ", TEXT_H))
-            label = f"{names[k]}, {units[k]}"
-            ax.text(2.5 * x_per_mm, tip, label, ha="left", va="center", **_font(label, TEXT_H))
-            unit = f"({units[k]})" if "/" in units[k] else units[k]
-            scale = f"K{names[k]} = {plain(K, 4)} {unit}/{t['mm']}" + (
-                f",  H{k} = {plain(pole)} {t['mm']}" if k else "")
-            ax.text((4.5 + fonts.text_width(label, TEXT_H)) * x_per_mm, tip, scale,
-                    ha="left", va="center", **_font(scale, SMALL_H))
-            chords = (d.s_nodes, d.v_chords, d.a_chords)[k]
-            if k == 0:  # s: the exact curve, the node ordinates and the chords between them
-                ax.plot(d.phi_deg, d.s, "-k", lw=MAIN * MM)
-                ax.vlines(d.node_deg, 0.0, chords, colors="black", lw=THIN * MM)
-                ax.plot(d.node_deg, chords, "-k", lw=THIN * MM)
-                continue
+    ox, oy = (float(v) for v in origin)
+    left = ox + (width_mm - f.box_w) / 2  # the panels' left side, sheet mm
+    top = oy + TOP + (height_mm - f.height) / 2  # top of the next panel, sheet mm
+    items: list[Item] = []
+    for k, (lo, hi, K, pad_bot, box_h) in enumerate(f.panels):
+        ch = Chart(left, top, f.box_w, box_h, (f.xlo, f.xhi), (lo - pad_bot * K,
+                                                                hi + PAD_TOP * K), lang)
+        top += box_h + GAP
+        pole = (0.0, d.H1, d.H2)[k]
+        tip = hi + (PAD_TOP - 3.0) * K  # the ordinate axis' arrow
+        # the axes through the origin: φ from the pole to its arrow, the ordinate up to its
+        ch.plot([-pole * x_per_mm, 360.0 + 6 * x_per_mm], [0.0, 0.0], THIN, clip=False)
+        ch.plot([0.0, 0.0], [lo - 1.5 * K, tip], THIN, clip=False)
+        ch.xticks([x for x, s in zip(d.node_deg, d.node_labels, strict=True) if not s],
+                  [], length=1.5, width=THIN, at=0.0, direction="inout")
+        ch.xticks(d.node_deg[[bool(s) for s in d.node_labels]], [], length=2.5, width=THIN,
+                  at=0.0, direction="inout")
+        _position_numbers(ch, d, k, K, x_per_mm, v_end)
+        ch.triangle(360.0 + 6 * x_per_mm, 0.0, ARROW_MM, "right")
+        ch.triangle(0.0, tip, ARROW_MM, "up")
+        ch.text(360.0 + 7 * x_per_mm, 1.0 * K, "φ", TEXT_H, "left", "bottom")
+        label = f"{names[k]}, {units[k]}"
+        ch.text(2.5 * x_per_mm, tip, label, TEXT_H, "left", "center")
+        unit = f"({units[k]})" if "/" in units[k] else units[k]
+        scale = f"K{names[k]} = {plain(K, 4)} {unit}/{t['mm']}" + (
+            f",  H{k} = {plain(pole)} {t['mm']}" if k else "")
+        ch.text((4.5 + fonts.text_width(label, TEXT_H)) * x_per_mm, tip, scale, SMALL_H,
+                "left", "center")
+        chords = (d.s_nodes, d.v_chords, d.a_chords)[k]
+        if k == 0:  # s: the exact curve, the node ordinates and the chords between them
+            ch.plot(d.phi_deg, d.s, MAIN)
+            ch.vlines(d.node_deg, 0.0, chords, THIN)
+            ch.plot(d.node_deg, chords, THIN)
+        else:
             px = -pole * x_per_mm
             for r in chords[: d.intervals]:  # rays from the pole, parallel to the chords
-                ax.plot([px, 0.0], [0.0, r], "-", color="black", lw=THIN * MM)
-            ax.plot([px], [0.0], "o", color="black", markersize=1.2 * MM, clip_on=False)
-            ax.text(px - 2.5 * x_per_mm, 0.0, f"P{k}", ha="right", va="center",
-                    **_font("P1", TEXT_H))  # left of the pole: clear of its rays
-            ax.plot(d.phi_deg, (d.v, d.a)[k - 1], "-k", lw=THIN * MM)
+                ch.plot([px, 0.0], [0.0, r], THIN)
+            ch.dots([px], [0.0], 1.2)
+            ch.text(px - 2.5 * x_per_mm, 0.0, f"P{k}", TEXT_H, "right", "center")
+            ch.plot(d.phi_deg, (d.v, d.a)[k - 1], THIN)
             if k == 1:
-                ax.plot(np.r_[0.0, d.mid_deg, 360.0], np.r_[v_end, chords, v_end], "-k",
-                        lw=MAIN * MM)
+                ch.plot(np.r_[0.0, d.mid_deg, 360.0], np.r_[v_end, chords, v_end], MAIN)
             else:
-                ax.plot(d.node_deg, chords, "-k", lw=MAIN * MM)
+                ch.plot(d.node_deg, chords, MAIN)
             at = (d.mid_deg, d.node_deg)[k - 1]  # where each ray's height is transferred
-            ax.vlines(at, 0.0, chords, colors="black", lw=THIN * MM)
-            ax.plot(at, chords, "o", color="black", markersize=1.0 * MM, lw=0)
-        kphi = f"Kφ = {plain(d.Kphi, 4)} {t['rad']}/{t['mm']}"
-        fig.text((x0 + 2) / width_mm, 1 - 1.5 / height_mm, kphi, ha="left", va="top",
-                 **_font(kphi, SMALL_H))
-        handles = [Line2D([], [], color="black", lw=THIN * MM),
-                   Line2D([], [], color="black", lw=MAIN * MM, marker="o",
-                          markersize=1.0 * MM)]
-        legend = [t["exact"], t["chords"]]
-        lf = _font("".join(legend), SMALL_H)
-        legend_font = lf["fontproperties"].copy()
-        legend_font.set_size(lf["fontsize"])
-        fig.legend(handles, legend, loc="upper right", ncols=2, frameon=False,
-                   bbox_to_anchor=((x0 + f.box_w) / width_mm, 1 - 0.5 / height_mm),
-                   prop=legend_font,
-                   handlelength=2.5, borderaxespad=0.0)
-    return fig
+            ch.vlines(at, 0.0, chords, THIN)
+            ch.dots(at, chords, 1.0)
+        items += ch.items
+    kphi = f"Kφ = {plain(d.Kphi, 4)} {t['rad']}/{t['mm']}"
+    page = Chart(ox, oy, width_mm, height_mm, (0.0, 1.0), (0.0, 1.0), lang)  # its letters
+    page.letter(left + 2.0, oy + 1.5, kphi, SMALL_H, "left", "top")  # the box's top strip
+    _legend(page, left + f.box_w, oy + 0.5,
+            [(t["exact"], THIN, False), (t["chords"], MAIN, True)])
+    return Group(tuple(items + page.items), layer="diagrams", id=id)
+
+
+#: the axes' arrowheads, mm long and wide
+ARROW_MM = 2.2
+
+
+def _legend(ch: Chart, right: float, top: float, entries) -> None:
+    """A legend of one row ending at ``right``, its letters' top ``top`` (sheet mm): per
+    entry a line sample 2.5 em long (with a dot for a graphical construction) and its
+    words."""
+    em = SMALL_H / fonts.cap_ratio("osifont")  # the letters' em, mm
+    x = right - 0.4 * em
+    y = top + 0.4 * em
+    mid = y + 0.5 * SMALL_H  # the samples level with the capitals' middle
+    for k, (words, width, dot) in enumerate(reversed(entries)):
+        x -= fonts.text_width(words, SMALL_H)
+        ch.letter(x, y, words, SMALL_H, "left", "top")
+        x -= 0.8 * em
+        ch.polyline(((x - 2.5 * em, mid), (x, mid)), Style(width), clip=False)
+        if dot:
+            ch.items.append(Circle((x - 1.25 * em, mid), 0.5, Style(MIN_DOT, fill="black"),
+                                   layer=ch.layer))
+        x -= 2.5 * em + (2.0 * em if k < len(entries) - 1 else 0.0)

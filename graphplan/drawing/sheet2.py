@@ -562,25 +562,19 @@ def _common_abscissa(mech, cycle) -> str:
 
 
 def _qs_items(analysis, s2, box: Rect, lang: str) -> list[Item]:
-    """The diagram of the technological force Q(s) (matplotlib, played into the sheet's
-    items), the analysed positions marked."""
-    from .mpl_items import figure_items
-
+    """The diagram of the technological force Q(s) as the sheet's items, the analysed
+    positions marked (:func:`q_items`)."""
     curves, unit = q_curves(analysis)
     if not curves:
         return []
-    fig = q_figure(analysis, curves, unit, s2.positions, box.width, box.height, lang)
-    return [figure_items(fig, (box.x0, box.y0), id="s2-q-diagram", lang=lang)]
+    return [q_items(analysis, curves, unit, s2.positions, box, lang)]
 
 
-def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm: float,
-             lang: str):
+def q_items(analysis, curves, unit: str, positions, box: Rect, lang: str) -> Group:
     """Q(s): each load's size against its link's travel, the working stroke solid, the
-    idle one dashed, the analysed positions dotted and numbered."""
-    import matplotlib
-    from matplotlib.figure import Figure as MplFigure
-
-    from .figures import MM, _font
+    idle one dashed, the analysed positions dotted and numbered; drawn in ``box`` (its
+    axes 20 mm in from the left, 16 mm from the top and the bottom, 6 mm from the right)."""
+    from .chart import Chart, tick_labels
 
     w = WORDS[lang]
     kin = analysis.kin
@@ -593,77 +587,77 @@ def q_figure(analysis, curves, unit: str, positions, width_mm: float, height_mm:
                "deg_crank": "φ, °"}[unit]
     names = ", ".join(c[0] for c in curves)
     title = f"{w[word]} {names}({s_words.split(',')[0]})"
-    with matplotlib.rc_context({"axes.unicode_minus": False}):
-        fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
-        ax = fig.add_axes((20 / width_mm, 16 / height_mm, 1 - 26 / width_mm,
-                           1 - 32 / height_mm))
-        for _name, x, size, work, _ in curves:
-            y = size / div
-            # runs of one stroke: the working stroke solid, the idle stroke dashed
-            edges = np.flatnonzero(np.diff(work.astype(int))) + 1
-            for run in np.split(np.arange(len(x)), edges):
-                # each run to the next one's first point: the jump where a stroke ends
-                # (the beat-up's 600 N·m falling to 0) drawn, not left as a gap
-                run = np.append(run, run[-1] + 1) if run[-1] + 1 < len(x) else run
-                if len(run) < 2:
-                    continue
-                ax.plot(x[run], y[run], "-" if work[run[0]] else "--", color="black",
-                        lw=(0.5 if work[run[0]] else 0.3) * MM)
-        if unit == "deg_crank" and len(curves) > 1:  # several loads over φ: each named
-            for name, x, size, _work, _ in curves:
-                j = int(np.argmax(size))
-                ax.annotate(name, (float(x[j]), float(size[j]) / div), xytext=(1.5 * MM, 1.0 * MM),
-                            textcoords="offset points", ha="left", va="bottom",
-                            **_font(name, 2.5))
-        # the analysed positions on the curve of the first load
-        _name, x, size, work, _ = curves[0]
-        from ..forces import resistance_loads
-
-        at = resistance_loads(analysis.mech, kin, analysis.cycle)
-        ld = at[0]
-        vals = (np.hypot(*np.asarray(ld.vector).T) if hasattr(ld, "vector")
-                else np.abs(np.asarray(ld.moment)))
-        xs = _position_travel(analysis, unit)
-        shown: list[tuple[float, float]] = []
-        x_mm = (width_mm - 26.0) / max(1.02 * float(np.max(x)), 1e-12)
-        y_mm = (height_mm - 32.0) / max(big / div * 1.15, 1e-12)
-        # the ordinates of the analysed positions (thin lines)
-        sel = list(positions)
-        ax.vlines(xs[sel], 0.0, vals[sel] / div, colors="black", lw=0.25 * MM)
-        for k in positions:
-            px, py = float(xs[k]), float(vals[k]) / div
-            ax.plot([px], [py], "o", color="black", markersize=1.2 * MM)
-            if any(abs(px - a) * x_mm < 9.0 and abs(py - b) * y_mm < 6.0 for a, b in shown):
+    width_mm, height_mm = box.width, box.height
+    x_max = float(np.max(curves[0][1]))  # the first load's travel
+    ax = Chart(box.x0 + 20.0, box.y0 + 16.0, width_mm - 26.0, height_mm - 32.0,
+               (0.0, x_max * 1.02 if x_max > 0 else 1.0),
+               (0.0, big / div * 1.15 if big > 0 else 1.0), lang)
+    for _name, x, size, work, _ in curves:
+        y = size / div
+        # runs of one stroke: the working stroke solid, the idle stroke dashed
+        edges = np.flatnonzero(np.diff(work.astype(int))) + 1
+        for run in np.split(np.arange(len(x)), edges):
+            # each run to the next one's first point: the jump where a stroke ends
+            # (the beat-up's 600 N·m falling to 0) drawn, not left as a gap
+            run = np.append(run, run[-1] + 1) if run[-1] + 1 < len(x) else run
+            if len(run) < 2:
                 continue
-            shown.append((px, py))
-            # written on the side the curve falls away from: left of a rising curve
-            near = np.argsort(np.abs(x - px) + 1e9 * (np.abs(size / div - py) > 0.02 * big / div
-                                                       + 1e-12))[:2]
-            j0, j1 = sorted(int(j) for j in near)
-            rising = (size[j1] - size[j0]) * (x[j1] - x[j0]) >= 0
-            lines = [np.column_stack([c[1] * x_mm, c[2] / div * y_mm]) for c in curves]
-            lines += [np.array([[xs[j] * x_mm, 0.0], [xs[j] * x_mm, vals[j] / div * y_mm]])
-                      for j in sel if j != k]  # the other positions' ordinates
-            dx, dy = _free_side(kin.labels[k], (px * x_mm, py * y_mm), rising, lines,
-                                (width_mm - 26.0, height_mm - 32.0))
-            ax.annotate(kin.labels[k], (px, py), xytext=(dx * MM, dy * MM),
-                        textcoords="offset points", ha="right" if dx < 0 else "left",
-                        va="bottom", **_font(kin.labels[k], 2.5))
-        ax.set_xlim(0, float(np.max(x)) * 1.02 if np.max(x) > 0 else 1.0)
-        ax.set_ylim(0, big / div * 1.15 if big > 0 else 1.0)
-        for lab in ax.get_xticklabels() + ax.get_yticklabels():
-            lab.set(**_font("0123456789,.", 2.5))
-        ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", 2.5)["fontsize"])
-        for sp in ax.spines.values():
-            sp.set_linewidth(0.25 * MM)
-        ax.set_xlabel(s_words, **_font(s_words, 3.5))
-        ax.set_ylabel(f"{symbol}, {f_unit}", **_font(f"{symbol}, {f_unit}", 3.5))
-        leg = f"— {w['work']}   - - {w['idle']}"
-        if analysis.cycle.period <= 2 * math.pi + 1e-9:
-            fig.text(1 - 4 / width_mm, 1 - 9.0 / height_mm, leg, ha="right", va="top",
-                     **_font(leg, 2.5))
-        fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
-    return fig
+            if work[run[0]]:
+                ax.plot(x[run], y[run], 0.5)
+            else:
+                ax.plot(x[run], y[run], 0.3, IDLE_DASH)
+    if unit == "deg_crank" and len(curves) > 1:  # several loads over φ: each named
+        for name, x, size, _work, _ in curves:
+            j = int(np.argmax(size))
+            ax.letter(float(ax.sx(x[j])) + 1.5, float(ax.sy(size[j] / div)) - 1.0, name, 2.5,
+                      "left", "bottom")
+    # the analysed positions on the curve of the first load
+    _name, x, size, work, _ = curves[0]
+    from ..forces import resistance_loads
+
+    at = resistance_loads(analysis.mech, kin, analysis.cycle)
+    ld = at[0]
+    vals = (np.hypot(*np.asarray(ld.vector).T) if hasattr(ld, "vector")
+            else np.abs(np.asarray(ld.moment)))
+    xs = _position_travel(analysis, unit)
+    shown: list[tuple[float, float]] = []
+    x_mm = (width_mm - 26.0) / max(1.02 * float(np.max(x)), 1e-12)
+    y_mm = (height_mm - 32.0) / max(big / div * 1.15, 1e-12)
+    # the ordinates of the analysed positions (thin lines)
+    sel = list(positions)
+    ax.vlines(xs[sel], 0.0, vals[sel] / div, 0.25)
+    for k in positions:
+        px, py = float(xs[k]), float(vals[k]) / div
+        ax.dots([px], [py], 1.2)
+        if any(abs(px - a) * x_mm < 9.0 and abs(py - b) * y_mm < 6.0 for a, b in shown):
+            continue
+        shown.append((px, py))
+        # written on the side the curve falls away from: left of a rising curve
+        near = np.argsort(np.abs(x - px) + 1e9 * (np.abs(size / div - py) > 0.02 * big / div
+                                                   + 1e-12))[:2]
+        j0, j1 = sorted(int(j) for j in near)
+        rising = (size[j1] - size[j0]) * (x[j1] - x[j0]) >= 0
+        lines = [np.column_stack([c[1] * x_mm, c[2] / div * y_mm]) for c in curves]
+        lines += [np.array([[xs[j] * x_mm, 0.0], [xs[j] * x_mm, vals[j] / div * y_mm]])
+                  for j in sel if j != k]  # the other positions' ordinates
+        dx, dy = _free_side(kin.labels[k], (px * x_mm, py * y_mm), rising, lines,
+                            (width_mm - 26.0, height_mm - 32.0))
+        ax.letter(float(ax.sx(px)) + dx, float(ax.sy(py)) - dy, kin.labels[k], 2.5,
+                  "right" if dx < 0 else "left", "bottom")
+    ax.frame(0.25)
+    xv, yv = ax.x_values(), ax.y_values()
+    foot = ax.xticks(xv, tick_labels(xv))
+    ax.xlabel(s_words, foot)
+    ax.ylabel(f"{symbol}, {f_unit}", ax.yticks(yv, tick_labels(yv)))
+    leg = f"— {w['work']}   - - {w['idle']}"
+    if analysis.cycle.period <= 2 * math.pi + 1e-9:
+        ax.letter(box.x0 + width_mm - 4.0, box.y0 + 9.0, leg, 2.5, "right", "top")
+    ax.letter(box.x0 + 0.5 * width_mm, box.y0 + 2.5, title, 3.5, "center", "top")
+    return Group(tuple(ax.items), layer="diagrams", id="s2-q-diagram")
+
+
+#: the idle stroke's dashes on Q(s), mm (a 0.3 mm line's dashes 3.7 : 1.6 of its width)
+IDLE_DASH = (1.1, 0.5)
 
 
 def _qs_naming(analysis, names: list[str]) -> tuple[str, str, bool]:
@@ -738,54 +732,39 @@ def _kp(scale: Scale, lang: str) -> str:
 
 
 def _curve_items(analysis, box: Rect, lang: str) -> list[Item]:
-    """Mур(φ) over the turn (exact), the positions marked: matplotlib, played into the
-    sheet's own items (:mod:`graphplan.drawing.mpl_items`: its letters stay text)."""
-    from .mpl_items import figure_items
-
+    """Mур(φ) over the turn (exact), the positions marked (:func:`moment_items`)."""
     # every load in every position (Project.curve): the neglect rule is the force plans'
     # rule for one position; on the curve it made false steps where it switched a load off
-    curve = analysis.curve
-    fig = moment_figure(curve, box.width, box.height, lang)
-    return [figure_items(fig, (box.x0, box.y0), id="s2-moment-curve", lang=lang)]
+    return [moment_items(analysis.curve, box, lang)]
 
 
-def moment_figure(curve, width_mm: float, height_mm: float, lang: str):
-    """The curve Mур(φ) of crank travel, positions numbered, as a matplotlib figure."""
-    import matplotlib
-    from matplotlib.figure import Figure as MplFigure
-
-    from .figures import MM, _font, spaced_labels
+def moment_items(curve, box: Rect, lang: str) -> Group:
+    """The curve Mур(φ) of crank travel, positions numbered, drawn in ``box`` (its axes
+    22 mm in from the left, 10 mm from the top, 14 mm from the bottom, 6 mm from the
+    right)."""
+    from .chart import Chart, auto_limits, tick_labels
+    from .figures import spaced_labels
 
     title = WORDS[lang]["curve"]
     unit = "Н·м" if lang == "ru" else "N·m"
-    with matplotlib.rc_context({"axes.unicode_minus": False}):
-        fig = MplFigure(figsize=(width_mm / 25.4, height_mm / 25.4))
-        ax = fig.add_axes((22 / width_mm, 14 / height_mm, 1 - 28 / width_mm,
-                           1 - 24 / height_mm))
-        period = 720.0 if curve.travel_deg[-1] > 360 else 360.0  # a 720° cycle
-        # the curve is closed: the turn ends where it began
-        ax.plot(np.append(curve.travel_deg, period), np.append(curve.M, curve.M[0]), "-k",
-                lw=0.5 * MM)
-        ax.plot(curve.position_travel_deg, curve.M_positions, "o", color="black",
-                markersize=1.2 * MM)
-        # the ordinates of the positions, the diagram's construction (thin lines)
-        ax.vlines(curve.position_travel_deg, 0.0, curve.M_positions, colors="black",
-                  lw=0.25 * MM)
-        ax.axhline(0.0, color="black", lw=0.25 * MM)
-        ax.set_xlim(0, period)
-        ax.set_xticks(curve.position_travel_deg)
-        ax.set_xticklabels(spaced_labels(curve.position_travel_deg, list(curve.labels),
-                                         (width_mm - 28.0) / period),
-                           **_font("0123456789()", 2.5))
-        for lab in ax.get_yticklabels():
-            lab.set(**_font("0123456789-", 2.5))
-        ax.tick_params(width=0.25 * MM, length=1.5 * MM, labelsize=_font("0", 2.5)["fontsize"])
-        for sp in ax.spines.values():
-            sp.set_linewidth(0.25 * MM)
-        ax.set_ylabel(f"Mур, {unit}", **_font(f"Mур, {unit}", 3.5))
-        fig.text(0.5, 1 - 2.5 / height_mm, title, ha="center", va="top", **_font(title, 3.5))
-    return fig
+    period = 720.0 if curve.travel_deg[-1] > 360 else 360.0  # a 720° cycle
+    ax = Chart(box.x0 + 22.0, box.y0 + 10.0, box.width - 28.0, box.height - 24.0,
+               (0.0, period), auto_limits([curve.M, curve.M_positions, [0.0]]), lang)
+    # the curve is closed: the turn ends where it began
+    ax.plot(np.append(curve.travel_deg, period), np.append(curve.M, curve.M[0]), 0.5)
+    ax.dots(curve.position_travel_deg, curve.M_positions, 1.2)
+    # the ordinates of the positions, the diagram's construction (thin lines)
+    ax.vlines(curve.position_travel_deg, 0.0, curve.M_positions, 0.25)
+    ax.hline(0.0, 0.25)
+    ax.frame(0.25)
+    ax.xticks(curve.position_travel_deg,
+              spaced_labels(curve.position_travel_deg, list(curve.labels),
+                            (box.width - 28.0) / period))
+    yv = ax.y_values()
+    ax.ylabel(f"Mур, {unit}", ax.yticks(yv, tick_labels(yv)))
+    ax.letter(box.x0 + 0.5 * box.width, box.y0 + 2.5, title, 3.5, "center", "top")
+    return Group(tuple(ax.items), layer="diagrams", id="s2-moment-curve")
 
 
-__all__ = ["kinetostatics_sheet", "moment_figure", "q_curves", "q_figure", "sheet2_positions",
+__all__ = ["kinetostatics_sheet", "moment_items", "q_curves", "q_items", "sheet2_positions",
            "table_header"]
