@@ -327,7 +327,9 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     vector is also named at its middle (a force plan names its forces, not only its
     vertices); ``rename`` writes some of them otherwise (a force too short to see with its
     value, sheet 2); ``leaders`` as in :func:`graphplan.drawing.labels.place_labels`;
-    ``keep_out``: more areas its letters must not enter.
+    ``keep_out``: more areas its letters must not enter. The letters of the mechanism's
+    points are placed first, those of the construction's own points (the ends of the
+    normal and Coriolis components, n… and k…) after them, in the room left.
     """
     layer = PLAN_LAYERS[getattr(plan, "kind", "lever")]
     pts = np.array(list(plan.points.values()))
@@ -358,7 +360,8 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
             items.append(Arrow(to(e.start), to(e.end), style, 3.0, 1.0,
                                layer="dimensions" if e.role == "arm" else layer,
                                id=f"{ident}-{e.name}"))
-    reqs = [LabelRequest(to(q), _label(name), 3.5, group=ident) for name, q in plan.points.items()]
+    order = sorted(plan.points, key=lambda name: name.startswith(("n_", "k_")))
+    reqs = [LabelRequest(to(plan.points[name]), _label(name), 3.5, group=ident) for name in order]
     if segment_labels:
         named = {e.name: e for e in elems if e.kind == "segment"
                  and e.role not in ("absolute", "arm") and math.dist(e.start, e.end) > 1e-9}
