@@ -76,7 +76,8 @@ def test_graphplans_own_sheet_is_right(request, sheets, ex, fmt):
     # every plan the sheet draws is found, under its caption, and measured
     import re
 
-    kinds = {(j.found.kind, j.position) for j in dc.plans}
+    kinds = {(j.found.kind, j.position) for j in dc.plans
+             if j.found.kind in ("velocity", "acceleration")}
     drawn = set()
     for t in dc.drawing.texts:
         m = re.fullmatch(r"План (скоростей|ускорений), пол\. (\S+)", t.text)
@@ -85,6 +86,14 @@ def test_graphplans_own_sheet_is_right(request, sheets, ex, fmt):
     assert len(drawn) >= 6 and kinds == drawn
     assert len(rep.figures) > 4 * len(drawn)
     assert all(f.verdict != "wrong" for f in rep.figures)
+    # the plan of all positions: every position's numbered pin and its joints read, and
+    # nothing off, not even inaccurate (tests/test_drawing_check_positions.py)
+    pp = [j for j in dc.plans if j.found.kind == "positions"]
+    assert len(pp) == 1
+    found = pp[0].found
+    assert set(found.pins) == set(dc.ref.labels)
+    assert len(found.joints) == len(found.expected) - len(found.pins)
+    assert [f.explanation for f in pp[0].findings if f.verdict != "ok"] == []
 
 
 def test_dxf_and_svg_read_alike(sheets):

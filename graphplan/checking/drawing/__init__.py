@@ -6,8 +6,10 @@ does — where lines end, arrowheads, letters near points (:mod:`.scene`) — fi
 velocity and acceleration plans by their letters, captions and scales (:mod:`.plans`),
 lays each against graphplan's construction of its position at the student's scale
 (:mod:`.measure`) and judges it with the calculation checker's verdicts and causes
-(:mod:`.check`); :mod:`.overlay` draws graphplan's construction over the student's
-plans. See ``docs/check-format.md``, "Checking a drawing".
+(:mod:`.check`); the schemes of a position (:mod:`.positions`) and the plan of all
+positions (:mod:`.position_plan`) are laid against the exact positions; :mod:`.overlay`
+draws graphplan's construction over the student's plans. See ``docs/check-format.md``,
+"Checking a drawing".
 
 Imports are lazy: ``import graphplan.checking.drawing`` loads nothing heavy.
 """

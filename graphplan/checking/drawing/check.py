@@ -110,6 +110,10 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     from .positions import find_schemes, judge_scheme
 
     judged += [judge_scheme(s, ref, tol, lang) for s in find_schemes(scene, ref)]
+    from .position_plan import find_position_plans, judge_position_plan
+
+    judged += [judge_position_plan(pp, scene, ref, tol, lang)
+               for pp in find_position_plans(scene, ref)]
     order = {"velocity": 0, "acceleration": 1, "force": 2, "arm": 3, "scheme": 4,
              "positions": 5}
     judged.sort(key=lambda j: (ref.index(j.position) if j.position in ref.labels else 99,

@@ -109,6 +109,8 @@ def drawing_overlay(dc, lang: str | None = None) -> list[str]:
             _force_overlay(dc, j, body, crops, H, lang)
         elif j.found.kind == "scheme" and j.found.kl and dc.ref is not None:
             _scheme_overlay(dc, j, body, crops, H, lang)
+        elif j.found.kind == "positions" and j.found.kl_used and dc.ref is not None:
+            _positions_overlay(dc, j, body, crops, H, lang)
     legend = ("graphplan's construction (green, dashed), wrong segments (red) with the measured ≠ "
               "expected length, rings where the construction puts the point" if lang != "ru"
               else "построение graphplan (зелёным пунктиром), неверные отрезки (красным): "
@@ -178,13 +180,10 @@ def _scheme_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) ->
         return o + (np.asarray(P[name][k]) - np.asarray(P[pivot][k])) / sc.kl
 
     def line(a, b, colour: str, width: float, dash: bool) -> None:
-        body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
-                    f"y2='{H - b[1]:.2f}' stroke='{colour}' stroke-width='{width}'" +
-                    (" stroke-opacity='0.75' stroke-dasharray='1.2,0.6'/>" if dash else "/>"))
+        _line(body, H, a, b, colour, width, dash)
 
     def label(at, text: str) -> None:
-        body.append(f"<text x='{at[0] + 1:.2f}' y='{H - at[1] - 1:.2f}' font-size='2.2' "
-                    f"fill='{RED}' font-family='sans-serif'>{_e(text)}</text>")
+        _label(body, H, at, text)
 
     for (pos, link) in sc.links:
         if pos in ref.labels:
@@ -221,6 +220,83 @@ def _scheme_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) ->
         bx0, by0, bx1, by1 = sc.bbox
         pad = 15.0
         crops.append((bx0 - pad, H - by1 - pad, bx1 - bx0 + 2 * pad, by1 - by0 + 2 * pad, j.key))
+
+
+def _positions_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) -> None:
+    """A plan of all positions: each numbered position laid exactly from the student's
+    pivot at the Kl used (green, dashed: the links, a ring at each joint), and in red each
+    joint off its place (from where it is drawn to the exact place, the distance), each
+    crank drawn at another angle than its number's (the drawn crank, a ring where its
+    number puts the pin, the angle off), a Kl or a numbering that is wrong."""
+    pl = j.found
+    ref = dc.ref
+    mech = ref.mech
+    o = np.asarray(pl.pivot, float)
+    unit = "мм" if lang == "ru" else "mm"
+
+    def line(a, b, colour: str, width: float, dash: bool) -> None:
+        _line(body, H, a, b, colour, width, dash)
+
+    def ring(at, colour: str) -> None:
+        body.append(f"<circle cx='{at[0]:.2f}' cy='{H - at[1]:.2f}' r='0.9' fill='none' "
+                    f"stroke='{colour}' stroke-width='0.25'/>")
+
+    def label(at, text: str) -> None:
+        _label(body, H, at, text)
+
+    def exact(lab: str, name: str):
+        if name == mech.crank.pivot:
+            return o
+        e = pl.expected.get((lab, name))
+        return None if e is None else np.asarray(e, float)
+
+    for (lab, link) in pl.links:
+        a, b = (exact(lab, n) for n in link.split("|"))
+        if a is not None and b is not None:
+            line(a, b, BLUE, 0.3, True)
+    for (lab, name), e in pl.expected.items():
+        if (lab, name) in pl.joints or name == mech.crank.pin:
+            ring(e, BLUE)
+    bad = [f for f in dc.report.findings if f.verdict == "wrong" and j.key and
+           j.key in f.where]
+    r_exp = float(mech.crank.length) / pl.kl_used
+    for f in bad:
+        if f.kind == "point" and (f.position, f.quantity[1:]) in pl.joints:
+            name = f.quantity[1:]
+            m = np.asarray(pl.joints[(f.position, name)], float)
+            e = exact(f.position, name)
+            if e is not None:
+                line(m, e, RED, 0.45, False)
+                ring(e, RED)
+                label(m, f"{name}{f.position}: {num(float(f.stated), lang, 3)} {unit}")
+        elif f.kind in ("extreme", "other-variant") and f.position in pl.pins:
+            k = ref.index(f.position)
+            phi = float(ref.kin.phi[k])
+            m = np.asarray(pl.pins[f.position], float)
+            e = o + r_exp * np.array([np.cos(phi), np.sin(phi)])
+            line(o, m, RED, 0.45, False)
+            line(o, e, BLUE, 0.3, True)
+            ring(e, RED)
+            label(m, f"φ{f.position}: {'+' if float(f.stated) > 0 else ''}"
+                     f"{num(float(f.stated), lang, 3)}°")
+        elif f.kind in ("scale", "label", "extreme"):
+            label(o + np.array([3.0, -4.0 - 3.0 * bad.index(f)]),
+                  f"{f.quantity}: {f.explanation.split(':')[0]}")
+    if any(f.primary for f in bad):
+        bx0, by0, bx1, by1 = pl.bbox
+        pad = 15.0
+        crops.append((bx0 - pad, H - by1 - pad, bx1 - bx0 + 2 * pad, by1 - by0 + 2 * pad, j.key))
+
+
+def _line(body: list[str], H: float, a, b, colour: str, width: float, dash: bool) -> None:
+    body.append(f"<line x1='{a[0]:.2f}' y1='{H - a[1]:.2f}' x2='{b[0]:.2f}' "
+                f"y2='{H - b[1]:.2f}' stroke='{colour}' stroke-width='{width}'" +
+                (" stroke-opacity='0.75' stroke-dasharray='1.2,0.6'/>" if dash else "/>"))
+
+
+def _label(body: list[str], H: float, at, text: str) -> None:
+    body.append(f"<text x='{at[0] + 1:.2f}' y='{H - at[1] - 1:.2f}' font-size='2.2' "
+                f"fill='{RED}' font-family='sans-serif'>{_e(text)}</text>")
 
 
 def _svg(x: float, y: float, w: float, h: float, content: str, title: str) -> str:

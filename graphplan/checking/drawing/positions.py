@@ -12,8 +12,8 @@ the reading), else wrong: a scheme is drawn with a compass from exact lengths); 
 joints lettered (and the crank from the pivot) drawn at another length is a ``model``
 finding (``AB``, mm), at another angle a ``direction`` finding (``∠AB``).
 
-Not read yet: a plan of positions drawing every position at once (the crank pins
-numbered), its extreme positions and the trajectories of points.
+A plan of positions drawing every position at once (its caption names no position) is
+read by :mod:`.position_plan`.
 """
 
 from __future__ import annotations
@@ -29,8 +29,33 @@ from .primitives import Text
 from .scene import Scene
 
 
+class PivotPlaced:
+    """A figure placed by the crank's pivot on the sheet: its box and where it is."""
+
+    __slots__ = ()
+    pivot: tuple[float, float]
+
+    def _points(self) -> list[tuple[float, float]]:
+        return [self.pivot]
+
+    @property
+    def bbox(self) -> tuple[float, float, float, float]:
+        pts = self._points()
+        xs = [p[0] for p in pts]
+        ys = [p[1] for p in pts]
+        return (min(xs), min(ys), max(xs), max(ys))
+
+    @property
+    def where(self) -> str:
+        return f"at x = {self.pivot[0]:.0f}, y = {self.pivot[1]:.0f} mm"
+
+    @property
+    def where_ru(self) -> str:
+        return f"x = {self.pivot[0]:.0f}, y = {self.pivot[1]:.0f} мм"
+
+
 @dataclass(slots=True)
-class DrawnScheme:
+class DrawnScheme(PivotPlaced):
     """A scheme found on the drawing: its caption, Kl, position, the crank's pivot, the
     joints found, ``(position, joint) → (x, y)`` mm, and the links with both ends known,
     ``(position, "A|B") → (start, end)``."""
@@ -44,20 +69,8 @@ class DrawnScheme:
         default_factory=dict)
     kind: str = "scheme"
 
-    @property
-    def bbox(self) -> tuple[float, float, float, float]:
-        pts = [self.pivot, *self.joints.values()]
-        xs = [p[0] for p in pts]
-        ys = [p[1] for p in pts]
-        return (min(xs), min(ys), max(xs), max(ys))
-
-    @property
-    def where(self) -> str:
-        return f"at x = {self.pivot[0]:.0f}, y = {self.pivot[1]:.0f} mm"
-
-    @property
-    def where_ru(self) -> str:
-        return f"x = {self.pivot[0]:.0f}, y = {self.pivot[1]:.0f} мм"
+    def _points(self) -> list[tuple[float, float]]:
+        return [self.pivot, *self.joints.values()]
 
 
 def find_schemes(scene: Scene, ref) -> list[DrawnScheme]:
@@ -223,4 +236,4 @@ def judge_scheme(sc: DrawnScheme, ref, tol, lang: str):
     return j
 
 
-__all__ = ["DrawnScheme", "find_schemes", "judge_scheme"]
+__all__ = ["DrawnScheme", "PivotPlaced", "find_schemes", "judge_scheme"]
