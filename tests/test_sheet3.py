@@ -5,6 +5,7 @@ import re
 
 import numpy as np
 import pytest
+import shapely
 
 from graphplan import dynamics as dyn
 from graphplan.drawing import (
@@ -24,6 +25,7 @@ from graphplan.dynamics import load_catalogue, machine_unit
 from graphplan.errors import InputError
 from graphplan.files import bundled_example
 from graphplan.model import load
+from graphplan.paper import Page
 from graphplan.project import analyze
 from graphplan.reports import dynamics_markdown, position_rows
 
@@ -354,3 +356,49 @@ def shapely_point(p):
     from shapely.geometry import Point
 
     return Point(p)
+
+
+def test_the_scheme_of_the_machine_unit_where_delta_t_leaves_room(solved):
+    """Under ΔT(φ), where it leaves the room: the motor, the transmission, the flywheel and
+    the mechanism with the unit's own numbers (the motor's type and power, u, Jм, ω1); the
+    engine's unit is its mechanism, the flywheel and the consumer of Mс = Mд (< 0); every
+    item of the scheme below every item of the work diagrams and clear of the energy–mass
+    diagram; the press's ΔT fills its room: no scheme."""
+    from pathlib import Path
+
+    from graphplan.drawing.dynamics_figures import SCHEME_WORDS
+    from graphplan.numbers import fmt
+
+    loom = Path(__file__).parent / "data" / "variants" / "loom_beater.toml"
+    for name, words in ((loom, ("motor", "gear", "mech", "fly")),
+                        ("compressor", ("motor", "gear", "mech", "fly")),
+                        ("engine", ("engine", "consumer", "fly"))):
+        a = solved(name)
+        u = a.unit_on(Page("A1"))
+        sheet = dynamics_sheet(a)
+        leaves = list(iter_leaves(sheet.items))
+        scheme = [it for it in leaves if (it.id or "").startswith("s3-unit-")]
+        texts = " ".join(it.text for it in scheme if isinstance(it, Text))
+        for w in words:
+            assert SCHEME_WORDS["ru"][w] in texts, (name, w)
+        assert fmt(u.flywheel.I_m, 4).replace(".", ",") in texts
+        if u.motor is not None:
+            assert u.motor.motor.type in texts
+            assert f"u = {fmt(u.motor.u, 4)}".replace(".", ",") in texts
+        else:
+            assert u.flywheel.M_d < 0 and fmt(u.flywheel.M_d, 4).replace(".", ",") in texts
+        top = min(item_geometry(it).bounds[1] if not isinstance(it, Text)
+                  else text_box(it).bounds[1] for it in scheme)
+        box = shapely.unary_union([item_geometry(it) if not isinstance(it, Text)
+                                   else text_box(it) for it in scheme])
+        for it in leaves:
+            if (it.id or "").startswith("s3-unit-"):
+                continue
+            g = text_box(it) if isinstance(it, Text) else item_geometry(it)
+            if g is None or not g.intersects(box.envelope):
+                continue
+            # only the ΔT axis (a vertical line left of the scheme) may pass its envelope
+            assert g.bounds[2] < box.bounds[0] or g.bounds[1] >= box.bounds[3] \
+                or g.bounds[3] <= top, (name, it.id)
+    press = dynamics_sheet(solved("press"))
+    assert not [it for it in iter_leaves(press.items) if (it.id or "").startswith("s3-unit-")]

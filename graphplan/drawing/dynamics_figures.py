@@ -456,4 +456,93 @@ def omega_items(u, box: Rect, lang: str) -> list:
     return [Group(tuple(ax.items), layer=LAYER, id="s3-omega")]
 
 
-__all__ = ["energy_mass_items", "energy_mass_width", "omega_items", "work_items"]
+
+
+SCHEME_WORDS = {
+    "ru": {"title": "Схема машинного агрегата", "motor": "Двигатель", "gear": "Передача",
+           "mech": "Механизм", "engine": "Двигатель", "consumer": "Потребитель",
+           "fly": "Маховик", "kw": "кВт", "rpm": "об/мин"},
+    "en": {"title": "The machine unit", "motor": "Motor", "gear": "Transmission",
+           "mech": "Mechanism", "engine": "Engine", "consumer": "Consumer",
+           "fly": "Flywheel", "kw": "kW", "rpm": "rpm"},
+}
+SCHEME_HEIGHT = 66.0  #: the scheme of the machine unit with its captions, mm
+SCHEME_WIDTH = 240.0  #: its blocks and shafts, mm
+
+
+def unit_scheme_items(u, x: float, y: float, width: float, title: str, lang: str) -> list:
+    """The scheme of the machine unit (схема машинного агрегата) whose dynamics sheet 3
+    solves, at (x, y) within ``width`` mm: the motor, the transmission of ratio u (a
+    gearbox, a belt or a coupling) and the mechanism on one shaft line, the flywheel on the
+    shaft it is mounted on (the crank's or the motor's), each captioned with its data — or,
+    where the loads drive the crank (an engine), the engine's mechanism, the flywheel and
+    the consumer of the constant moment Mс. ``[]`` when ``width`` is less than
+    :data:`SCHEME_WIDTH`."""
+    if width < SCHEME_WIDTH:
+        return []
+    w, ww = SCHEME_WORDS[lang], WORDS[lang]
+    fw = u.flywheel
+    items: list = [Text((x, y + 5.0), w["title"], 5.0, layer=LAYER, id="s3-unit-title")]
+    ys = y + 27.0  # the shaft line
+    bw, bh = 44.0, 22.0
+    fly = fw.I_m > 0
+    if u.motor is None:  # an engine: its mechanism, the flywheel, the consumer
+        blocks = [(w["engine"], [title, f"ω1 = {fmt(fw.omega, 4)} {ww['rad']}/{ww['s']}"]),
+                  (w["consumer"], [f"Mс = {fmt(fw.M_d, 4)} {ww['Nm']}"])]
+        fly_at = 1
+    else:
+        mc = u.motor
+        blocks = [(w["motor"], [mc.motor.type, f"{fmt(mc.motor.power_kw, 3)} {w['kw']}, "
+                                f"{fmt(mc.motor.rated_rpm, 4)} {w['rpm']}"]),
+                  (w["gear"], [f"u = {fmt(mc.u, 4)}"]),
+                  (w["mech"], [title, f"ω1 = {fmt(fw.omega, 4)} {ww['rad']}/{ww['s']}"])]
+        fly_at = 1 if u.shaft == "motor" else 2
+    n = len(blocks) + (1 if fly else 0)
+    pitch = (SCHEME_WIDTH - bw) / max(n - 1, 1)
+
+    def reach(j: int) -> float:  # a block's half width with its captions
+        return max([bw] + [text_width(Text((0, 0), sheet_text(c, lang), 3.5, layer=LAYER))
+                           for c in blocks[j][1]]) / 2
+
+    first = x + reach(0)  # the captions inside ``width``: none over the ΔT axis on its left
+    if first + pitch * (n - 1) + reach(len(blocks) - 1) > x + width:
+        return []
+    xs = [first + i * pitch for i in range(n)]
+    where: dict[object, float] = {}
+    k = 0
+    for i in range(n):
+        if fly and i == fly_at:
+            where["fly"] = xs[i]
+            continue
+        where[k] = xs[i]
+        k += 1
+    # the shafts between the blocks (main lines), to the flywheel's faces
+    half = [3.0 if fly and i == fly_at else bw / 2 for i in range(n)]
+    for i in range(n - 1):
+        items.append(Polyline(((xs[i] + half[i], ys), (xs[i + 1] - half[i + 1], ys)), MAIN,
+                              layer=LAYER, id=f"s3-unit-shaft{i}"))
+    for j, (name, caption) in enumerate(blocks):
+        cx = where[j]
+        x0, x1, y0, y1 = cx - bw / 2, cx + bw / 2, ys - bh / 2, ys + bh / 2
+        items.append(Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), MAIN, closed=True,
+                              layer=LAYER, id=f"s3-unit-block{j}"))
+        items.append(Text((cx, ys + 1.75), name, 3.5, "middle", layer=LAYER,
+                          id=f"s3-unit-name{j}"))
+        for i, line in enumerate(caption):
+            items.append(Text((cx, y1 + 8.0 + 6.0 * i), sheet_text(line, lang), 3.5, "middle",
+                              layer=LAYER, id=f"s3-unit-cap{j}-{i}"))
+    if fly:  # the flywheel seen edgewise on its shaft (GOST 2.770), Jм under it
+        cx = where["fly"]
+        items.append(Polyline(((cx - 3.0, ys - 13.0), (cx + 3.0, ys - 13.0), (cx + 3.0, ys + 13.0),
+                               (cx - 3.0, ys + 13.0)), MAIN, closed=True, layer=LAYER,
+                              id="s3-unit-flywheel"))
+        items.append(Text((cx, ys - 15.5), w["fly"], 3.5, "middle", layer=LAYER,
+                          id="s3-unit-fly-name"))
+        items.append(Text((cx, ys + 8.0 + bh / 2), sheet_text(
+            f"Jм = {fmt(fw.I_m, 4)} {ww['kgm2']}", lang), 3.5, "middle", layer=LAYER,
+            id="s3-unit-fly-cap"))
+    return items
+
+
+__all__ = ["energy_mass_items", "energy_mass_width", "omega_items", "unit_scheme_items",
+           "work_items"]

@@ -6,6 +6,8 @@
   tangents at ψmax, ψmin (tens of degrees: KT and KJ are chosen for it, see
   :func:`graphplan.dynamics.machine.energy_mass_scales`), k, l and kl; above it JII(φ)
   turned 90°;
+* under ΔT(φ), where the diagram leaves the room (a ΔT that stays above its axis), the
+  scheme of the machine unit: motor, transmission, flywheel and mechanism with their data;
 * on the right: the check ω(φ), the flywheel (front view and profile section, dimensioned after
   GOST 2.307: outer and inner diameters and the width in whole mm, the axis drawn), the
   results in the order of the calculation, and the table of values at the positions.
@@ -46,7 +48,10 @@ from .sheet import (
     Sheet,
     Style,
     Text,
+    item_geometry,
+    iter_leaves,
     table_items,
+    text_box,
     text_width,
 )
 from .sheet1 import title_block
@@ -368,6 +373,30 @@ def wrap_line(line: str, width: float, height: float = RESULT_H) -> list[str]:
     return [line]
 
 
+def _scheme_below(u: MachineUnit, work: list, geo: dict, x_left: float, x_right: float,
+                  y_frame: float, mech, lang: str) -> list[Item]:
+    """The scheme of the machine unit (:func:`~.dynamics_figures.unit_scheme_items`) under
+    ΔT(φ), where the diagram leaves the room free: below the lowest line or letter of the
+    work diagrams right of the ΔT axis (which runs on down to the energy–mass diagram's
+    intercept l), down to the frame; nothing where that room is too small for it."""
+    from shapely.geometry import box as shapely_box
+
+    from .dynamics_figures import SCHEME_HEIGHT, unit_scheme_items
+
+    axis_x = x_left + 6.0 + u.flywheel.work.H  # the ordinate axes of the work diagrams
+    strip = shapely_box(axis_x + 2.0, geo["T_top"], x_right - 2.0, y_frame)
+    low = geo["T_top"]
+    for it in iter_leaves(work):
+        g = text_box(it) if isinstance(it, Text) else item_geometry(it)
+        if g is not None and g.intersects(strip):
+            low = max(low, g.intersection(strip).bounds[3])
+    y, width = low + 8.0, x_right - 2.0 - (axis_x + 10.0)
+    if y_frame - 4.0 - y < SCHEME_HEIGHT:
+        return []
+    title = str(mech.settings.get("title_block", {}).get("title") or mech.name)
+    return unit_scheme_items(u, axis_x + 10.0, y, width, title, lang)
+
+
 def _page_of(analysis) -> Page:
     """The variant's ``drawing.format`` (A1 when it gives none)."""
     return Page(analysis.mech.settings.get("drawing", {}).get("format", "A1"))
@@ -427,6 +456,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
                           f"{geo['bottom'] - y0:.0f} mm; the {page.format} sheet has no room "
                           "(choose fewer dynamics.intervals)")
     items += work
+    items += _scheme_below(u, work, geo, x0, xB, f.y1, mech, lang)
     top = f.y0 + 4.0  # right of graph 26 the columns start at the frame
     items += energy_mass_items(u, xB, top, geo, lang, least, None if a1 else wB + GAP - 2.0,
                                0.0 if a1 else 15.0)
