@@ -275,3 +275,24 @@ def test_loads_in_kN_are_newtons_inside():
     fourbar = load(VARIANTS / "fourbar_cw.toml")
     assert fourbar.resistances[0].maximum == pytest.approx(250.0)
     assert fourbar.crank.omega == pytest.approx(-12.0)  # 12 rad/s, clockwise
+
+
+@pytest.mark.parametrize("spelling", ["кгс/см2", "кгс/см²", "ат", "at", "kgf/cm²"])
+def test_pressures_in_the_books_own_spelling(spelling):
+    """The two-stage compressor's pressures in кгс/см² as the older task books write them
+    (кгс/см², ат): the same gas forces as "kgf/cm2" at every position; the gas force of
+    stage II at its ВМТ is (8.5 − 1)·98 066.5 Pa·π·0.075²/4 = 3249.33 N."""
+    from graphplan.forces import compute_loads
+
+    def forces(text):
+        a = analyze(loads(text, source="v.toml"))
+        ld = compute_loads(a.mech, a.kin, a.cycle, neglect_below=0.0)
+        return np.array([np.hypot(*f.vector.T) for f in ld.all_forces() if f.name[:2] == "Fг"])
+
+    text = (VARIANTS / "v_two_stage_compressor.toml").read_text(encoding="utf-8")
+    assert text.count('pressure_unit = "kgf/cm2"') == 2
+    want = forces(text)
+    got = forces(text.replace('pressure_unit = "kgf/cm2"', f'pressure_unit = "{spelling}"'))
+    assert np.array_equal(got, want)
+    assert float(want[1].max()) == pytest.approx(7.5 * 98066.5 * math.pi * 0.075**2 / 4,
+                                                 rel=1e-12)

@@ -42,8 +42,12 @@ MAX_RPM = 1e5
 MAX_LOAD = 1e12
 """No load of a TMM variant reaches 10¹² N or N·m; larger numbers are typos."""
 PRESSURE_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "atm": 101325.0,
-                  "kgf/cm2": 98066.5}
-"""Units of the pressures of an indicator diagram, in Pa (kgf/cm2: кгс/см², the old at)."""
+                  "kgf/cm2": 98066.5, "kgf/cm²": 98066.5, "at": 98066.5,
+                  "Па": 1.0, "кПа": 1e3, "МПа": 1e6, "бар": 1e5, "атм": 101325.0,
+                  "кгс/см2": 98066.5, "кгс/см²": 98066.5, "ат": 98066.5}
+"""Units of the pressures of an indicator diagram, in Pa, as the task books write them in
+either alphabet: kgf/cm2 (кгс/см², the technical atmosphere at, ат, of the older books)
+is 98 066.5 Pa; atm (атм), the physical atmosphere, 101 325 Pa."""
 LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense", "over",
              "stroke", "strokes", "travel", "angle", "travel_link", "working", "phase",
              "bore", "p_max", "p_ambient", "pressure_unit", "unit"}
