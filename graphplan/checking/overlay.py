@@ -37,7 +37,7 @@ from ..drawing import (
     Style,
     text_at_centre,
 )
-from ..units import Scale, nice_ceil
+from ..units import nice_ceil
 from .findings import Report
 from .words import num
 
@@ -165,10 +165,8 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
     work : Work
         The checker's reading of the student's lines (its scales).
     """
-    from ..plans import acceleration_plan, force_plan, velocity_plan
     from ..render.svg import render_svg
 
-    mech, kin = ref.mech, ref.kin
     by_pos: dict[str, list] = {}
     for f in report.figures:
         if f.position is not None and f.position in ref.labels and f.expected is not None:
@@ -200,10 +198,7 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
             ident = f"ov{first + r}"
             items += _scheme(ref, k, label, cells[0], kl, figs, work, ident)
             try:
-                loads, forces = ref.loads["rule"], ref.forces["rule"]
-                kp = sc.get("Kp")
-                fp = force_plan(mech, kin, forces, loads, k, 0, kl=Scale("Kl", kl, "m/mm"),
-                                kp=Scale("Kp", kp, "N/mm") if kp else None)
+                fp = ref.force_plan(k, kl, sc.get("Kp"))
                 marks, tips = _marks(fp, figs, lambda q: q.replace("_mm", ""))
                 its, to = _plan_items(fp, cells[1], f"План сил {fp.group}, пол. {label}",
                                       f"{ident}-fp", "force_plan", tips)
@@ -214,14 +209,11 @@ def overlay_sheets(report: Report, ref, work) -> list[str]:
                 pass
             kv, ka = sc.get("Kv"), sc.get("Ka")
             try:
-                vp = velocity_plan(mech, kin, k, Scale("Kl", kl, "m/mm"),
-                                   Scale("Kv", kv or 0.01, "(m/s)/mm"))
+                vp, ap = ref.plans(k, kl, kv, ka)  # built once for the class
                 plan: Any
                 plan, what = vp, "План скоростей"
                 if ka:
-                    plan = acceleration_plan(mech, kin, k, Scale("Kl", kl, "m/mm"),
-                                             Scale("Ka", ka, "(m/s²)/mm"), vp)
-                    what = "План ускорений"
+                    plan, what = ap, "План ускорений"
                 elif not kv:
                     plan = None
                 if plan is not None:

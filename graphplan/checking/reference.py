@@ -468,10 +468,10 @@ class Reference:
 
     # --- plans at the student's scales ------------------------------------------------
 
-    def reading_mm(self, name: str, k: int, kl: float, kv: float | None,
-                   ka: float | None) -> float | None:
-        """Exact length (mm) of a segment of the velocity or acceleration plan of position
-        k built by graphplan at the student's scales (``None`` without that scale)."""
+    def plans(self, k: int, kl: float, kv: float | None, ka: float | None) -> tuple:
+        """The velocity and acceleration plans of position k at the student's scales (Kv
+        0.01, Ka 0.05 where the student gives none), built once for every student of the
+        variant: the checks and the overlay read them."""
         from ..plans import acceleration_plan, velocity_plan
         from ..units import Scale
 
@@ -482,7 +482,26 @@ class Reference:
             ap = acceleration_plan(self.mech, self.kin, k, Scale("Kl", kl, "m/mm"),
                                    Scale("Ka", ka or 0.05, "(m/s²)/mm"), vp)
             self._plans[key] = (vp, ap)
-        vp, ap = self._plans[key]
+        return self._plans[key]
+
+    def force_plan(self, k: int, kl: float, kp: float | None):
+        """The force plan of the last group of position k at the student's Kl and Kp (the
+        series value where none is given), built once for every student of the variant."""
+        from ..plans import force_plan
+        from ..units import Scale
+
+        key = ("force", k, kl, kp)
+        if key not in self._plans:
+            self._plans[key] = force_plan(
+                self.mech, self.kin, self.forces["rule"], self.loads["rule"], k, 0,
+                kl=Scale("Kl", kl, "m/mm"), kp=Scale("Kp", kp, "N/mm") if kp else None)
+        return self._plans[key]
+
+    def reading_mm(self, name: str, k: int, kl: float, kv: float | None,
+                   ka: float | None) -> float | None:
+        """Exact length (mm) of a segment of the velocity or acceleration plan of position
+        k built by graphplan at the student's scales (``None`` without that scale)."""
+        vp, ap = self.plans(k, kl, kv, ka)
         if name in vp.readings:
             return None if kv is None else vp.readings[name].exact_mm
         if name in ap.readings:

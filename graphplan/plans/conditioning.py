@@ -35,7 +35,6 @@ give the angle in degrees and the intersection's uncertainty in mm of the drawin
 
 from __future__ import annotations
 
-import inspect
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -231,16 +230,21 @@ class _Probe(Reader):
         return float(mm) + (self.h if k == self.shift else 0.0)
 
 
-def _bounds(run, precision: float, kind=lambda key: None):
+def _bounds(run, precision: float, kind=lambda key: None, base=None, drawn=None):
     """Figures of ``run(reader)`` exact, drawn, and their first-order bounds.
 
     ``run`` builds the drawings with the reader it is given and returns ``{key: value}``
     (a float, or a 2-vector whose bound is on its length); the readers are probes with
     one reading shifted at a time. ``kind(key)`` groups the figures for :data:`FLOOR`.
+    ``base``: ``(figures, readings)`` of the exact construction where it is built already
+    (a probe that shifts nothing reads exactly: it is that construction); ``drawn``: the
+    figures of the construction read at ``precision``, where built already. Only the probes
+    are built here then.
     """
-    base = _Probe(precision)
-    f0 = run(base)
-    n = len(base.calls)
+    if base is None:
+        probe = _Probe(precision)
+        base = (run(probe), len(probe.calls))
+    f0, n = base
     sens = {key: 0.0 for key in f0}
     same_path = True
     for i in range(n):
@@ -252,7 +256,8 @@ def _bounds(run, precision: float, kind=lambda key: None):
         for key, v in fi.items():
             d = np.asarray(v, float) - np.asarray(f0[key], float)
             sens[key] += float(np.hypot(*d)) if d.ndim else abs(float(d))
-    drawn = run(Reader(precision))
+    if drawn is None:
+        drawn = run(Reader(precision))
     half = precision / 2.0
     largest: dict = {}
     for key, v in f0.items():
@@ -261,6 +266,21 @@ def _bounds(run, precision: float, kind=lambda key: None):
     bounds = {key: SAFETY * s / STEP_MM * half + FLOOR * largest[kind(key)]
               for key, s in sens.items()}
     return f0, drawn, bounds, same_path
+
+
+def _shifted_velocity_plan(mech, kin, k: int, kl, kv, reader: _Probe, probes: dict | None):
+    """The velocity plan a probe builds (its reading ``reader.shift`` moved by ``reader.h``).
+    ``probes`` keeps them for the project (the kinematic bounds and the lever's shift the
+    same readings of the same plan where the lever's Kv is sheet 1's): each built once."""
+    if probes is None or reader.calls:
+        return velocity_plan(mech, kin, k, kl, kv, reader)
+    key = (k, kl.per_mm, kv.per_mm, reader.precision, reader.shift, reader.h)
+    plan = probes.get(key)
+    if plan is None:
+        plan = probes[key] = velocity_plan(mech, kin, k, kl, kv, reader)
+    else:
+        reader.calls.extend(range(plan.reads))
+    return plan
 
 
 def _plan_figures(plan) -> dict:
@@ -277,7 +297,9 @@ def _plan_figures(plan) -> dict:
     return out
 
 
-def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> Conditioning:
+def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float, *,
+                           exact: tuple | None = None, drawn: tuple | None = None,
+                           probes: dict | None = None) -> Conditioning:
     """Bounds of every figure of the velocity and acceleration plans of position k.
 
     Parameters
@@ -290,6 +312,13 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
         The scales of the plans.
     precision : float
         The reading precision, mm (> 0).
+    exact, drawn : (Plan, Plan), optional
+        The velocity and acceleration plans of position k at these scales, read exactly
+        and at ``precision``, where they are built already (the project's): only the
+        probes are built then.
+    probes : dict, optional
+        The project's store of shifted velocity plans (each built once; see
+        :func:`force_conditioning`).
 
     Returns
     -------
@@ -314,7 +343,7 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
                 vp, nv = unshifted
                 reader.calls.extend(range(nv))
             else:
-                vp = velocity_plan(mech, kin, k, kl, kv, reader)
+                vp = _shifted_velocity_plan(mech, kin, k, kl, kv, reader, probes)
                 nv = len(reader.calls)
                 if reader.shift < 0:
                     unshifted[:] = (vp, nv)
@@ -326,25 +355,29 @@ def kinematic_conditioning(mech, kin, k: int, kl, kv, ka, precision: float) -> C
             vp = velocity_plan(mech, kin, k, kl, kv, reader)
             ap = acceleration_plan(mech, kin, k, kl, ka, vp, reader)
         last[:] = (vp, ap)
-        out = {}
-        for plan in (vp, ap):
-            for key, v in _plan_figures(plan).items():
-                out[(plan.kind, key)] = v
-        return out
+        return plan_figures(vp, ap)
 
-    f0, drawn, bounds, same = _bounds(run, precision, kind=lambda key: (key[0], key[1][0]))
-    vp, ap = last  # the drawn plans (the last run)
+    def plan_figures(vp, ap) -> dict:
+        return {(plan.kind, key): v for plan in (vp, ap) for key, v in _plan_figures(plan).items()}
+
+    base = None
+    if exact is not None:
+        unshifted[:] = (exact[0], exact[0].reads)
+        base = (plan_figures(*exact), exact[0].reads + exact[1].reads)
+    f0, shown, bounds, same = _bounds(run, precision, lambda key: (key[0], key[1][0]), base,
+                                      None if drawn is None else plan_figures(*drawn))
+    vp, ap = last if drawn is None else drawn  # the drawn plans (the last run, or given)
     marks = intersections(vp) + intersections(ap)
     flagged = any(x.ill for x in marks) or not same
     figures = {}
     for (plan, (kind, name)), v0 in f0.items():
         fig_name, unit = _kinematic_name(plan, kind, name, vp if plan == "velocity" else ap)
-        if (plan, (kind, name)) not in drawn:
+        if (plan, (kind, name)) not in shown:
             if kind == "point":  # e.g. the end of a Coriolis component that reads 0 mm
                 continue
             value: Any = 0.0  # a component that reads 0 mm is not laid off: it is zero
         else:
-            value = drawn[(plan, (kind, name))]
+            value = shown[(plan, (kind, name))]
         if kind == "point":
             figures[(plan, fig_name)] = Figure(plan, fig_name, unit, float(np.hypot(*value)),
                                                float(np.hypot(*v0)), bounds[(plan, (kind, name))],
@@ -372,20 +405,22 @@ def point_error(cond: Conditioning, plan: str, point: str) -> float | None:
     return None if f is None else f.bound
 
 
-def _force_plans_call():
-    from .forces import force_plans
-
-    takes_room = "room_mm" in inspect.signature(force_plans).parameters
-    return force_plans, takes_room
-
-
 def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: float,
-                       room_mm: float | tuple[float, ...] | None = None) -> Conditioning:
+                       room_mm: float | tuple[float, ...] | None = None, *,
+                       exact: tuple | None = None, drawn: tuple | None = None,
+                       lever_exact=None, lever_drawn=None, probes: dict | None = None,
+                       memo: dict | None = None) -> Conditioning:
     """Bounds of the force plans' figures and of Zhukovsky's lever at position k.
 
     The loads are the exact ones (graphplan draws the force plans from them); the
     reading errors are those of the force plans (segments laid off at Kp and read back,
     arms on the plan of positions) and of the lever (its velocity plan and arms).
+    ``exact``, ``drawn`` (the force plans of position k at ``kl`` and ``room_mm``, read
+    exactly and at ``precision``) and ``lever_exact``, ``lever_drawn`` (the lever at ``kl``,
+    ``kv``), where they are built already: only the probes are built then. ``probes``: the
+    project's store of shifted velocity plans, shared with :func:`kinematic_conditioning`;
+    ``memo``: its store of force plans (:func:`graphplan.plans.forces.chain_plan`): a probe's
+    plan of the same inputs as one built already is that plan.
 
     Returns
     -------
@@ -396,40 +431,43 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
     """
     if not precision > 0:
         raise ValueError(f"a reading precision > 0 mm is needed (got {precision!r})")
+    from .forces import ROOM_MM, force_plans
     from .zhukovsky import zhukovsky_lever
 
-    fp_call, takes_room = _force_plans_call()
-    extra = {"room_mm": room_mm} if (takes_room and room_mm is not None) else {}
-
+    extra = {"room_mm": room_mm} if room_mm is not None else {}
     last_plans: list = []  # the force plans of the last run
-
-    scales: dict = {}  # the probes build at the Kp of the unshifted plans (run first)
-    base: list = []  # the unshifted probe's plans, each with the readings it took
+    # the probes build at the Kp of the unshifted plans; those plans, each with the
+    # readings it took, stand for themselves in a probe that shifts a later reading
+    base: list = [] if exact is None else [(p, p.reads) for p in exact]
+    scales: dict = {m: p.scale for m, (p, _) in enumerate(base)}
 
     def probe_plans(reader: _Probe) -> tuple:
         """:func:`force_plans` (the same order: the groups from the last, then the crank)
         for a probe: the plans before the one whose reading is shifted are the unshifted
-        plans themselves, not built again."""
-        from .forces import crank_plan, force_plan
+        plans themselves, and a later plan whose inputs are those of a plan built already
+        (the shift left the reactions it takes as they were) is that plan, not built again."""
+        from .forces import chain_plan
 
         known: dict = {}
         plans: list = []
         end = 0  # readings taken by the plans so far
-        steps = [*reversed(range(len(mech.dyads))), None]
-        for m, gi in enumerate(steps):
+        for m in range(len(mech.dyads) + 1):
             if base and reader.shift >= 0 and m < len(base) and reader.shift >= end + base[m][1]:
                 p, used = base[m]
                 reader.calls.extend(range(used))
             else:
                 before = len(reader.calls)
                 # this plan's room (sheet 2 gives one per plan)
-                own = {q: (v[m] if isinstance(v, tuple) else v) for q, v in extra.items()}
-                if gi is None:
-                    p = crank_plan(mech, kin, forces, loads, k, scales.get(m), kl=kl,
-                                   reader=reader, known=known, **own)
-                else:
-                    p = force_plan(mech, kin, forces, loads, k, gi, scales.get(m), kl=kl,
-                                   reader=reader, known=known, **own)
+                room = extra.get("room_mm", ROOM_MM)
+                room = room[m] if isinstance(room, tuple) else room
+                local = reader.shift - before
+                shifted = m < len(base) and 0 <= local < base[m][1]  # a reading of this plan
+                how = ("probe", precision, local, reader.h) if shifted else ("probe-exact",
+                                                                             precision)
+                p, _ = chain_plan(mech, kin, forces, loads, k, m, scales.get(m), kl, reader,
+                                  known, room, memo, how, () if shifted else (("read", 0.0),))
+                if len(reader.calls) == before:  # found, not built: its readings taken
+                    reader.calls.extend(range(p.reads))
                 scales.setdefault(m, p.scale)
                 used = len(reader.calls) - before
                 if reader.shift < 0:
@@ -439,12 +477,7 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
             plans.append(p)
         return tuple(plans)
 
-    def run_plans(reader):
-        if isinstance(reader, _Probe):
-            plans = probe_plans(reader)
-        else:
-            plans = fp_call(mech, kin, forces, loads, k, kl, reader, **extra)
-        last_plans[:] = plans
+    def figures(plans) -> dict:
         out = {}
         for p in plans:
             for q, r in p.readings.items():
@@ -455,7 +488,16 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
                 out["Mур"] = p.M_bal
         return out
 
-    lever_base: list = []  # the unshifted probe's velocity plan and the readings it took
+    def run_plans(reader):
+        if isinstance(reader, _Probe):
+            plans = probe_plans(reader)
+        else:
+            plans = force_plans(mech, kin, forces, loads, k, kl, reader, **extra, memo=memo)
+        last_plans[:] = plans
+        return figures(plans)
+
+    # the unshifted lever's velocity plan and the readings it took
+    lever_base: list = [] if lever_exact is None else [lever_exact.plan, lever_exact.plan.reads]
 
     def run_lever(reader):
         plan = None  # a shifted arm of the lever reuses the unshifted velocity plan
@@ -464,32 +506,38 @@ def force_conditioning(mech, kin, forces, loads, k: int, kl, kv, precision: floa
                 plan, nv = lever_base
                 reader.calls.extend(range(nv))
             else:
-                plan = velocity_plan(mech, kin, k, kl, kv, reader)
+                plan = _shifted_velocity_plan(mech, kin, k, kl, kv, reader, probes)
                 if reader.shift < 0:
                     lever_base[:] = (plan, len(reader.calls))
         lv = zhukovsky_lever(mech, kin, loads, k, kl, kv, reader, plan=plan)
         return {"Mур": lv.M_bal}
 
-    f0, drawn, bounds, same = _bounds(run_plans, precision, kind=lambda q: q == "Mур")
-    l0, ldrawn, lbounds, lsame = _bounds(run_lever, precision)
-    plans = tuple(last_plans)
+    f0, shown, bounds, same = _bounds(
+        run_plans, precision, lambda q: q == "Mур",
+        None if exact is None else (figures(exact), sum(p.reads for p in exact)),
+        None if drawn is None else figures(drawn))
+    l0, ldrawn, lbounds, lsame = _bounds(
+        run_lever, precision, base=None if lever_exact is None else (
+            {"Mур": lever_exact.M_bal}, lever_exact.reads),
+        drawn=None if lever_drawn is None else {"Mур": lever_drawn.M_bal})
+    plans = tuple(last_plans) if drawn is None else tuple(drawn)  # as drawn
     marks = tuple(x for p in plans for x in intersections(p))
     flagged = any(x.ill for x in marks) or not (same and lsame)
-    figures = {}
+    found = {}
     for q, v0 in f0.items():
         # a reading the drawing does without (a component that reads 0 mm is not laid off)
-        value = drawn.get(q, np.zeros(2) if np.ndim(v0) else 0.0)
+        value = shown.get(q, np.zeros(2) if np.ndim(v0) else 0.0)
         unit = "N·m" if q == "Mур" else "N"
         if q.startswith("vector "):
-            figures[("force", q)] = Figure("force", q, unit, float(np.hypot(*value)),
-                                           float(np.hypot(*v0)), bounds[q], flagged,
-                                           float(np.hypot(*(value - v0))))
+            found[("force", q)] = Figure("force", q, unit, float(np.hypot(*value)),
+                                         float(np.hypot(*v0)), bounds[q], flagged,
+                                         float(np.hypot(*(value - v0))))
         else:
-            figures[("force", q)] = Figure("force", q, unit, float(value), float(v0), bounds[q],
-                                           flagged)
-    figures[("lever", "Mур")] = Figure("lever", "Mур", "N·m", float(ldrawn["Mур"]),
-                                       float(l0["Mур"]), lbounds["Mур"], flagged)
-    return Conditioning(kin.labels[k], float(precision), marks, figures, same and lsame)
+            found[("force", q)] = Figure("force", q, unit, float(value), float(v0), bounds[q],
+                                         flagged)
+    found[("lever", "Mур")] = Figure("lever", "Mур", "N·m", float(ldrawn["Mур"]),
+                                     float(l0["Mур"]), lbounds["Mур"], flagged)
+    return Conditioning(kin.labels[k], float(precision), marks, found, same and lsame)
 
 
 __all__ = ["ILL_ANGLE_DEG", "SAFETY", "Bounded", "Conditioning", "Figure", "Intersection",

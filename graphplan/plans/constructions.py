@@ -138,6 +138,7 @@ class Plan:
     readings: dict[str, Reading]
     rates: dict[str, float]
     sliding: dict[str, float] = field(default_factory=dict)
+    reads: int = field(default=0, compare=False)  #: readings the reader took (:class:`Tally`)
 
     def measure(self, a: str, b: str) -> float:
         """Length (mm) between two plan points, measured exactly."""
@@ -167,6 +168,24 @@ class Reader:
 
 
 EXACT = Reader(0.0)
+
+
+@dataclass(frozen=True)
+class Tally(Reader):
+    """Reads as ``of`` does and counts the readings taken: every plan records how many
+    (``reads``), so that the error bounds can shift each in turn on the plans built once."""
+
+    of: Reader = EXACT
+    taken: list = field(default_factory=list, compare=False, repr=False)
+
+    def __call__(self, mm: float) -> float:
+        self.taken.append(mm)
+        return self.of(mm)
+
+
+def tally(reader: Reader) -> Tally:
+    """``reader``, counting its readings."""
+    return Tally(reader.precision, reader)
 
 
 def lower(name: str) -> str:
@@ -274,8 +293,9 @@ class _Builder:
         return Element("line", name, as_xy(through + lo * d), as_xy(through + hi * d), "line")
 
     def build(self, label: str, rates, sliding) -> Plan:
+        reads = len(self.reader.taken) if isinstance(self.reader, Tally) else 0
         return Plan(self.kind, label, self.scale, dict(self.points), tuple(self.steps),
-                    dict(self.readings), dict(rates), dict(sliding))
+                    dict(self.readings), dict(rates), dict(sliding), reads)
 
 
 class _Images:
@@ -368,6 +388,7 @@ def velocity_plan(mech: Mechanism, kin, k: int, kl: Scale, kv: Scale,
     Plan
     """
     P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
+    reader = tally(reader)
     b = _Builder("velocity", "p", kv, reader, mech.frame_points, mech.home_link)
     img = _Images(mech, P, kl.per_mm, "p")
     lower = b.key
@@ -663,6 +684,7 @@ def acceleration_plan(mech: Mechanism, kin, k: int, kl: Scale, ka: Scale, vplan:
     constant ω1, so ``a_A = ω1²·l_OA`` directed from A to O.
     """
     P = position_mm(kin, k, kl.per_mm, mech.crank.pivot)
+    reader = tally(reader)
     b = _Builder("acceleration", "π", ka, reader, mech.frame_points, mech.home_link)
     img = _Images(mech, P, kl.per_mm, "π")
     W = vplan.rates

@@ -52,7 +52,7 @@ unknown's arm is zero raises :class:`~graphplan.errors.SingularPoseError`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -72,6 +72,7 @@ from .constructions import (
     intersect_lines,
     intersection_error_mm,
     position_mm,
+    tally,
     unit_vector,
 )
 
@@ -155,6 +156,7 @@ class ForcePlan:
     reactions: dict[str, PlanReaction]
     arms_mm: dict[str, float]
     M_bal: float | None = None
+    reads: int = field(default=0, compare=False)  #: readings the reader took (:class:`Tally`)
 
     def measure(self, a: str, b: str) -> float:
         """Length (mm) between two vertices, exactly."""
@@ -484,6 +486,7 @@ def force_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
 
 
 def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> ForcePlan:
+    reader = tally(reader)
     b = _Draw(kp, kl, reader, big)
     i, j = d.links
     pairs = dyad_pairs(mech, d)
@@ -592,7 +595,8 @@ def _build_group(mech, kin, k, d, F, M, P, origin, kp, kl, reader, big) -> Force
         reactions[nm] = PlanReaction(nm, pr.by, pr.on, pr.kind, res[nm], ref, at, couple, x)
     return ForcePlan("force", kin.labels[k], d.name, kp, dict(b.points), tuple(b.steps),
                      dict(b.readings), tuple(b.equations),
-                     {"group": tuple(b.poly), f"link {i}": tuple(sub)}, reactions, dict(b.arms))
+                     {"group": tuple(b.poly), f"link {i}": tuple(sub)}, reactions, dict(b.arms),
+                     reads=len(reader.taken))
 
 
 def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,
@@ -620,6 +624,7 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
     r41 = reaction_name(mech.frame_link, cr.link)
 
     def build(kp_, rd):
+        rd = tally(rd)
         b = _Draw(kp_, kl, rd, big)
         total, sym, num = b.moments(cr.pivot, P[cr.pivot], fs, M[cr.link])
         mb = -total * kl.per_mm
@@ -641,7 +646,7 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
         reac = {r41: PlanReaction(r41, mech.frame_link, cr.link, "R", res[r41], ref, ref)}
         return ForcePlan("force", kin.labels[k], f"crank {cr.link}", kp_, dict(b.points),
                          tuple(b.steps), dict(b.readings), tuple(b.equations),
-                         {"group": tuple(b.poly)}, reac, dict(b.arms), mb)
+                         {"group": tuple(b.poly)}, reac, dict(b.arms), mb, len(rd.taken))
 
     return build(_choose_kp(build, kp, {f.name for f in fs}, room_mm), reader)
 
@@ -649,7 +654,8 @@ def crank_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int
 def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,
                 kl: Scale | tuple[Scale, ...], reader: Reader = EXACT,
                 room_mm: float | tuple[float, ...] = ROOM_MM, *,
-                scales: dict[int, Scale] | None = None) -> tuple[ForcePlan, ...]:
+                scales: dict[int, Scale] | None = None, memo: dict | None = None
+                ) -> tuple[ForcePlan, ...]:
     """All force plans of position k: the groups from the last to the first, then the crank.
 
     Each group takes the reactions of the groups drawn before it as read off their plans
@@ -660,7 +666,8 @@ def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: in
     one room for every plan, or one per plan in their order (sheet 2 sizes each plan's cell
     to its shape). ``kl``: the Kl of the position plan every plan's arms are read on, or one
     per plan (sheet 2 draws each group and the crank at its own Kl; each group then takes
-    the reactions as read off the plans drawn before it, at theirs).
+    the reactions as read off the plans drawn before it, at theirs). ``memo``: the project's
+    store of the plans built (:func:`chain_plan`), each plan of the same inputs built once.
     """
     n = len(mech.dyads) + 1
     rooms = tuple(room_mm) if isinstance(room_mm, tuple) else (room_mm,) * n
@@ -668,17 +675,55 @@ def force_plans(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: in
     known: dict[str, PlanReaction] = {}
     plans: list[ForcePlan] = []
     kps = scales if scales is not None else {}
-    for gi in reversed(range(len(mech.dyads))):
-        p = force_plan(mech, kin, forces, loads, k, gi, kps.get(len(plans)), kl=kls[len(plans)],
-                       reader=reader, known=known, room_mm=rooms[len(plans)])
-        kps.setdefault(len(plans), p.scale)
+    how = ("read", reader.precision) if type(reader) is Reader else None
+    for m in range(n):
+        p, _ = chain_plan(mech, kin, forces, loads, k, m, kps.get(m), kls[m], reader, known,
+                          rooms[m], memo if how is not None else None, how)
+        kps.setdefault(m, p.scale)
         known.update(p.reactions)
         plans.append(p)
-    p = crank_plan(mech, kin, forces, loads, k, kps.get(len(plans)), kl=kls[-1], reader=reader,
-                   known=known, room_mm=rooms[-1])
-    kps.setdefault(len(plans), p.scale)
-    plans.append(p)
     return tuple(plans)
 
 
-__all__ = ["ROOM_MM", "ForcePlan", "PlanReaction", "crank_plan", "force_plan", "force_plans"]
+def _known_key(known: dict[str, PlanReaction]) -> tuple:
+    """The reactions a plan takes from the plans before it, bit for bit."""
+    return tuple(sorted((n, r.by, r.on, r.pair, np.asarray(r.vector, float).tobytes(),
+                         np.asarray(r.ref, float).tobytes(), np.asarray(r.at, float).tobytes(),
+                         float(r.couple), r.offset_mm) for n, r in known.items()))
+
+
+def chain_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int, m: int,
+               kp: Scale | None, kl: Scale, reader: Reader, known: dict[str, PlanReaction],
+               room_mm: float, memo: dict | None = None, how: tuple | None = None,
+               found_as: tuple[tuple, ...] = ()) -> tuple[ForcePlan, bool]:
+    """Plan ``m`` of position k's chain (the groups from the last attached, then the crank),
+    built once per project: ``memo`` keeps every plan by what it is built from (its Kl, Kp,
+    room, the reactions it takes, ``how`` it is read), so the tables, sheet 2 and the error
+    bounds' probes build a plan of the same inputs once; ``found_as``: other ways of reading
+    that give the same figures (a probe that shifts no reading of this plan reads it
+    exactly), whose plans are taken but not kept under ``how``. Returns (plan, found)."""
+    if memo is None or how is None:
+        return _build_plan(mech, kin, forces, loads, k, m, kp, kl, reader, known, room_mm), False
+    inputs = (id(loads), k, m, kl.per_mm, room_mm, _known_key(known))
+    kps = None if kp is None else kp.per_mm
+    for h in (how, *found_as):
+        if (*inputs, kps, h) in memo:
+            return memo[(*inputs, kps, h)], True
+    p = _build_plan(mech, kin, forces, loads, k, m, kp, kl, reader, known, room_mm)
+    memo[(*inputs, kps, how)] = p
+    if kp is None:  # chosen by its trial build: the same plan as at that Kp given
+        memo[(*inputs, p.scale.per_mm, how)] = p
+    return p, False
+
+
+def _build_plan(mech, kin, forces, loads, k, m, kp, kl, reader, known, room_mm) -> ForcePlan:
+    gi = len(mech.dyads) - 1 - m
+    if gi < 0:
+        return crank_plan(mech, kin, forces, loads, k, kp, kl=kl, reader=reader, known=known,
+                          room_mm=room_mm)
+    return force_plan(mech, kin, forces, loads, k, gi, kp, kl=kl, reader=reader, known=known,
+                      room_mm=room_mm)
+
+
+__all__ = ["ROOM_MM", "ForcePlan", "PlanReaction", "chain_plan", "crank_plan", "force_plan",
+           "force_plans"]

@@ -184,6 +184,11 @@ class Lever:
     discrepancy_pct: float | None
     kf: Scale
 
+    @property
+    def reads(self) -> int:
+        """Readings the lever took: its velocity plan's, then one arm per force."""
+        return self.plan.reads + len(self.forces)
+
     def discrepancy(self, reference: float) -> float:
         """Δ = |M_ур − M_ур(Ж)| / max(|M_ур|, |M_ур(Ж)|)·100 % (0 when both are 0)."""
         return discrepancy_pct(reference, self.M_bal)

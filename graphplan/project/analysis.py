@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Hashable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from typing import TYPE_CHECKING, TypeVar
 
@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from ..dynamics import MachineUnit
     from ..forces import Forces, Loads, MomentCurve
     from ..plans import ForcePlan, Lever, Plan
+    from ..units import Scale
     from .scales import Sheet1Scales, Sheet2Scales
 
 _T = TypeVar("_T")
@@ -117,10 +118,30 @@ class Project:
         """Sheet 1's velocity plan of position k at sheet 1's Kl and Kv, built once: sheet 1
         draws it, the velocity lesson teaches it (``precision``: the draftsman's reading, mm;
         0 exact)."""
-        fmt = self._format if page is None else page.format
         sc = self.sheet1 if page is None else self.sheet1_on(page)
-        return self.stage(("velocity_plan", k, precision, fmt), lambda: velocity_plan(
-            self.mech, self.kin, k, sc.kl, sc.kv, Reader(precision)))
+        return self.velocity_plan_at(k, sc.kl, sc.kv, precision)
+
+    def velocity_plan_at(self, k: int, kl: Scale, kv: Scale, precision: float = 0.0) -> Plan:
+        """The velocity plan of position k at ``kl``, ``kv``, built once per scales and
+        precision: sheet 1's, and the lever's where its Kv is another (Zhukovsky's lever is
+        that plan turned)."""
+        plan = self.stage(("velocity_plan", k, precision, kl.per_mm, kv.per_mm),
+                          lambda: velocity_plan(self.mech, self.kin, k, kl, kv, Reader(precision)))
+        # the same construction under its own scale's name (the lever's Kv has its basis)
+        return plan if plan.scale == kv else replace(plan, scale=kv)
+
+    @property
+    def force_memo(self) -> dict:
+        """Every force plan built for the project, by what it is built from
+        (:func:`graphplan.plans.forces.chain_plan`): sheet 2's, the tables' and the error
+        bounds' probes build a plan of the same inputs once."""
+        return self.stage(("force plans",), dict)
+
+    def probes(self, precision: float) -> dict:
+        """The error bounds' shifted velocity plans at ``precision`` (one reading moved),
+        kept once per project: the kinematic bounds and the lever's build each once
+        (:func:`graphplan.plans.kinematic_conditioning`)."""
+        return self.stage(("probes", precision), dict)
 
     def acceleration_plan(self, k: int, precision: float = 0.0, page: Page | None = None
                           ) -> Plan:
@@ -143,7 +164,8 @@ class Project:
         kls = tuple(s2.figure_kl(i) for i in range(len(self.mech.dyads) + 1))
         fmt = self._format if page is None else page.format
         return self.stage(("force_plans", k, fmt), lambda: force_plans(
-            self.mech, self.kin, self.forces, self.loads, k, kls, room_mm=s2.room_mm))
+            self.mech, self.kin, self.forces, self.loads, k, kls, room_mm=s2.room_mm,
+            memo=self.force_memo))
 
     def lever(self, k: int, page: Page | None = None) -> Lever:
         """Sheet 2's Zhukovsky lever of position k (its Kl, the lever's Kv), built once and
@@ -154,9 +176,10 @@ class Project:
         kl = s2.kl
         assert kl is not None  # sheet2_scales sets it
         fmt = self._format if page is None else page.format
+        kv = s2.lever_kv(self.kin, k)
         return self.stage(("lever", k, fmt), lambda: zhukovsky_lever(
-            self.mech, self.kin, self.loads, k, kl, s2.lever_kv(self.kin, k),
-            reference=float(self.forces.M_bal[k])))
+            self.mech, self.kin, self.loads, k, kl, kv, reference=float(self.forces.M_bal[k]),
+            plan=self.velocity_plan_at(k, kl, kv)))
 
     @cached_property
     def curve(self) -> MomentCurve:

@@ -164,13 +164,21 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
     draft = Reader(prec)
     out = []
     for k in range(kin.n):
-        ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm)
-        dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft, s2.room_mm)
+        memo = analysis.force_memo  # a plan of the same inputs as sheet 2's is built once
+        ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm, memo=memo)
+        dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft, s2.room_mm, memo=memo)
         kv = s2.lever_kv(kin, k)
-        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal)
-        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal)
-        cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm)
-                if prec > 0 else None)  # exact readings: no reading error to bound
+        # the lever is its velocity plan turned: the plan built once at these scales
+        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal,
+                             plan=analysis.velocity_plan_at(k, sc.kl, kv))
+        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal,
+                             plan=analysis.velocity_plan_at(k, sc.kl, kv, prec))
+        # the bounds of the plans built here (only the probes are built there); exact
+        # readings have no reading error to bound
+        cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm,
+                                   exact=ex, drawn=dr, lever_exact=lx, lever_drawn=ld,
+                                   probes=analysis.probes(prec), memo=memo)
+                if prec > 0 else None)
         out.append(PositionForces(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,

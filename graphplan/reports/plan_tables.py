@@ -164,7 +164,9 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
         vp, ap = analysis.velocity_plan(k, precision), analysis.acceleration_plan(k, precision)
         ev, ea = analysis.velocity_plan(k), analysis.acceleration_plan(k)
         if precision > 0:
-            cond = kinematic_conditioning(mech, kin, k, kl, kv, ka, precision)
+            # the bounds of the plans built once: only the probes are built there
+            cond = kinematic_conditioning(mech, kin, k, kl, kv, ka, precision, exact=(ev, ea),
+                                          drawn=(vp, ap), probes=analysis.probes(precision))
         else:
             cond = Conditioning(kin.labels[k], 0.0, intersections(vp) + intersections(ap))
         out.append(PositionPlans(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), vp, ap, ev, ea,
