@@ -5,8 +5,9 @@ segment of ``x`` mm on the velocity plan stands for ``x·Kv`` m/s. Worked
 example: the press crank, l_OA = 0.08 m, drawn 80 mm long gives
 ``Kl = lOA/OA = 0.08/80 = 0.001 m/mm``.
 
-Scales are chosen from the usual series 1, 2, 2.5, 4, 5 × 10^k, as students
-choose them, so that the largest vector just fits its place.
+Scales are chosen from the usual series 1, 2, 2.5, 4, 5 × 10^k (:data:`SERIES`), the
+plans' Kv, Ka and Kp from the finer :data:`PLAN_SERIES`, as students choose them, so that
+the largest vector just fits its place.
 """
 
 from __future__ import annotations

@@ -172,15 +172,16 @@ lines = [
 
 
 def test_two_force_plans_at_one_position_each_at_its_own_kp():
-    # sixbar_press, position 2: group 4-5 at Kp = 10 N/mm, then group 2-3 at 20 N/mm
-    # (graphplan draws them so); the segments after each Kp are read at that Kp
+    # sixbar_press, position 2: group 4-5 at Kp = 10 N/mm, then group 2-3 at 12 N/mm
+    # (graphplan draws them so: 1470.77 N of R42 over 122.56 mm, the plans' series 1, 1.2,
+    # 1.5, …); the segments after each Kp are read at that Kp: R12 = 1504.3/12 = 125.36 mm
     from graphplan.checking.generate import generate
 
     gen = generate(EXAMPLES / "sixbar_press.toml", positions=("2",),
                    variant_ref=(EXAMPLES / "sixbar_press.toml").as_posix())
     text = gen.toml()
     assert text.count('"Кр = ') == 2
-    text = text.replace('"h21 = ', '"R12_mm = 75,2 мм",\n  "h21 = ')  # a plain segment
+    text = text.replace('"h21 = ', '"R12_mm = 125,4 мм",\n  "h21 = ')  # a plain segment
     r = _check(text)
     assert r.wrong == (), [f.explanation_en for f in r.wrong]
     assert {f.quantity: f.verdict for f in r.figures}["R12_mm"] == "ok"

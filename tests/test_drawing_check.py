@@ -392,11 +392,11 @@ FORCE_TODO = {
     "crusher": "position 4: G5 (5.0 mm) drawn on one line with G4 (0.4 mm), its name "
                "10 mm under the cluster: read as the line of both (5.6 mm); in the DXF also "
                "R12's names read at another line",
-    # since sheet 2's cells were sized to their figures (093536f, after the reader's last
-    # change): the sheet's plans equal the rebuilt ones (tests/test_teach_sheets.py), the
-    # reader misreads these
-    "engine": "position 14: ∠R12 read off another line of the enlarged plan (false 'direction')",
-    "pump": "position 8: the polygon read as not closing (false 'closure')",
+    # since Kp comes from the plans' finer series (sheet2, session 8) the engine's and the
+    # pump's plans are read right; the shaper's Pи5 grew from under 2 mm (a footnote) to a
+    # 3.6 mm arrow, read 3.0 mm (its 3 mm head), and Rn34's name at (9) is read at R45's line
+    "shaper": "positions a, b: Pи5 (3.6 mm, a 3 mm head) read 3.0 mm; position 9: Rn34's "
+              "name read at R45's line",
 }
 
 

@@ -24,7 +24,7 @@ from graphplan.files import bundled_example
 from graphplan.forces import compute_loads, solve_forces
 from graphplan.plans import EXACT, ROOM_MM, Reader, crank_plan, force_plan, force_plans
 from graphplan.project import analyze, sheet_scales
-from graphplan.units import Scale
+from graphplan.units import PLAN_SERIES, Scale
 
 EXAMPLES = ("press", "fourbar", "shaper", "shaper_prp", "scotch_yoke", "sixbar_press",
             "offset_slider")
@@ -122,13 +122,12 @@ def test_kp_from_the_series_fits_the_plan(case):
         for p in plans:
             kp, ext = p.scale.per_mm, p.extent_mm
             assert p.scale.symbol == "Kp" and p.scale.unit == "N/mm"
-            assert _mantissa(kp) in (1, 2, 2.5, 4, 5)
+            assert _mantissa(kp) in PLAN_SERIES
             assert ext <= ROOM_MM * (1 + 1e-9)
-            assert ext > 75.0
-            # 80 mm unless the series has a factor-2 gap here (1→2 or 5→10)
-            assert ext >= 80.0 or _mantissa(kp) in (1, 2), (p.group, kp, ext)
+            # the series steps by 4/3 at most (1.5→2, 3→4): 150/(4/3) = 112.5 mm
+            assert ext > 112.5, (p.group, kp, ext)
             # the smallest of the series: the next one down would not fit
-            smaller = max(m * 10.0**e for m in (1, 2, 2.5, 4, 5) for e in range(-3, 8)
+            smaller = max(m * 10.0**e for m in PLAN_SERIES for e in range(-3, 8)
                           if m * 10.0**e < kp * (1 - 1e-9))
             assert ext * kp / smaller > ROOM_MM
             assert p.scale.basis.startswith("Kp = ")
@@ -165,20 +164,22 @@ def test_press_working_position_2_as_the_seed(press):
     two-force member, so Rτ12 = 0 and R12 = Rⁿ12 ∥ AB.
 
     Seed: Kp = 420/42 = 10 kN/mm, R12 = 42.4·10 = 424 kN, Mур = 424·37.39·0.001 = 15.85 kN·m.
-    Here the series gives Kp = nice_ceil(423.9 kN/150 mm) = 4000 N/mm: Q = ab = 104.98 mm,
-    R12 = ca = 105.98 mm → 105.98·4000 = 423.9 kN, R43 = bc = 14.50 mm → 58.0 kN;
-    h21 = 37.39 mm, Mур = 423.9·37.39·0.001 = 15.85 kN·m.
+    Here the plans' series (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8) gives Kp = nice_ceil(423.9
+    kN/150 mm = 2826 N/mm) = 3000 N/mm: Q = ab = 419.93/3 = 139.98 mm, R12 = ca = 141.31 mm
+    → 141.31·3000 = 423.9 kN, R43 = bc = 58.0/3 = 19.33 mm → 58.0 kN; h21 = 37.39 mm,
+    Mур = 423.9·37.39·0.001 = 15.85 kN·m. (With the coarser 1, 2, 2.5, 4, 5 it was 4000 N/mm,
+    Q = 104.98 mm: the plan filled 70 % of its 150 mm.)
     """
     m, kin, loads, forces, kl = press
     k = kin.labels.index("(2)")
     group, crank = force_plans(m, kin, forces, loads, k, kl)
     assert group.label == "(2)" and kl.per_mm == 0.001
-    assert group.scale.per_mm == 4000.0
-    assert group.scale.basis == "Kp = Q/ab = 419930/104.98 = 4000 N/mm"  # no ·10^
+    assert group.scale.per_mm == 3000.0
+    assert group.scale.basis == "Kp = Q/ab = 419930/139.98 = 3000 N/mm"  # no ·10^
     assert "Rτ12" not in group.readings  # zero: not laid
-    assert group.readings["R12"].mm == pytest.approx(105.98, abs=0.01)
+    assert group.readings["R12"].mm == pytest.approx(141.31, abs=0.01)
     assert group.readings["R12"].value == pytest.approx(424e3, rel=2e-3)
-    assert group.readings["R43"].mm == pytest.approx(14.50, abs=0.01)
+    assert group.readings["R43"].mm == pytest.approx(19.33, abs=0.01)
     assert crank.arms_mm["h21"] == pytest.approx(37.39, rel=2e-3)
     assert crank.M_bal == pytest.approx(15.85e3, rel=2e-3)
     assert group.equations[0] == "ΣM_B(link 2): Rτ12·AB = 0"
@@ -189,14 +190,16 @@ def test_press_working_position_2_as_the_seed(press):
     assert seed.readings["Q"].mm == pytest.approx(42.0)
     assert seed.readings["R12"].mm == pytest.approx(42.4)
     assert seed.readings["R12"].value == pytest.approx(424e3)
-    # drafting at 0.5 mm: h21 reads 37.5 mm, Mур = 424·37.5·0.001 = 15.90 kN·m (+0.3 %)
+    # drafting at 0.5 mm: R12 = 141.31 reads 141.5 mm → 141.5·3000 = 424.5 kN, h21 reads
+    # 37.5 mm, Mур = 424.5·37.5·0.001 = 15.92 kN·m (+0.4 %)
     draft = force_plans(m, kin, forces, loads, k, kl, DRAFT)[-1]
     assert draft.arms_mm["h21"] == 37.5
-    assert draft.M_bal == pytest.approx(424e3 * 37.5 * 1e-3)
+    assert draft.M_bal == pytest.approx(141.5 * 3000 * 37.5 * 1e-3)
 
 
 def test_press_working_position_3(press):
-    """(3): Q = Q0 = 600 kN; at 4000 N/mm R12 would be 150.36 mm > 150, so Kp = 5000 N/mm:
+    """(3): Q = Q0 = 600 kN; at 4000 N/mm R12 would be 150.36 mm > 150, so Kp = 5000 N/mm
+    (the next of the plans' series, as of the coarser one):
     Q = ab = 120.00 mm, R12 = ca = 120.29 mm → 601.5 kN, R43 = bc = 8.36 mm → 41.8 kN,
     h21 = 19.33 mm, Mур = 601.5·19.33·0.001 = 11.63 kN·m."""
     m, kin, loads, forces, kl = press

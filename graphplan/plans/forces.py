@@ -61,7 +61,7 @@ from ..forces import Forces, Loads, dyad_pairs, reaction_name
 from ..geometry import cross, perp
 from ..model import Mechanism
 from ..numbers import plain
-from ..units import Scale, fit_scale
+from ..units import PLAN_SERIES, Scale, fit_scale
 from .constructions import (
     EXACT,
     Element,
@@ -79,7 +79,8 @@ from .constructions import (
 Vec2 = np.ndarray
 
 ROOM_MM = 150.0
-"""Kp is the smallest of the series 1, 2, 2.5, 4, 5 × 10^k that keeps the plan within this."""
+"""Kp is the smallest of the plans' series (:data:`graphplan.units.PLAN_SERIES`: 1, 1.2, 1.5, 2,
+2.5, 3, 4, 5, 6, 8 × 10^k) that keeps the plan within this."""
 
 SMALL_ANGLE_DEG = 15.0
 """Closing lines meeting at less than this are flagged in the step's text (method D.3)."""
@@ -418,10 +419,12 @@ def _from_forces(forces: Forces, k: int) -> dict[str, PlanReaction]:
 def _choose_kp(build, kp: Scale | None, known: set[str], room_mm: float = ROOM_MM) -> Scale:
     """Kp of the series so that the plan's extent is at most ``room_mm`` (ROOM_MM).
 
-    The smallest of 1, 2, 2.5, 4, 5 × 10^k that keeps the plan's diameter (the largest
-    distance between two vertices, so also its longest segment) within ROOM_MM: 80–150
-    mm, down to 75 mm where the value falls in the series' factor-2 gaps (1→2, 5→10).
-    Its basis names the largest known force (``Kp = Q/ab = 420000/105 = 4000 N/mm``).
+    The smallest of the plans' series 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10^k (the one
+    Kv and Ka are chosen from, :data:`graphplan.units.PLAN_SERIES`) that keeps the plan's
+    diameter (the largest distance between two vertices, so also its longest segment)
+    within ``room_mm``: 80–100 % of it (the series steps by 1.25–1.33 at most), where the
+    coarser 1, 2, 2.5, 4, 5 left plans at 50–100 % of their cells.
+    Its basis names the largest known force (``Kp = Q/ab = 419930/139.98 = 3000 N/mm``).
     """
     if kp is not None:
         return kp
@@ -433,7 +436,7 @@ def _choose_kp(build, kp: Scale | None, known: set[str], room_mm: float = ROOM_M
         trial.readings.values())
     largest = max(laid, key=lambda r: r.value)
     return fit_scale("Kp", "N/mm", ext, room_mm, quantity=largest.quantity,
-                     defining=largest.value, segment=largest.name)
+                     defining=largest.value, segment=largest.name, series=PLAN_SERIES)
 
 
 def force_plan(mech: Mechanism, kin, forces: Forces | None, loads: Loads, k: int,

@@ -375,7 +375,7 @@ class Sheet2Scales:
         wide = max(cell.width - LEVER_PAD, 0.25 * cell.width)
         room = min(tall / max(w, 1e-12), wide / max(h, 1e-12)) * max(w, h, 1e-12)
         room = min(room, LEVER_CAP)
-        return Scale("Kv", nice_ceil(max(w, h, 1e-12) / room), "(m/s)/mm")
+        return Scale("Kv", nice_ceil(max(w, h, 1e-12) / room, PLAN_SERIES), "(m/s)/mm")
 
     def figure_kl(self, i: int) -> Scale:
         """Kl of the i-th figure (the groups from the last attached, then the crank)."""

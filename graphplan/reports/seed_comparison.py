@@ -148,7 +148,9 @@ def seed_comparison_markdown(analysis: Analysis, precision: float | None = None)
         "Loads (G, Pи, Q): exact, the full model's magnitude; drafted, the segment read off "
         "the force plan, — where the variant's 10 % rule neglects the load. R12, R43: "
         "magnitudes. Kp: graphplan's force scale of the group's plan (a choice of scale from "
-        "the usual series, so no Δ is given).",
+        "the plans' series 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10ⁿ, finer than the seed's "
+        "1, 2, 2.5, 4, 5, so no Δ is given; at the seed's own Kp graphplan reads the seed's "
+        "segments, e.g. R12 = 42.4 mm at 10 kN/mm in position (2), tests/test_force_plans.py).",
         "",
         "The differences are not explained here; explaining them is the job of the checker "
         "(a later issue).",
