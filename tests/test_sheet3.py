@@ -402,3 +402,30 @@ def test_the_scheme_of_the_machine_unit_where_delta_t_leaves_room(solved):
                 or g.bounds[3] <= top, (name, it.id)
     press = dynamics_sheet(solved("press"))
     assert not [it for it in iter_leaves(press.items) if (it.id or "").startswith("s3-unit-")]
+
+
+@pytest.mark.parametrize("name", ["press", "engine", "compressor", "dough_mixer"])
+def test_the_flywheel_results_can_be_followed(solved, name):
+    """The result Jм = JI − Jкр (− Jрот·u²) writes its terms out and they subtract to the
+    printed Jм (to the printed digits); a flywheel on the motor's shaft (the dough mixer)
+    gets the line Jм.дв = Jм/u², the inertia of the rim drawn."""
+    from pathlib import Path
+
+    path = (Path(__file__).parent / "data" / "variants" / f"{name}.toml"
+            if name == "dough_mixer" else name)
+    a = solved(path)
+    u = a.unit_on(Page("A1"))
+    lines = results_lines(u, "en")
+    (jm,) = [s for s in lines if s.startswith("Jм = JI")]
+    nums = [float(x) for x in re.findall(r"= ([\d.]+(?: − [\d.]+)+) = ([\d.]+)", jm)[0][0]
+            .split(" − ")]
+    total = float(re.findall(r"= ([\d.]+) kg·m²", jm)[0])
+    assert nums[0] - sum(nums[1:]) == pytest.approx(total, rel=2e-3, abs=2e-3)
+    assert total == pytest.approx(u.flywheel.I_m, rel=1e-4)
+    on_motor = [s for s in lines if s.startswith("Jм,motor")]
+    assert bool(on_motor) == (u.shaft == "motor")
+    if on_motor:
+        m = re.search(r"= ([\d.]+)/([\d.]+)² = ([\d.]+) kg·m²", on_motor[0])
+        jm_c, ratio, jm_m = map(float, m.groups())
+        assert jm_c / ratio**2 == pytest.approx(jm_m, rel=2e-3)
+        assert jm_m == pytest.approx(u.mounted.inertia, rel=1e-3)

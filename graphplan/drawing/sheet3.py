@@ -103,6 +103,9 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
         f"{fw.delta:g}) = {fmt(fw.J_I, 5)} {kg_m2}",
         *_flywheel_lines(u, "JI − Jкр − Jрот·u²", lang),
     ]
+    if u.shaft == "motor" and fw.needed:  # the flywheel drawn is the motor shaft's
+        lines.insert(-1, f"{'Jм.дв' if ru else 'Jм,motor'} = Jм/u² = {fmt(fw.I_m, 5)}/"
+                         f"{mc.u:.2f}² = {fmt(u.mounted.inertia, 4)} {kg_m2}")
     return [sheet_text(x, lang) for x in lines]
 
 
@@ -116,7 +119,11 @@ def _flywheel_lines(u: MachineUnit, what: str, lang: str) -> list[str]:
                 + ("маховик не нужен" if ru else "no flywheel is needed"),
                 f"δ {sim} {'без маховика' if ru else 'without one'} = "
                 f"{u.simulation.delta_actual:.4f} ≤ δ = {fw.delta:g}"]
-    return [f"Jм = {what} = {fmt(fw.I_m, 5)} {kg_m2} "
+    # the subtraction written out, each term as the results give it (Jкр: the crank's link
+    # about O and dynamics.crank_inertia), so that a checker can follow it
+    terms = [fmt(fw.J_I, 5), fmt(fw.I_const, 4)] + ([fmt(fw.I_rotor, 4)]
+                                                    if u.motor is not None else [])
+    return [f"Jм = {what} = {' − '.join(terms)} = {fmt(fw.I_m, 5)} {kg_m2} "
             f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
             f"{fw.difference_pct:+.2f} %)",
             f"δ {sim} = {u.simulation.delta_actual:.4f} ({u.delta_error_pct:+.2f} %)"]
