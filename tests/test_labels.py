@@ -34,3 +34,26 @@ def test_keep_out_is_respected():
     texts = place_labels([LabelRequest((50, 50), "A", 5.0)], [], layer="text", id_prefix="k",
                          keep_out=[wall])
     assert not text_box(texts[0]).intersects(wall)
+
+
+def test_the_batched_boxes_are_the_boxes_of_the_texts():
+    """The placer judges a ring's spots in batches (shapely's vectorised predicates); each
+    spot's box must be exactly ``text_box(text_at_centre(c)).buffer(0.3)`` — vertex for
+    vertex, no tolerance — so that it makes the same choices as one spot at a time."""
+    import random
+
+    import numpy as np
+    import shapely
+
+    from graphplan.drawing.labels import _label_boxes
+    from graphplan.drawing.sheet import text_at_centre
+
+    rng = random.Random(7)
+    for _ in range(500):
+        r = LabelRequest((0.0, 0.0), rng.choice(["A", "p, b", "S2", "Pи3", "(12)", "Ё"]),
+                         rng.choice([2.5, 3.5, 5.0]))
+        cs = [np.array([rng.uniform(-50, 850), rng.uniform(-50, 600)]) for _ in range(3)]
+        for c, got in zip(cs, _label_boxes(cs, r), strict=True):
+            want = text_box(text_at_centre((float(c[0]), float(c[1])), r.text, r.height,
+                                           layer="text")).buffer(0.3)
+            assert shapely.equals_exact(got, want, tolerance=0.0)
