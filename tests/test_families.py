@@ -536,3 +536,48 @@ def test_loads_on_two_rockers_share_the_crank_angle_on_q(solved):
         assert got[smooth] == pytest.approx(want[smooth], rel=2e-3, abs=1e-6 * want.max()), name
     _, unit = q_curves(solved("compressor"))
     assert unit == "m"
+
+
+def test_in_line_twin_with_cranks_at_180_turning_moment_is_two_closed_forms():
+    """tests/data/variants/inline_twin_180.toml, written from the docs: the two gas forces'
+    turning moment is the sum of two textbook closed forms F·r·sin(α + β)/cos β, cylinder 1's
+    α the cycle angle τ from its ВМТ of intake, cylinder 2's α = τ − 180° (its pin opposite
+    A puts its ВМТ half a turn later, and phase = 180 starts its intake there), each force
+    read by this test from the file's indicator table — at every position and over the 720°
+    of the dynamics."""
+    path = ROOT / "tests" / "data" / "variants" / "inline_twin_180.toml"
+    a = analyze(load(path))
+    mech, kin = a.mech, a.kin
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    r, rod = mech.crank.length, mech.dyads[0].lengths[0]
+    assert data["loads"][1]["phase"] == 180
+
+    def moment(g, alpha):
+        area = math.pi * (g["bore"] / 1000) ** 2 / 4
+        beta = np.arcsin(r / rod * np.sin(alpha))
+        s = (r * (1 - np.cos(alpha)) + rod * (1 - np.cos(beta))) / (2 * r)   # s/H from ВМТ
+        k = np.minimum((alpha // math.pi).astype(int), 3)
+        p = np.array([np.interp(si, g["travel"], g["strokes"][ki])
+                      for si, ki in zip(s, k, strict=True)])
+        F = (p - g["p_ambient"]) * 1e6 * area
+        return F * r * np.sin(alpha + beta) / np.cos(beta)
+
+    def closed(tau):
+        return (moment(data["loads"][0], np.mod(tau, 4 * math.pi))
+                + moment(data["loads"][1], np.mod(tau - math.pi, 4 * math.pi)))
+
+    ld = compute_loads(mech, kin, a.cycle, kinds=("resistance",), inertia=False)
+    assert [f.name for f in ld.all_forces()] == ["Fг1", "Fг2"]
+    M_bal = solve_forces(mech, kin, ld).M_bal
+    tau = np.mod(kin.phi - a.cycle.dead_centres[0], 4 * math.pi)   # CCW crank
+    # the positions sit on the dead centres every 180°: each force there is the stroke's it
+    # starts and its arm zero, so the comparison holds at all 24
+    want = closed(tau)
+    np.testing.assert_allclose(-M_bal, want, rtol=1e-9, atol=1e-9 * np.abs(want).max())
+    fine = np.linspace(0.0, 4 * math.pi, 2881)[1:-1]
+    fine = fine[np.abs(np.sin(fine)) > 1e-6]
+    M = dyn.dynamic_model(a).moment.at(fine)
+    sol = solve(mech, a.cycle.dead_centres[0] + fine)
+    grav = compute_loads(mech, sol, a.cycle, kinds=("gravity",), inertia=False)
+    Mg = load_power(mech, sol, grav) / abs(mech.crank.omega)
+    np.testing.assert_allclose(M - Mg, closed(fine), rtol=1e-9, atol=1e-9 * np.abs(M).max())
