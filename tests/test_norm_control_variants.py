@@ -4,7 +4,7 @@ added): a two-stroke engine, an in-line compressor, an in-line twin over 720°, 
 kN diagram, a crusher with a force on the jaw, a four-bar clockwise at 12 rad/s, a shaper
 cutting part of its stroke, a four-bar with a fixed-direction force, an in-line twin with cranks
 at 180°, a two-stage V compressor in кгс/см², a dough mixer loaded at a coupler point, rocking
-shears (кулиса → RRR) in rad/s and N…
+shears (кулиса → RRR) in rad/s and N, a slotting machine with a rotating кулиса…
 
 Issue 17 holds the assignment families to the sheets issue's norm control: each variant's
 sheets are measured with the same measures as the examples' (``norm_measures``):
