@@ -296,3 +296,16 @@ def test_pressures_in_the_books_own_spelling(spelling):
     assert np.array_equal(got, want)
     assert float(want[1].max()) == pytest.approx(7.5 * 98066.5 * math.pi * 0.075**2 / 4,
                                                  rel=1e-12)
+
+
+def test_an_extra_position_on_the_grid_is_a_warning():
+    """The rotating-кулиса slotter's end dead centre is at φ = 60°, position 8 of its 12
+    (300° − 8·30° clockwise): '0'' given there as well would be drawn twice — a warning
+    naming the key and both labels; off the grid (the 'a' at 5 % of the stroke) nothing."""
+    text = (VARIANTS / "slotter_rotating.toml").read_text(encoding="utf-8")
+    twice = text.replace('extra = [{ label = "a"', 'extra = [{ label = "0\'", from = "end" }, '
+                         '{ label = "a"')
+    (w,) = _warnings(twice, "s.toml")
+    assert w.startswith("s.toml: positions.extra[0] ('0''): φ = 60.00°, the crank angle of "
+                        "position '8'")
+    assert _warnings(text, "s.toml") == ()

@@ -25,6 +25,10 @@ Each warning is one line that names the key to look at and the likely fix:
   or its ``working`` is the other way round from the machine meant; the fixes named are
   those that, tried on the variant, put ВМТ at the far dead centre.
 
+* **A position twice** — an extra position (``positions.extra``) at the crank angle of
+  another position (a dead centre that falls on the grid, given as ``from = "end"``): the
+  sheets would draw, tabulate and analyse the same position under two labels.
+
 (A crank that cannot make a full turn stops the analysis: :func:`graphplan.kinematics.cycle.
 analyse_cycle` says so with the range of angles it reaches.)
 """
@@ -266,9 +270,31 @@ def _working_strokes_only(res: Resistance) -> bool:
     return any(d is not None for d in diags[0::2]) and all(d is None for d in diags[1::2])
 
 
+def _twin_position_warnings(mech: Mechanism, cycle: Cycle):
+    """An extra position at the crank angle of another one (to 1e-6 rad)."""
+    period = mech.positions.period
+    extra = {e.label: i for i, e in enumerate(mech.positions.extra)}
+    tau = np.mod(np.asarray(cycle.phi, float) - float(cycle.phi[0]), period)
+    order = np.argsort(tau, kind="stable")
+    for a, b in zip(order, np.roll(order, -1), strict=True):
+        gap = float(np.mod(tau[b] - tau[a], period))
+        if a == b or min(gap, period - gap) > 1e-6:
+            continue
+        lab, oth = cycle.labels[b], cycle.labels[a]
+        if lab not in extra:
+            lab, oth = oth, lab
+        if lab not in extra:
+            continue
+        yield (f"{mech.source}: positions.extra[{extra[lab]}] ('{lab}'): φ = "
+               f"{mech.positions.phi_deg(float(cycle.phi[b])):.2f}°, the crank angle of "
+               f"position '{oth}': the sheets would draw the same position twice; likely "
+               f"fix: leave '{lab}' out (an extra position is needed only off the grid)")
+
+
 def machine_warnings(mech: Mechanism, cycle: Cycle) -> tuple[str, ...]:
     """The warnings of the module docstring, one line each (empty when all looks meant)."""
     out: list[str] = list(_cylinder_head_warnings(mech, cycle))
+    out += _twin_position_warnings(mech, cycle)
     out += _driving_resistance_warnings(mech, cycle)
     out += _out_of_step_warnings(mech, cycle)
     K = cycle.time_ratio
