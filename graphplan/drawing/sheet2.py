@@ -307,12 +307,29 @@ def vector_line(fp) -> str:
     return " + ".join(chain) + " = 0" if chain else ""
 
 
+#: a unit stays on the line of its number («Mур = 119,109 Н·м» never leaves «Н·м» alone)
+_UNIT_WORDS = frozenset({"Н", "Н·м", "кН", "кН·м", "мм", "м", "N", "N·m", "kN", "kN·m", "mm",
+                         "m"})
+
+
+def _words(line: str) -> list[str]:
+    """The words a line may break between: a unit joined to the number before it."""
+    out: list[str] = []
+    for word in line.split(" "):
+        if out and word.rstrip(".,;)") in _UNIT_WORDS:
+            out[-1] += " " + word
+        else:
+            out.append(word)
+    return out
+
+
 def _wrapped(lines: list[str], width: float) -> list[str]:
-    """Lines broken at their spaces to ``width`` at EQ_H lettering."""
+    """Lines broken at their spaces to ``width`` at EQ_H lettering (a unit kept with its
+    number)."""
     out = []
     for line in lines:
         cur = ""
-        for word in line.split(" "):
+        for word in _words(line):
             trial = f"{cur} {word}" if cur else word
             if cur and text_width(Text((0, 0), trial, EQ_H, layer="text")) > width:
                 out.append(cur)

@@ -621,7 +621,9 @@ def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
         raise LayoutError(f"sheet 2 leaves cells of {side:.0f} mm on {page.format}: "
                           "choose a larger format")
     left = H - used
-    grow = min(left, max(STRIP_MAX * f.height - strip, 0.0))
+    # one analysed position: its figures are drawn at their caps, the charts take all the
+    # height they leave (several positions: the rows keep what the strip does not take)
+    grow = left if len(rows) == 1 else min(left, max(STRIP_MAX * f.height - strip, 0.0))
     strip += grow
     rows = _stretch(rows, y0, left - grow)
     sy0, sy1 = f.y1 - strip, f.y1 - 4.0

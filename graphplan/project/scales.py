@@ -502,6 +502,11 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
     positions = wanted[:len(lay.rows)]
     n_fig = len(mech.dyads) + 1
     kls = tuple(_group_kl(mech, kin, positions, lay.rows, i) for i in range(n_fig))
+    # the crank drawn larger than the groups (a short crank), at most 4x: at 8-10x their
+    # Kl it was a 250 mm diagonal beside them (the engines)
+    least = nice_ceil(min(kl.per_mm for kl in kls[:-1]) / 4.0)
+    if kls[-1].per_mm < least:
+        kls = (*kls[:-1], Scale("Kl", least, "m/mm"))
     # each plan's room: the extent its cells hold in every position (PLAN_CAP at most)
     s = min(1.0, page.frame.height / 584.0)
     rooms = []
