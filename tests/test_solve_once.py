@@ -73,8 +73,9 @@ def _plan(p) -> object:
 def _known(known) -> object:
     if known is None:
         return None
-    return tuple(sorted((n, np.asarray(r.vector, float).tobytes(), np.asarray(r.at, float).tobytes(),
-                         float(r.couple), r.offset_mm) for n, r in known.items()))
+    return tuple(sorted((n, np.asarray(r.vector, float).tobytes(),
+                         np.asarray(r.at, float).tobytes(), float(r.couple), r.offset_mm)
+                        for n, r in known.items()))
 
 
 def _kls(kl) -> object:

@@ -21,8 +21,11 @@ most ``p/2``. A figure ``F`` of the drawing is a smooth function of those errors
     |F(δ) − F(0)| ≤ Σ_i |∂F/∂δ_i|·p/2 + O(p²),
 
 and the partial derivatives are measured on the construction itself: the plans are
-built again with one reading shifted by a small ``h`` (``∂F/∂δ_i ≈ (F_i − F_0)/h``;
-1 + the number of readings constructions per position). What an ill-conditioned
+built again with one reading shifted by a small ``h`` (``∂F/∂δ_i ≈ (F_i − F_0)/h``).
+``F_0`` and the drawn figures are those of the plans the sheets and tables built (each
+plan records how many readings it took); only the shifted plans are built here, from the
+shifted reading's plan on (the plans before it are the unshifted ones, and a later plan
+whose inputs the shift left as they were is the plan built already). What an ill-conditioned
 intersection does — ``p/sin α`` — is in those derivatives; the first-order bound is
 multiplied by :data:`SAFETY` for the terms of second order, which stay small unless an
 angle is small, and then the plan is marked: a figure is within its bound of the exact
