@@ -96,6 +96,15 @@ STAGES = {
     "analyse": ("graphplan.model", lambda mech: ()),
     "analyse_cycle": ("graphplan.kinematics", lambda mech: ()),
     "sweep": ("graphplan.kinematics", lambda mech, cycle: ()),
+    # the kinematics on any grid (the positions' sweep, a fine turn for the trajectories and
+    # the slots, the diagrams' intervals, Mур's curve)
+    "solve": ("graphplan.kinematics", lambda mech, phi, *a, **kw: (
+        np.asarray(phi, float).tobytes(),)),
+    # the diagrams at each size tried (their motion solved once: "solve" counts it)
+    "kinematic_diagrams": ("graphplan.plans", lambda mech, cycle, **kw: tuple(sorted(
+        (k, v) for k, v in kw.items() if k != "motion"))),
+    "sheet2_positions": ("graphplan.project", lambda mech, kin, *a, **kw: (_phi(kin),)),
+    "acceleration_positions": ("graphplan.project", lambda mech, kin, *a, **kw: (_phi(kin),)),
     "compute_loads": ("graphplan.forces", lambda mech, kin, cycle=None, **kw: (
         _phi(kin), kw.get("inertia"), kw.get("neglect_below"), kw.get("shift_inertia"),
         kw.get("kinds"))),
@@ -162,7 +171,10 @@ COMMANDS = {
 }
 
 
-@pytest.mark.parametrize("example", ["press", "sixbar_press"])
+EXAMPLES = sorted(p.stem for p in (ROOT / "examples").glob("*.toml"))
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
 def test_one_sheets_run_solves_each_stage_once(example, count_stages, tmp_path):
     assert graphplan.cli.main(COMMANDS["sheets"](example, tmp_path)) == 0
     assert not _again(count_stages), f"stages solved again in one run: {_again(count_stages)}"
@@ -172,9 +184,11 @@ def test_one_sheets_run_solves_each_stage_once(example, count_stages, tmp_path):
     assert solved["compute_loads"] >= 2 and solved["solve_forces"] >= 2
     assert solved["sheet_scales"] == solved["sheet2_scales"] == 1
     assert solved["moment_curve"] == 1
-    assert solved["machine_unit"] == solved["dynamic_model"] == 1
+    mech = graphplan.load(bundled_example(example))
+    unit = int("delta" in mech.settings.get("dynamics", {}))  # sheet 3's machine unit
+    assert solved["machine_unit"] == solved["dynamic_model"] == unit
     # every position's plans, force plans and lever seen (the count is not empty)
-    n = graphplan.load(bundled_example(example)).positions.count
+    n = mech.positions.count
     for stage in ("velocity_plan", "acceleration_plan", "force_plans", "zhukovsky_lever",
                   "force_plan", "crank_plan"):
         assert solved[stage] >= n, stage

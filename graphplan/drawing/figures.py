@@ -21,7 +21,7 @@ from ..errors import LayoutError
 from ..kinematics import Cycle
 from ..model import Mechanism
 from ..numbers import plain
-from ..plans import MIN_NODES, KinematicDiagrams, kinematic_diagrams
+from ..plans import MIN_NODES, KinematicDiagrams, diagram_motion, kinematic_diagrams
 from . import fonts
 from .chart import MIN_DOT, Chart
 from .sheet import Circle, Group, Item, Style
@@ -91,9 +91,11 @@ def diagrams_size(d: KinematicDiagrams) -> tuple[float, float]:
 
 def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: float, *,
                  intervals: int | None = None, reading_mm: float | None = None,
-                 max_length_mm: float = 360.0, max_height_mm: float = 80.0
+                 max_length_mm: float = 360.0, max_height_mm: float = 80.0, solve_on=None
                  ) -> KinematicDiagrams:
-    """:func:`graphplan.plans.diagrams.kinematic_diagrams` sized to fill a box of the sheet.
+    """:func:`graphplan.plans.diagrams.kinematic_diagrams` sized to fill a box of the sheet
+    (the motion solved once for every size tried; ``solve_on``: the project's kinematics of
+    a grid, :meth:`graphplan.project.Project.solve_on`).
 
     The abscissa gets the largest length L = n·k mm (n intervals, k a whole number of
     mm, so every node falls on a whole mm; L ≤ ``max_length_mm``) with which the
@@ -112,15 +114,18 @@ def fit_diagrams(mech: Mechanism, cycle: Cycle, width_mm: float, height_mm: floa
     count = mech.positions.count
     n = intervals if intervals is not None else count * math.ceil(MIN_NODES / count)
 
+    ok = isinstance(n, int) and n >= 4  # else kinematic_diagrams says what is wrong
+    # the same at every size tried
+    motion = diagram_motion(mech, cycle, n, solve_on) if ok else None
+
     def make(length, h):
         d = kinematic_diagrams(mech, cycle, intervals=n, length_mm=float(length),
-                               height_mm=float(h), reading_mm=reading_mm)
+                               height_mm=float(h), reading_mm=reading_mm, motion=motion)
         w_need, h_need = diagrams_size(d)
         return d if w_need <= width_mm and h_need <= height_mm else None
 
     fixed = TOP + BOTTOM + 2 * GAP + 3 * (PAD_TOP + BELOW_AXIS)  # the most the pads take
     h = min(math.floor(max_height_mm), math.floor((height_mm - fixed) / 3))
-    ok = isinstance(n, int) and n >= 4  # else kinematic_diagrams says what is wrong
     if h >= 10:
         for k in range(int(min(max_length_mm, width_mm) // n) if ok else 1, 0, -1):
             d = make(n * k, h)

@@ -578,7 +578,8 @@ def diagram_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
 
     r = sc.layout.diagrams
     d = fit_diagrams(analysis.mech, analysis.cycle, r.width, r.height,
-                     max_length_mm=DIAGRAM_LENGTH_MAX, max_height_mm=DIAGRAM_HEIGHT_MAX)
+                     max_length_mm=DIAGRAM_LENGTH_MAX, max_height_mm=DIAGRAM_HEIGHT_MAX,
+                     solve_on=analysis.solve_on)
     return [diagrams_items(d, (r.x0, r.y0), r.width, r.height, lang, id="kin-diagrams")]
 
 

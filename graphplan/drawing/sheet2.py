@@ -525,7 +525,7 @@ def q_curves(analysis, n: int = 361):
     :func:`graphplan.forces.stroke_index`; over the crank angle, the crank's working arc;
     a four-stroke cycle: every stroke solid). Returns (curves, unit of s)."""
     from ..forces import cycle_travel, resistance_loads, stroke_index
-    from ..kinematics import in_working_stroke, link_coordinate, solve
+    from ..kinematics import in_working_stroke, link_coordinate
 
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
     if not mech.resistances:
@@ -534,7 +534,7 @@ def q_curves(analysis, n: int = 361):
     m = max(n, int(n * cycle.period / (2 * math.pi)))
     tau = np.linspace(0.0, cycle.period, m)
     phi = kin.phi[0] + sense * tau
-    fine = solve(mech, phi)
+    fine = analysis.solve_on(phi)  # solved once per grid (a fine turn of sheet 1's too)
     work = in_working_stroke(mech, cycle, np.mod(phi, 2 * math.pi))
     out = []
     common = _common_abscissa(mech, cycle)
@@ -689,7 +689,7 @@ def _qs_naming(analysis, names: list[str]) -> tuple[str, str, bool]:
     mech = analysis.mech
     res = mech.resistances[:len(names)]
     kinds = {r.kind for r in res}
-    drives = [load_drives(mech, analysis.cycle, n) for n in range(len(res))]
+    drives = [load_drives(mech, analysis.cycle, n, analysis.solve_on) for n in range(len(res))]
     moment = kinds == {"moment"}
     if len(kinds) > 1:
         return "qs_mixed", "Q", False

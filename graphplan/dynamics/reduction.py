@@ -82,7 +82,7 @@ RIM_SPEED_LIMIT = 40.0
 
 class Solved(Protocol):
     """What the dynamics reads of a solved variant (a :class:`graphplan.project.Project`):
-    the mechanism, its cycle and the kinematics of its positions."""
+    the mechanism, its cycle, the kinematics of its positions and of any grid."""
 
     @property
     def mech(self) -> Mechanism: ...
@@ -92,6 +92,10 @@ class Solved(Protocol):
 
     @property
     def cycle(self) -> Cycle: ...
+
+    def solve_on(self, phi) -> Kinematics:
+        """The exact kinematics at the crank angles ``phi``, solved once per grid."""
+        ...
 
 
 class DynamicsError(GraphplanError, ValueError):
@@ -342,7 +346,7 @@ def dynamic_model(analysis: Solved, grid: int | None = None, *,
     """Mс and Iп of a variant on the grid and at its positions (one kinematic sweep each)."""
     mech = analysis.mech
     mom = reduced_moment(analysis, grid, neglect_below=neglect_below)
-    inert = reduced_inertia(mech, solve(mech, mom.phi))
+    inert = reduced_inertia(mech, analysis.solve_on(mom.phi))  # sheet 1's diagrams' grid too
     s = DynamicsSettings.of(mech)
     return DynamicModel(mom, inert, reduced_inertia(mech, analysis.kin), mech.source,
                         s.delta, s.efficiency)

@@ -36,7 +36,14 @@ from .constructions import (
     unit_vector,
     velocity_plan,
 )
-from .diagrams import FINE, MIN_NODES, KinematicDiagrams, kinematic_diagrams, output_motion
+from .diagrams import (
+    FINE,
+    MIN_NODES,
+    KinematicDiagrams,
+    diagram_motion,
+    kinematic_diagrams,
+    output_motion,
+)
 from .forces import (
     ROOM_MM,
     SMALL_ANGLE_DEG,
@@ -81,6 +88,7 @@ __all__ = [
     "as_xy",
     "chain_plan",
     "crank_plan",
+    "diagram_motion",
     "discrepancy_pct",
     "force_conditioning",
     "force_plan",

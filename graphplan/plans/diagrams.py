@@ -131,16 +131,20 @@ class KinematicDiagrams:
         return len(self.node_deg) - 1
 
 
-def output_motion(mech: Mechanism, cycle: Cycle, travel) -> tuple[Array, Array, Array]:
+def output_motion(mech: Mechanism, cycle: Cycle, travel, solve_on=None
+                  ) -> tuple[Array, Array, Array]:
     """Exact ``(s, v, a)`` of the output link at crank travels ``travel`` (rad) from position 1.
 
     ``s = w·(q − q_start)``, ``v = w·q̇``, ``a = w·q̈`` (see the module docstring). For a
     rocker the angle's turn is fixed per value, ``s − 2π·round((s − ψ/2)/2π)``, so s
-    lies in [0, ψ] whatever the branch of the solver's unwrapping.
+    lies in [0, ψ] whatever the branch of the solver's unwrapping. ``solve_on(phi)``: the
+    project's kinematics of a grid (:meth:`graphplan.project.Project.solve_on`), solved
+    here by default.
     """
     travel = np.atleast_1d(np.asarray(travel, float))
     phi0, sense = _first(mech, cycle)
-    kin = solve(mech, phi0 + sense * travel)
+    phi = phi0 + sense * travel
+    kin = solve(mech, phi) if solve_on is None else solve_on(phi)
     kind, q, qd, _ = output_coordinate(mech, kin.pos, kin.vel)
     out = mech.output.link
     key = slide_key(out, mech.frame_link)
@@ -156,9 +160,22 @@ def output_motion(mech: Mechanism, cycle: Cycle, travel) -> tuple[Array, Array, 
     return s, w * np.asarray(qd, float), w * np.asarray(qdd, float)
 
 
+def diagram_motion(mech: Mechanism, cycle: Cycle, intervals: int, solve_on=None) -> tuple:
+    """The exact motion the chord method of ``intervals`` equal intervals reads: ``(s, v, a)``
+    on the fine grid, at the nodes and at the intervals' middles (rad from position 1). It
+    does not depend on the diagrams' size: :func:`kinematic_diagrams` tried at several sizes
+    takes it solved once (``solve_on``: as in :func:`output_motion`)."""
+    h = 2 * math.pi / intervals
+    nodes = np.arange(intervals + 1) * h
+    return (output_motion(mech, cycle, np.linspace(0.0, 2 * math.pi, FINE), solve_on),
+            output_motion(mech, cycle, nodes, solve_on),
+            output_motion(mech, cycle, nodes[:-1] + 0.5 * h, solve_on))
+
+
 def kinematic_diagrams(mech: Mechanism, cycle: Cycle, *, intervals: int | None = None,
                        length_mm: float = 240.0, height_mm: float = 50.0,
-                       reading_mm: float | None = None) -> KinematicDiagrams:
+                       reading_mm: float | None = None,
+                       motion: tuple | None = None) -> KinematicDiagrams:
     """Build the diagrams s, v, a and differentiate s by the method of chords.
 
     Parameters
@@ -169,6 +186,8 @@ def kinematic_diagrams(mech: Mechanism, cycle: Cycle, *, intervals: int | None =
         Equal intervals n of the chord method from the first position. Default: the
         positions' ``count`` if ≥ 12, else its smallest multiple ≥ 12 (8 → 16), so the
         main positions are nodes (extra positions such as "(2)" are not).
+    motion : tuple, optional
+        :func:`diagram_motion` of these intervals, where solved already.
     length_mm : float
         Abscissa length L of one turn, mm: ``Kφ = 2π/L``.
     height_mm : float
@@ -212,9 +231,8 @@ def kinematic_diagrams(mech: Mechanism, cycle: Cycle, *, intervals: int | None =
     fine = np.linspace(0.0, 2 * math.pi, FINE)
     nodes = np.arange(n + 1) * h
     mids = nodes[:-1] + 0.5 * h
-    s, v, a = output_motion(mech, cycle, fine)
-    s_node, _, a_node = output_motion(mech, cycle, nodes)
-    _, v_mid, _ = output_motion(mech, cycle, mids)
+    (s, v, a), (s_node, _, a_node), (_, v_mid, _) = (
+        diagram_motion(mech, cycle, n) if motion is None else motion)
 
     def span(*arrays):
         x = np.concatenate(arrays)

@@ -80,7 +80,8 @@ class Project:
         """Sheet 1's layout and scales Kl, Kv, Ka (on the variant's page)."""
         from .scales import sheet_scales
 
-        return sheet_scales(self.mech, self.kin, cycle=self.cycle, forces=self.forces)
+        return sheet_scales(self.mech, self.kin, cycle=self.cycle, forces=self.forces,
+                            fine=self.one_turn)
 
     def sheet1_on(self, page: Page) -> Sheet1Scales:
         """Sheet 1's layout and scales on another format than the variant's (solved once
@@ -90,14 +91,15 @@ class Project:
         if page.format == self._format:
             return self.sheet1
         return self.stage(("sheet1", page.format), lambda: sheet_scales(
-            self.mech, self.kin, page, cycle=self.cycle, forces=self.forces))
+            self.mech, self.kin, page, cycle=self.cycle, forces=self.forces, fine=self.one_turn))
 
     @cached_property
     def sheet2(self) -> Sheet2Scales:
         """Sheet 2's layout: the force plans' room, the lever's Kv (on the variant's page)."""
         from .scales import sheet2_scales
 
-        return sheet2_scales(self.mech, self.kin, self.forces, self.cycle, loads=self.loads)
+        return sheet2_scales(self.mech, self.kin, self.forces, self.cycle, loads=self.loads,
+                             fine=self.one_turn)
 
     def sheet2_on(self, page: Page) -> Sheet2Scales:
         """Sheet 2's layout on another format than the variant's (solved once per format)."""
@@ -106,7 +108,27 @@ class Project:
         if page.format == self._format:
             return self.sheet2
         return self.stage(("sheet2", page.format), lambda: sheet2_scales(
-            self.mech, self.kin, self.forces, self.cycle, page, loads=self.loads))
+            self.mech, self.kin, self.forces, self.cycle, page, loads=self.loads,
+            fine=self.one_turn))
+
+    def solve_on(self, phi) -> Kinematics:
+        """The exact kinematics at the crank angles ``phi`` (rad), solved once per grid: the
+        sheets' fine turns (the trajectories and slots, the load diagrams' abscissas) ask
+        for the same grids."""
+        import numpy as np
+
+        from ..kinematics import solve
+
+        phi = np.asarray(phi, float)
+        return self.stage(("solve", phi.tobytes()), lambda: solve(self.mech, phi))
+
+    @property
+    def one_turn(self) -> Kinematics:
+        """The kinematics over one turn from the first position (the trajectories, the
+        slots' ranges; :func:`graphplan.project.scales.one_turn`)."""
+        from .scales import one_turn_grid
+
+        return self.solve_on(one_turn_grid(self.kin))
 
     @property
     def _format(self) -> str:
@@ -170,16 +192,28 @@ class Project:
     def lever(self, k: int, page: Page | None = None) -> Lever:
         """Sheet 2's Zhukovsky lever of position k (its Kl, the lever's Kv), built once and
         compared with the force plans' Mур."""
-        from ..plans import zhukovsky_lever
-
         s2 = self.sheet2 if page is None else self.sheet2_on(page)
         kl = s2.kl
         assert kl is not None  # sheet2_scales sets it
         fmt = self._format if page is None else page.format
         kv = s2.lever_kv(self.kin, k)
-        return self.stage(("lever", k, fmt), lambda: zhukovsky_lever(
-            self.mech, self.kin, self.loads, k, kl, kv, reference=float(self.forces.M_bal[k]),
-            plan=self.velocity_plan_at(k, kl, kv)))
+        return self.stage(("lever", k, fmt), lambda: self.lever_at(
+            k, kl, kv, reference=float(self.forces.M_bal[k])))
+
+    def lever_at(self, k: int, kl: Scale, kv: Scale, precision: float = 0.0,
+                 reference: float | None = None) -> Lever:
+        """Zhukovsky's lever of position k at ``kl``, ``kv`` read at ``precision``, built once
+        (its velocity plan turned: :meth:`velocity_plan_at`), with its discrepancy against
+        ``reference`` (the force plans' Mур that the sheet or the table compares it with)."""
+        from ..plans import discrepancy_pct, zhukovsky_lever
+
+        lever = self.stage(("lever", k, kl.per_mm, kv.per_mm, precision), lambda: zhukovsky_lever(
+            self.mech, self.kin, self.loads, k, kl, kv, Reader(precision),
+            plan=self.velocity_plan_at(k, kl, kv, precision)))
+        if reference is None:
+            return lever
+        return replace(lever, reference=reference,
+                       discrepancy_pct=discrepancy_pct(reference, lever.M_bal))
 
     @cached_property
     def curve(self) -> MomentCurve:

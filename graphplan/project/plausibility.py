@@ -163,14 +163,17 @@ def _meant_to_resist(res: Resistance) -> bool:
     return _working_strokes_only(res)
 
 
-def load_work(mech: Mechanism, cycle: Cycle, n: int) -> tuple[float, float]:
+def load_work(mech: Mechanism, cycle: Cycle, n: int, solve_on=None) -> tuple[float, float]:
     """Work of load ``n`` over the cycle and ``∫|P|dt`` (J), by the trapezoid rule on
     :data:`WORK_GRID` intervals a turn of the exact kinematics: ``P = F·v`` of its point or
-    ``M·ω`` of its link, ``dt = dτ/|ω1|``."""
+    ``M·ω`` of its link, ``dt = dτ/|ω1|``. ``solve_on(phi)``: the project's kinematics of a
+    grid (:meth:`graphplan.project.Project.solve_on`: one solve for every load), solved here
+    by default."""
     res = mech.resistances[n]
     m = round(cycle.period / (2 * math.pi)) * WORK_GRID
     tau = np.linspace(0.0, cycle.period, m + 1)
-    kin = solve(mech, cycle.origin + mech.crank.sense * tau)
+    phi = cycle.origin + mech.crank.sense * tau
+    kin = solve(mech, phi) if solve_on is None else solve_on(phi)
     load = resistance_loads(mech, kin, cycle)[n]
     if isinstance(load, ForceLoad):
         power = np.einsum("ij,ij->i", load.vector, point_velocity(mech, kin, res.link, load.at))
@@ -182,12 +185,12 @@ def load_work(mech: Mechanism, cycle: Cycle, n: int) -> tuple[float, float]:
             float(np.sum(0.5 * (np.abs(power[1:]) + np.abs(power[:-1])) * dt)))
 
 
-def load_drives(mech: Mechanism, cycle: Cycle, n: int) -> bool:
+def load_drives(mech: Mechanism, cycle: Cycle, n: int, solve_on=None) -> bool:
     """Whether load ``n`` is a driving force (or moment) of the machine: it does positive
     work over the cycle, ``A = ∫ P dt > 0`` (:func:`load_work`) — the gas force of an
     engine, which resists on the compression stroke and drives on the expansion stroke,
-    drives; a compressor's or a pump's resists."""
-    work, scale = load_work(mech, cycle, n)
+    drives; a compressor's or a pump's resists (``solve_on``: as in :func:`load_work`)."""
+    work, scale = load_work(mech, cycle, n, solve_on)
     return work > WORK_MARGIN * scale
 
 

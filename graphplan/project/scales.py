@@ -98,8 +98,12 @@ def one_turn(mech: Mechanism, kin):
     """The kinematics over one turn from the first position, TRAJECTORY_POINTS steps."""
     from ..kinematics import solve
 
-    phi = kin.phi[0] + np.linspace(0.0, 2 * math.pi, TRAJECTORY_POINTS + 1)
-    return solve(mech, phi)
+    return solve(mech, one_turn_grid(kin))
+
+
+def one_turn_grid(kin) -> np.ndarray:
+    """The crank angles of :func:`one_turn` (rad)."""
+    return kin.phi[0] + np.linspace(0.0, 2 * math.pi, TRAJECTORY_POINTS + 1)
 
 
 def trajectories(mech: Mechanism, kin, fine=None) -> dict[str, np.ndarray]:
@@ -200,7 +204,7 @@ def acceleration_positions(mech: Mechanism, kin, cycle=None, forces=None) -> tup
 
 
 def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
-                 forces=None) -> Sheet1Scales:
+                 forces=None, fine=None) -> Sheet1Scales:
     """Choose Kl, Kv, Ka for sheet 1: Kl from the usual series (1, 2, 2.5, 4, 5 × 10^k),
     Kv and Ka from :data:`graphplan.units.PLAN_SERIES`.
 
@@ -211,15 +215,16 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
     :func:`acceleration_positions` so that both are as large as they can be; then the
     largest plan of each kind fits its cell, construction lines included, and no vector is
     longer than VECTOR_MAX. ``cycle`` and ``forces``: the project's, for the positions of
-    the force analysis (solved here when not given).
+    the force analysis (solved here when not given); ``fine``: its :func:`one_turn`.
     """
     page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
-    return _sheet_scales(mech, kin, page, cycle, forces)
+    return _sheet_scales(mech, kin, page, cycle, forces, fine)
 
 
-def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None) -> Sheet1Scales:
+def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
+                  fine=None) -> Sheet1Scales:
     fixed = mech.settings.get("drawing", {})
-    fine = one_turn(mech, kin)
+    fine = one_turn(mech, kin) if fine is None else fine
     paths = trajectories(mech, kin, fine)
     slots = slot_ranges(mech, fine)
     f = page.frame
@@ -474,9 +479,9 @@ def plan_units(mech: Mechanism, kin, forces, loads, k: int, kl: Scale
 
 
 def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
-                  loads=None) -> Sheet2Scales:
+                  loads=None, fine=None) -> Sheet2Scales:
     """Positions, cells, plan room and Kl of sheet 2 (see :mod:`graphplan.drawing.sheet2`);
-    ``loads``: the project's (computed here when not given)."""
+    ``loads``, ``fine`` (:func:`one_turn`): the project's (solved here when not given)."""
     from ..forces import compute_loads
     from .layout import _column_widths
 
@@ -517,7 +522,7 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
             room = min(room, (cell.width - fs.pad_w) / max(uw, 1e-9),
                        (cell.height - fs.pad_h) / max(uh, 1e-9))
         rooms.append(max(room, 20.0))
-    slots = slot_ranges(mech, one_turn(mech, kin)) if any(
+    slots = slot_ranges(mech, one_turn(mech, kin) if fine is None else fine) if any(
         key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
     return Sheet2Scales(positions, lay.rows, tuple(rooms), kls[0], kls[-1], lay, slots, wanted,
                         kls)

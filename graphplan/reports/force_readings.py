@@ -21,7 +21,6 @@ from ..plans import (
     Reader,
     force_conditioning,
     force_plans,
-    zhukovsky_lever,
 )
 from ..project import Analysis
 from ..units import Scale
@@ -168,11 +167,9 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
         ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm, memo=memo)
         dr = force_plans(mech, kin, forces, loads, k, sc.kl, draft, s2.room_mm, memo=memo)
         kv = s2.lever_kv(kin, k)
-        # the lever is its velocity plan turned: the plan built once at these scales
-        lx = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, EXACT, reference=ex[-1].M_bal,
-                             plan=analysis.velocity_plan_at(k, sc.kl, kv))
-        ld = zhukovsky_lever(mech, kin, loads, k, sc.kl, kv, draft, reference=dr[-1].M_bal,
-                             plan=analysis.velocity_plan_at(k, sc.kl, kv, prec))
+        # the lever built once at these scales (sheet 2's where its Kl is sheet 1's)
+        lx = analysis.lever_at(k, sc.kl, kv, reference=ex[-1].M_bal)
+        ld = analysis.lever_at(k, sc.kl, kv, prec, reference=dr[-1].M_bal)
         # the bounds of the plans built here (only the probes are built there); exact
         # readings have no reading error to bound
         cond = (force_conditioning(mech, kin, forces, loads, k, sc.kl, kv, prec, s2.room_mm,
