@@ -63,7 +63,7 @@ _LETTER = "A-Za-zА-Яа-яЁёΑ-Ωα-ω"
 #: M, A, P, J, F, n, and a single lower-case or Greek index only after K (the scales).
 _SUBSCRIPT = re.compile(
     rf"(?<![{_LETTER}0-9])(?:"
-    r"(?P<s1>[vahlKJ])(?P<i1>[A-Z][A-Z0-9]{0,3})"
+    r"(?P<s1>[vahlKJs])(?P<i1>[A-Z][A-Z0-9]{0,3})"
     r"|(?P<s2>[MAPJFn])(?P<i2>[а-яё]+(?:\.[а-яё]+)?)"
     r"|(?P<s3>[RFGMmhωεφψSPTJnva])(?P<i3>[0-9]{1,3})"
     r"|(?P<s4>K)(?P<i4>[a-zφ])"

@@ -320,3 +320,28 @@ def test_the_table_of_the_plans_keeps_every_column_on_a1(drawn, solved, path):
     # the table stays left of the title block, inside the frame
     xs = [it.p0[0] for it in iter_leaves(sheet.items) if (it.id or "").startswith("plans-table-v")]
     assert max(xs) <= sheet.page.title_block_rect.x0 and min(xs) >= sheet.page.frame.x0
+
+
+def test_both_pistons_of_a_two_cylinder_machine_are_numbered_in_every_position(drawn, solved):
+    """DEFECTS.md: the compressor's piston C was drawn in its 12 positions but only B's were
+    numbered (B0…B11). Every slider on a frame guide has its positions numbered: the letters
+    of the plan of positions name C0…C11 as they name B0…B11 (coincident ones written
+    together, "C1, C5")."""
+    a, sheet = solved("compressor"), drawn("compressor", 1)
+    texts = " , ".join(it.text for it in iter_leaves(sheet.items) if isinstance(it, Text)
+                       and (it.id or "").startswith("pp-label"))
+    named = set(re.findall(r"\b([BC])(\d+)\b", texts))
+    for p in "BC":
+        assert {(p, lab) for lab in a.kin.labels} <= named, (p, sorted(named))
+
+
+@pytest.mark.parametrize("name, index", [("compressor", "B"), ("press", "B"), ("fourbar", "3")])
+def test_the_diagrams_name_the_point_or_link_they_show(drawn, name, index):
+    """DEFECTS.md: a two-piston machine's s, v, a diagrams did not say which piston. The
+    ordinates are lettered with the output's index: sB, vB, aB of the piston B (the output
+    the variant names), ψ3, ω3, ε3 of a rocker 3."""
+    sheet = drawn(name, 1)
+    texts = {it.text for it in iter_leaves(sheet.all_items()) if isinstance(it, Text)}
+    symbols = ("s", "v", "a") if index.isalpha() else ("ψ", "ω", "ε")
+    for sym in symbols:
+        assert any(t.startswith(f"{sym}{index}, ") for t in texts), (sym, sorted(texts)[:20])

@@ -217,7 +217,7 @@ def diagrams_items(d: KinematicDiagrams, origin, width_mm: float, height_mm: flo
         ch.triangle(360.0 + 6 * x_per_mm, 0.0, ARROW_MM, "right")
         ch.triangle(0.0, tip, ARROW_MM, "up")
         ch.text(360.0 + 7 * x_per_mm, 1.0 * K, "φ", TEXT_H, "left", "bottom")
-        label = f"{names[k]}, {units[k]}"
+        label = f"{names[k]}{d.output.replace('_', '')}, {units[k]}"
         ch.text(2.5 * x_per_mm, tip, label, TEXT_H, "left", "center")
         unit = f"({units[k]})" if "/" in units[k] else units[k]
         scale = f"K{names[k]} = {plain(K, 4)} {unit}/{t['mm']}" + (

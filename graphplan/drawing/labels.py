@@ -215,7 +215,8 @@ def _label_boxes(centres, r: LabelRequest) -> np.ndarray:
 def _leader_spot(r: LabelRequest, dirs, half, start: float, stop: float, placed, obst_tree,
                  keep_tree, layer: str, ident: str):
     """A spot between ``start`` and ``stop`` mm from the anchor whose text and leader cross
-    no line, no placed text and no kept-out area: ``(text, box, leader)`` or None."""
+    no line, no placed text and no kept-out area (the leader neither): ``(text, box,
+    leader)`` or None."""
     from shapely.geometry import LineString, Point
 
     ring = start
@@ -241,6 +242,8 @@ def _leader_spot(r: LabelRequest, dirs, half, start: float, stop: float, placed,
             line = LineString([tuple(a), (b.x, b.y)])
             if line.length < 1.0 or any(line.intersects(p) for p in placed):
                 continue
+            if keep_tree is not None and len(keep_tree.query(line, predicate="intersects")):
+                continue  # a leader through a kept-out area (a caption) crosses its text
             return t, box, line
         ring += 2.0
     return None

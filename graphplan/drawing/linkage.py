@@ -202,11 +202,16 @@ def turning_arrow(c: Pt, r: float, start_deg: float, sweep_deg: float, ccw: bool
                   3.0, 1.0, layer=layer, id=f"{ident}-head")]
 
 
-def _support(c: Pt, ident: str) -> list[Item]:
-    """Fixed pivot of the frame: a triangle under the joint and a hatched base."""
+SUPPORT_DROP = 8.0  #: height of a fixed pivot's triangle, from the joint to its base, mm
+
+
+def _support(c: Pt, ident: str, drop: float = SUPPORT_DROP) -> list[Item]:
+    """Fixed pivot of the frame: a triangle under the joint and a hatched base ``drop`` mm
+    below it (more than SUPPORT_DROP under a crank shorter than its base: clear of its pins)."""
     x, y = c
-    tri = ((x, y), (x - 5.0, y + 8.0), (x + 5.0, y + 8.0))
-    base = ((x - 8.0, y + 8.0), (x + 8.0, y + 8.0), (x + 8.0, y + 11.0), (x - 8.0, y + 11.0))
+    tri = ((x, y), (x - 5.0, y + drop), (x + 5.0, y + drop))
+    base = ((x - 8.0, y + drop), (x + 8.0, y + drop), (x + 8.0, y + drop + 3.0),
+            (x - 8.0, y + drop + 3.0))
     return [Polyline(tri, THIN, True, layer="position_plan", id=f"{ident}-tri"),
             Line(base[0], base[1], MAIN, layer="position_plan", id=f"{ident}-base"),
             Hatch(base, 2.0, 45.0, layer="position_plan", id=f"{ident}-hatch"),

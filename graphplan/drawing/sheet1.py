@@ -16,7 +16,7 @@ import math
 import numpy as np
 from shapely.geometry import Polygon
 
-from ..kinematics import output_coordinate
+from ..kinematics import link_coordinate, output_coordinate
 from ..plans import Plan
 from ..project import (
     CAPTION,
@@ -29,6 +29,7 @@ from .labels import LabelRequest, place_labels
 from .linkage import (
     JOINT_R,
     SLIDER,
+    SUPPORT_DROP,
     _joints,
     _Paper,
     _slider_block,
@@ -124,7 +125,15 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     styles = _position_styles(analysis)
     paths = sc.paths
     assert paths is not None  # sheet_scales keeps the trajectories it measured
-    out_point = output_coordinate(mech, kin.pos)[3]
+    # numbered in every position: the crank pin, the output's point and the point of every
+    # other slider on a frame guide (the second piston of a two-cylinder machine)
+    numbered = [mech.crank.pin, output_coordinate(mech, kin.pos)[3]]
+    for key in kin.pos.guides:
+        slider, carrier = key.split("/")
+        if carrier == mech.frame_link:
+            p = link_coordinate(mech, slider, kin.pos)[3]
+            if p not in numbered:
+                numbered.append(p)
 
     # trajectories of the centres of mass (closed curves) and of the crank pin
     for name in sorted(centres | {mech.crank.pin}):
@@ -154,6 +163,16 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
         items.append(Line(strip[0], strip[1], MAIN, layer=L, id=f"pp-guide-{slider}-edge"))
         items.append(Hatch(strip, 2.0, 45.0, layer=L, id=f"pp-guide-{slider}-hatch"))
 
+    # the frame's supports under the links; the pivot of a crank whose pins' circle would
+    # cross its base (a base 16 mm wide, 3 mm deep: a crank under 15 mm) stands below them
+    ring = mech.crank.length / kl
+    low = ring + JOINT_R + 1.5 if ring < SUPPORT_DROP + 7.0 else SUPPORT_DROP
+    pivots: list[Item] = []  # the supports' joint circles, drawn over the links
+    for fp in mech.frame_points:
+        for it in _support(P(mech.frame_points[fp]), f"pp-support-{fp}",
+                           max(SUPPORT_DROP, low) if fp == mech.crank.pivot else SUPPORT_DROP):
+            (pivots if isinstance(it, Circle) else items).append(it)
+    joint_r = _joint_radii(mech, kin, P)
     # the links in every position; the main position (0) last, on top of the others
     for k in [*range(1, kin.n), 0]:
         st = styles[k]
@@ -165,7 +184,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                 items.append(Polyline(corners, Style(st.width, st.dasharray, fill="white"), True,
                                       layer=L, id=f"pp-{k}-slider-{key.replace('/', '-')}"))
         for p in _joints(mech):
-            items.append(Circle(P(kin.pos.points[p][k]), JOINT_R,
+            items.append(Circle(P(kin.pos.points[p][k]), JOINT_R if k == 0 else joint_r[p],
                                 Style(0.35 if st is not MAIN else 0.5, fill="white"),
                                 layer=L, id=f"pp-{k}-joint-{p}"))
         for c in sorted(centres):
@@ -173,7 +192,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                 items.append(Circle(P(kin.pos.points[c][k]), 0.8, Style(0.25, fill="black"),
                                     layer=L, id=f"pp-{k}-centre-{c}"))
         # position numbers at the crank pin and at the output point
-        for p in (mech.crank.pin, out_point):
+        for p in numbered:
             q = P(kin.pos.points[p][k])
             centre = P(pivot)
             away = math.degrees(math.atan2(-(q[1] - centre[1]), q[0] - centre[0]))
@@ -181,8 +200,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                                        else kin.labels[k], 3.5, group=f"num-{p}",
                                        prefer_deg=away))
 
-    for fp in mech.frame_points:
-        items += _support(P(mech.frame_points[fp]), f"pp-support-{fp}")
+    items += pivots
     items += _rotation_arrow(P(pivot), mech.crank, float(kin.phi[0]), kl)
     labels += _stroke_arcs(analysis, P(pivot), kl, lang, items)
     labels.insert(0, LabelRequest(_rotation_label_anchor(P(pivot), mech.crank, float(kin.phi[0]),
@@ -215,10 +233,35 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                              [page.graph26_rect.polygon(), *others], (col.x0, col.x1))
     margin = page.trim.polygon().buffer(500.0).difference(page.frame.polygon().buffer(-1.0))
     keep = [text_box(caption).buffer(1.0), page.graph26_rect.polygon(), margin, *others]
-    items += place_labels(labels, obstacles, layer=L, id_prefix="pp-label", merge_mm=1.2,
+    # a letter on a guide's hatching is read badly (the B2…B10 of a pump's slider stood on
+    # it): the hatching is a line to keep clear of, where the letters have room
+    hatched = [Polygon(it.polygon) for it in iter_leaves(items) if isinstance(it, Hatch)]
+    items += place_labels(labels, [*obstacles, *hatched], layer=L, id_prefix="pp-label",
+                          merge_mm=1.2,
                           keep_out=keep, leaders=60.0)
     items.append(caption)
     return items
+
+
+JOINT_R_LEAST = 0.6  #: the smallest circle of a joint in the other positions, mm
+
+
+def _joint_radii(mech, kin, P) -> dict[str, float]:
+    """The circle of each joint in the positions other than the first: JOINT_R, or less
+    where the joint's positions stand closer than 3.3·JOINT_R (a 6 mm crank's twelve pins,
+    3.2 mm apart, drew overlapping circles — a blob): 0.3 of the median distance from a
+    position to the nearest other one that does not coincide with it (a slider's positions
+    bunched at a dead centre leave the rest their circles), never under JOINT_R_LEAST."""
+    out = {}
+    for p in _joints(mech):
+        q = np.array([P(kin.pos.points[p][k]) for k in range(kin.n)])
+        d = np.hypot(*(q[:, None, :] - q[None, :, :]).transpose(2, 0, 1))
+        d[d <= 0.05] = np.inf
+        near = d.min(axis=1)
+        near = near[np.isfinite(near)]
+        out[p] = (float(np.clip(0.3 * np.median(near), JOINT_R_LEAST, JOINT_R)) if near.size
+                  else JOINT_R)
+    return out
 
 
 def _clear_caption(box: Rect, text: str, h: float, obstacles, avoid,

@@ -124,6 +124,8 @@ class KinematicDiagrams:
     H2: float
     v_error: float
     a_error: float
+    output: str = ""  #: the index of s, v, a: the slider's point on its guide (B), or ψ, ω, ε:
+    #: the rocker's link (3) — which of two pistons the diagrams show
 
     @property
     def intervals(self) -> int:
@@ -271,7 +273,21 @@ def kinematic_diagrams(mech: Mechanism, cycle: Cycle, *, intervals: int | None =
         a_chords=a_ch, a_exact_node=a_node,
         length_mm=float(length_mm), height_mm=float(height_mm),
         Kphi=Kphi, Ks=Ks, Kv=Kv, Ka=Ka, H1=H1, H2=H2, v_error=v_err, a_error=a_err,
+        output=_output_index(mech, cycle.output_kind),
     )
+
+
+def _output_index(mech: Mechanism, kind: str) -> str:
+    """The index the diagrams' symbols take: the output link's number for a rocker, the
+    point of the slider on its guide (as :func:`graphplan.kinematics.link_coordinate`
+    measures s) for a slider."""
+    out = mech.output.link
+    if kind == "rocker":
+        return out
+    for d in mech.dyads:
+        if out in d.links:
+            return d.new_points[0] if d.new_points else d.joints[0]
+    return mech.crank.pin
 
 
 def _first(mech: Mechanism, cycle: Cycle) -> tuple[float, float]:
