@@ -345,3 +345,17 @@ def test_the_diagrams_name_the_point_or_link_they_show(drawn, name, index):
     symbols = ("s", "v", "a") if index.isalpha() else ("ψ", "ω", "ε")
     for sym in symbols:
         assert any(t.startswith(f"{sym}{index}, ") for t in texts), (sym, sorted(texts)[:20])
+
+
+def test_a_four_stroke_cycle_has_no_idle_stroke_of_540_degrees(solved):
+    """DEFECTS.md (families): the engines' structural analysis read "φр.х = 180,0°, φх.х =
+    540,0° (рабочий и холостой ход)" — over a 720° cycle an engine has the expansion stroke
+    (180°) and three more strokes, no idle stroke of 540°. A cycle of two turns gives the
+    working stroke's angle in its cycle; a one-turn cycle (the press) keeps both arcs."""
+    from graphplan.drawing.sheet1 import structure_lines
+
+    engine = structure_lines(solved("engine"), "ru")
+    assert engine[-1] == "φр.х = 180,0° (рабочий ход) за цикл 720°"
+    assert not any("φх.х" in line for line in engine)
+    assert structure_lines(solved("press"), "ru")[-1] == (
+        "φр.х = 180,0°, φх.х = 180,0° (рабочий и холостой ход)")

@@ -469,12 +469,14 @@ STRUCTURE_WORDS = {
            "group": "группа Ассура II класса {order}-го порядка {kind}-го вида",
            "stroke": "H = {v} м (ход звена {link})", "swing": "ψ = {v}° (размах звена {link})",
            "arcs": "φр.х = {w}°, φх.х = {i}° (рабочий и холостой ход)",
+           "cycle": "φр.х = {w}° (рабочий ход) за цикл {c}°",
            "ratio": "K = {k}", "mech": "механизм II класса"},
     "en": {"title": "Structural analysis", "formula": "Formula of structure",
            "group": "class II group, order {order}, kind {kind}",
            "stroke": "H = {v} m (stroke of link {link})",
            "swing": "ψ = {v}° (swing of link {link})",
            "arcs": "φw = {w}°, φi = {i}° (working and idle strokes)",
+           "cycle": "φw = {w}° (the working stroke) in a {c}° cycle",
            "ratio": "K = {k}", "mech": "a class II mechanism"},
 }
 
@@ -484,7 +486,8 @@ def structure_lines(analysis, lang: str) -> list[str]:
     """The structural analysis as sheet 1 writes it: Chebyshev's W = 3n − 2p5 − p4, the
     formula of structure, each Assur group (class, order, kind), the stroke H of a sliding
     output or the swing ψ of a rocking one with the time ratio K, and the crank angles of
-    the working and idle strokes."""
+    the working and idle strokes (over a cycle of two turns, the working stroke's angle in
+    the cycle: a four-stroke engine has no idle stroke of 540°)."""
     from ..numbers import decimal_comma
 
     w = STRUCTURE_WORDS[lang]
@@ -502,8 +505,12 @@ def structure_lines(analysis, lang: str) -> list[str]:
     if cy.dead_centres:
         first += ", " + w["ratio"].format(k=f"{cy.time_ratio:.3f}")
         turn = math.degrees(cy.working_turn)
-        lines += [first, w["arcs"].format(w=f"{turn:.1f}",
-                                          i=f"{math.degrees(cy.period) - turn:.1f}")]
+        period = math.degrees(cy.period)
+        if cy.period > 2 * math.pi + 1e-9:  # a four-stroke engine: no idle 540° stroke
+            arcs = w["cycle"].format(w=f"{turn:.1f}", c=f"{period:.0f}")
+        else:
+            arcs = w["arcs"].format(w=f"{turn:.1f}", i=f"{period - turn:.1f}")
+        lines += [first, arcs]
     else:
         lines.append(first)
     return [decimal_comma(x) if lang == "ru" else x for x in lines]
