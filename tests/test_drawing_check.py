@@ -72,7 +72,7 @@ def test_graphplans_own_sheet_is_right(request, sheets, ex, fmt):
         request.applymarker(pytest.mark.xfail(strict=True, reason=OWN_SHEET_TODO[ex]))
     dc = check_drawing(sheets / ex / f"sheet1.{fmt}", EX / f"{ex}.toml", lang="en")
     rep = dc.report
-    assert rep.ok, _wrong(rep)
+    assert rep.ok, _wrong(rep)  # the plan of all positions too (test_drawing_check_positions)
     # every plan the sheet draws is found, under its caption, and measured
     import re
 
@@ -86,14 +86,6 @@ def test_graphplans_own_sheet_is_right(request, sheets, ex, fmt):
     assert len(drawn) >= 6 and kinds == drawn
     assert len(rep.figures) > 4 * len(drawn)
     assert all(f.verdict != "wrong" for f in rep.figures)
-    # the plan of all positions: every position's numbered pin and its joints read, and
-    # nothing off, not even inaccurate (tests/test_drawing_check_positions.py)
-    pp = [j for j in dc.plans if j.found.kind == "positions"]
-    assert len(pp) == 1
-    found = pp[0].found
-    assert set(found.pins) == set(dc.ref.labels)
-    assert len(found.joints) == len(found.expected) - len(found.pins)
-    assert [f.explanation for f in pp[0].findings if f.verdict != "ok"] == []
 
 
 def test_dxf_and_svg_read_alike(sheets):
@@ -382,19 +374,18 @@ def test_student_file_names_its_drawing(tmp_path, capsys):
     assert "work.drawing: drawing" in capsys.readouterr().err
 
 
-# Left: names the sheet itself sets nearer another force's line than its own (fourbar,
-# written to sheet 2's owner in /work/coord/DEFECTS.md), and two short forces the reader
-# does not yet take whole (a stub under 1 mm with its head, a name by a shorter neighbour):
+# Left: names the sheet itself sets away from their own lines, nearer another force's
+# (written to sheet 2's owner in /work/coord/DEFECTS.md); reading them by the construction
+# would also take back a student's swapped names in such a cluster:
 FORCE_TODO = {
-    "fourbar": "positions 3 and 10: Rτ43 written beside R43's line, G2/Pи2/G3 under a "
-               "cluster of collinear arrows drawn over each other",
-    "offset_slider": "position 4: Rτ12 (2.4 mm) read at its 4.7 mm neighbour",
-    "crusher": "position 4: G5 (5.0 mm) drawn on one line with G4 (0.4 mm), its name "
-               "10 mm under the cluster: read as the line of both (5.6 mm); in the DXF also "
-               "R12's names read at another line",
-    # since Kp comes from the plans' finer series (sheet2, session 8) the engine's and the
-    # pump's plans are read right; the shaper's Pи5 grew from under 2 mm (a footnote) to a
-    # 3.6 mm arrow, read 3.0 mm (its 3 mm head), and Rn34's name at (9) is read at R45's line
+    "fourbar": "position 3, group 2-3: G2, Pи2, G3 drawn over each other on one vertical "
+               "line, their names under the cluster: Pи2 read at G3's line",
+    "crusher": "position 4: group 4-5's G5 (3.3 mm) on one line with G4, its name 10 mm "
+               "under the cluster; since the finer Kp series also h21 read longer than "
+               "OA (false 'geometry')",
+    # since Kp comes from the plans' finer series (sheet2, session 8): the shaper's Pи5
+    # grew from under 2 mm (a footnote) to a 3.6 mm arrow, read 3.0 mm (its 3 mm head),
+    # and Rn34's name at (9) is read at R45's line
     "shaper": "positions a, b: Pи5 (3.6 mm, a 3 mm head) read 3.0 mm; position 9: Rn34's "
               "name read at R45's line",
 }
@@ -423,9 +414,12 @@ def test_force_plans_of_every_example_are_read(request, tmp_path, ex, fmt):
     the names along their lines (short forces crowded out of their middles, names on
     leaders, a vector drawn over a shorter one), each with the Kp of its caption and the
     position its row's scheme names; no false alarm, and most forces read right.
-    Measured over the twelve examples' DXF: 237 of 258 force figures ok (the rest not
-    compared — forces too short to draw — or inaccurate; 4 wrong, in FORCE_TODO), was
-    198 of 235; false findings 47 → 4."""
+    Measured over the twelve examples' DXF (sheet 2 as drawn now): 226 of 244 force
+    figures ok (the rest not compared — forces too short to draw — or inaccurate); false
+    findings 10 → 6, all on the two sheets of FORCE_TODO (names the sheet sets away from
+    their lines): a text naming forces on converging lines split among them, two names
+    each nearer the other's line of one length exchanged, a stub of a force shorter than
+    its head carrying the polygon on within a millimetre."""
     from graphplan.checking.checks import reference_for
 
     todo = FORCE_TODO.get(ex) or FORCE_TODO.get(f"{ex}-{fmt}")

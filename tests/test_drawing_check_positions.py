@@ -35,6 +35,28 @@ def _sheet1_dxf(ex: str, folder: Path) -> Path:
     return path
 
 
+@pytest.mark.parametrize("fmt", ["dxf", "svg"])
+@pytest.mark.parametrize("ex", EXAMPLES)
+def test_graphplans_own_plan_of_positions(tmp_path, ex, fmt):
+    """graphplan's own sheet 1 of every example (DXF, SVG; the PDF: test_drawing_check_pdf
+    compares it with the SVG): the plan of all positions found, every position's numbered
+    pin and its joints read, and nothing off, not even inaccurate."""
+    from graphplan.checking.checks import reference_for
+    from graphplan.drawing import kinematics_sheet
+    from graphplan.render import sheet_files
+
+    ref = reference_for(EX / f"{ex}.toml")
+    content = sheet_files({"sheet1": kinematics_sheet(ref.analysis, lang="ru")},
+                          (fmt,))[f"sheet1.{fmt}"]
+    path = tmp_path / f"sheet1.{fmt}"
+    path.write_bytes(content) if isinstance(content, bytes) else path.write_text(
+        content, encoding="utf-8")
+    j = _positions(check_drawing(path, EX / f"{ex}.toml", lang="en"))
+    assert set(j.found.pins) == set(ref.labels)
+    assert len(j.found.joints) == len(j.found.expected) - len(j.found.pins)
+    assert [f.explanation for f in j.findings if f.verdict != "ok"] == []
+
+
 def _positions(dc):
     found = [j for j in dc.plans if j.found.kind == "positions"]
     assert len(found) == 1, [j.found.kind for j in dc.plans]

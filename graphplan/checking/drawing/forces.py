@@ -316,19 +316,25 @@ def _closure(forces: dict[str, DrawnForce], unnamed=()) -> float | None:
         return None
     ends = [p for f in lines for p in (f.start, f.end)]
 
-    def at(p, q) -> bool:
-        return math.hypot(p[0] - q[0], p[1] - q[1]) < 0.5
+    def at(p, q, tol: float = 0.5) -> bool:
+        return math.hypot(p[0] - q[0], p[1] - q[1]) < tol
 
+    # a force shorter than its arrowhead is drawn as a stub whose ends stand within about
+    # a millimetre (twice the reading) of the polygon's corners, not on them
+    stub = 1.0
     for a, b in ((loose[0], loose[1]), (loose[1], loose[0])):
         left = [f for f in unnamed if f.length > 0]
         end = a
         for _ in range(3):
-            nxt = next((f for f in left if at(f.start, end) or at(f.end, end)), None)
+            nxt = min((f for f in left if at(f.start, end, stub) or at(f.end, end, stub)),
+                      key=lambda f: min(math.dist(f.start, end), math.dist(f.end, end)),
+                      default=None)
             if nxt is None:
                 break
             left.remove(nxt)
-            end = nxt.end if at(nxt.start, end) else nxt.start
-            if at(end, b):
+            end = nxt.end if math.dist(nxt.start, end) <= math.dist(nxt.end, end) \
+                else nxt.start
+            if at(end, b, stub):
                 return 0.0
             if any(at(end, p) for p in ends):
                 return None

@@ -190,6 +190,13 @@ def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> No
         f = fp.forces[names[0]]
         if misfit(names, f) <= 1.0 or not f.options:
             held.add(f.segments)
+            continue
+        # a text naming forces drawn on nearly one line (``Rn12, R12, R23`` beside three
+        # lines converging): a name that fits the line keeps it, the others choose
+        stay = [n for n in names if misfit([n], f) <= 1.0]
+        if stay and len(names) > 1:
+            held.add(f.segments)
+            loose += [[n] for n in names if n not in stay]
         else:
             loose.append(names)
     choices = []
@@ -211,6 +218,36 @@ def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> No
             fp.forces[name] = DrawnForce(name, o.start, o.end, o.sense, o.segments,
                                          (f, *[x for x in f.options if x is not o]))
         changed = True
+    # two names each nearer the other's line (a crowded polygon): exchanged when each then
+    # fits its line and together they fit better — the pair's best, not one name's
+    for names in loose:
+        f = fp.forces[names[0]]
+        if misfit(names, f) <= 1.0:
+            continue
+        for o in f.options:
+            other = [n for n, g in fp.forces.items() if g.segments == o.segments and
+                     n not in names]
+            if not other or any(fp.forces[n].segments != o.segments for n in other):
+                continue
+            # only lines their lengths do not tell apart (converging, a few degrees
+            # apart): names swapped between lines of other lengths are the student's
+            band = max(tol.segment * min(f.length, o.length), tol.reading_mm)
+            turn = abs(_angle_error(f, np.subtract(o.end, o.start)))
+            if abs(f.length - o.length) > band or min(turn, abs(180.0 - turn)) > 15.0:
+                continue
+            if misfit(names, o) <= 1.0 and misfit(other, f) <= 1.0 and \
+                    misfit(names, o) + misfit(other, f) < misfit(names, f) + misfit(other, o):
+                for n in names:
+                    g = fp.forces[n]
+                    fp.forces[n] = DrawnForce(n, o.start, o.end, o.sense, o.segments,
+                                              (g, *[x for x in g.options if x is not o]))
+                for n in other:
+                    g = fp.forces[n]
+                    fp.forces[n] = DrawnForce(n, f.start, f.end, f.sense, f.segments,
+                                              (g, *[x for x in g.options
+                                                    if x.segments != f.segments]))
+                changed = True
+                break
     if changed:
         fp.closure_mm = _closure(fp.forces, fp.unnamed)
 

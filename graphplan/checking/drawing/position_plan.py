@@ -110,8 +110,74 @@ def revolute_joints(mech) -> list[str]:
 
 
 def _hinges(scene: Scene) -> np.ndarray:
+    """The drawn joints, ``(x, y, r)`` rows: circles of a hinge's size, and closed round
+    loops of curve pieces of that size (a PDF draws a circle as four Bézier arcs)."""
+    got = getattr(scene, "_pp_hinges", None)
+    if got is not None:
+        return got
     cs = [(c.x, c.y, c.r) for c in scene.drawing.circles if HINGE_R[0] <= c.r <= HINGE_R[1]]
-    return np.array(cs, float).reshape(-1, 3)
+    # a reader that gives a circle also as its curve pieces (DXF) counts it once
+    loops = _round_loops([s for s in scene.drawing.segments if s.curve and s.length < 2.0])
+    left = list(cs)
+    for lp in loops:
+        twin = next((c for c in left if math.hypot(c[0] - lp[0], c[1] - lp[1]) < 0.2 and
+                     abs(c[2] - lp[2]) < 0.2), None)
+        if twin is not None:
+            left.remove(twin)
+        else:
+            cs.append(lp)
+    out = np.array(cs, float).reshape(-1, 3)
+    scene._pp_hinges = out  # type: ignore[attr-defined]
+    return out
+
+
+def _round_loops(segs) -> list[tuple[float, float, float]]:
+    """Circles drawn as closed chains of short curve pieces: each chain whose every end
+    meets one other, its points all at one distance (within 5 %) from their middle."""
+    key = {}
+    parent: list[int] = []
+
+    def node(x: float, y: float) -> int:
+        k = (round(x, 2), round(y, 2))
+        if k not in key:
+            key[k] = len(parent)
+            parent.append(len(parent))
+        return key[k]
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    ends = []
+    for s in segs:
+        a, b = node(s.x1, s.y1), node(s.x2, s.y2)
+        ends.append((a, b))
+        parent[find(a)] = find(b)
+    groups: dict[int, list[int]] = {}
+    for i, (a, _b) in enumerate(ends):
+        groups.setdefault(find(a), []).append(i)
+    out = []
+    for idx in groups.values():
+        if len(idx) < 4:
+            continue
+        deg: dict[int, int] = {}
+        for i in idx:
+            for n in ends[i]:
+                deg[n] = deg.get(n, 0) + 1
+        # one loop: every end meets one other; the same circle drawn twice (two
+        # positions' joints at one place): every end meets three
+        many = set(deg.values())
+        if len(many) != 1 or min(many) % 2:
+            continue
+        pts = np.array([(segs[i].x1, segs[i].y1) for i in idx])
+        c = pts.mean(axis=0)
+        r = np.hypot(pts[:, 0] - c[0], pts[:, 1] - c[1])
+        rm = float(r.mean())
+        if HINGE_R[0] <= rm <= HINGE_R[1] and float(r.max() - r.min()) <= 0.05 * rm:
+            out += [(float(c[0]), float(c[1]), rm)] * (min(many) // 2)
+    return out
 
 
 def _ends_on(scene: Scene, c) -> list[int]:
