@@ -172,7 +172,6 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
         for it in _support(P(mech.frame_points[fp]), f"pp-support-{fp}",
                            max(SUPPORT_DROP, low) if fp == mech.crank.pivot else SUPPORT_DROP):
             (pivots if isinstance(it, Circle) else items).append(it)
-    joint_r = _joint_radii(mech, kin, P)
     # the links in every position; the main position (0) last, on top of the others
     for k in [*range(1, kin.n), 0]:
         st = styles[k]
@@ -184,7 +183,7 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                 items.append(Polyline(corners, Style(st.width, st.dasharray, fill="white"), True,
                                       layer=L, id=f"pp-{k}-slider-{key.replace('/', '-')}"))
         for p in _joints(mech):
-            items.append(Circle(P(kin.pos.points[p][k]), JOINT_R if k == 0 else joint_r[p],
+            items.append(Circle(P(kin.pos.points[p][k]), JOINT_R,
                                 Style(0.35 if st is not MAIN else 0.5, fill="white"),
                                 layer=L, id=f"pp-{k}-joint-{p}"))
         for c in sorted(centres):
@@ -241,27 +240,6 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
                           keep_out=keep, leaders=60.0)
     items.append(caption)
     return items
-
-
-JOINT_R_LEAST = 0.6  #: the smallest circle of a joint in the other positions, mm
-
-
-def _joint_radii(mech, kin, P) -> dict[str, float]:
-    """The circle of each joint in the positions other than the first: JOINT_R, or less
-    where the joint's positions stand closer than 3.3·JOINT_R (a 6 mm crank's twelve pins,
-    3.2 mm apart, drew overlapping circles — a blob): 0.3 of the median distance from a
-    position to the nearest other one that does not coincide with it (a slider's positions
-    bunched at a dead centre leave the rest their circles), never under JOINT_R_LEAST."""
-    out = {}
-    for p in _joints(mech):
-        q = np.array([P(kin.pos.points[p][k]) for k in range(kin.n)])
-        d = np.hypot(*(q[:, None, :] - q[None, :, :]).transpose(2, 0, 1))
-        d[d <= 0.05] = np.inf
-        near = d.min(axis=1)
-        near = near[np.isfinite(near)]
-        out[p] = (float(np.clip(0.3 * np.median(near), JOINT_R_LEAST, JOINT_R)) if near.size
-                  else JOINT_R)
-    return out
 
 
 def _clear_caption(box: Rect, text: str, h: float, obstacles, avoid,
