@@ -92,17 +92,16 @@ def test_graphplans_own_pdf_checks_as_its_svg(own, ex):
         assert Counter((j.found.kind, j.position) for j in pdf.plans) == Counter(
             (j.found.kind, j.position) for j in svg.plans), sheet
         a, b = _verdicts(pdf.report), _verdicts(svg.report)
-        if not svg.report.ok:
+        if svg.report.ok:
+            assert a == b, (sheet, a - b, b - a)
+        else:
             # where the SVG's reading of a crowded plan errs (FORCE_TODO of
             # test_drawing_check), the PDF's glyph-exact places may tip it right: no
-            # finding of the PDF's that the SVG has not, everything else the same
+            # wrong finding the SVG has not, and as many figures right
             wrong = Counter(k for k in b.elements() if k[2] == "wrong")
             assert not Counter(k for k in a.elements() if k[2] == "wrong") - wrong, sheet
-            a = Counter({k: n for k, n in a.items() if (k[0], k[1]) not in {
-                (w[0], w[1]) for w in wrong}})
-            b = Counter({k: n for k, n in b.items() if (k[0], k[1]) not in {
-                (w[0], w[1]) for w in wrong}})
-        assert a == b, (sheet, a - b, b - a)
+            ok = [sum(f.verdict == "ok" for f in r.report.figures) for r in (pdf, svg)]
+            assert ok[0] >= ok[1], sheet
         if sheet == "sheet2":
             assert [j for j in pdf.plans if j.found.kind == "force" and j.scale]
             assert any(f.quantity == "h21" and f.verdict == "ok" for f in pdf.report.figures)

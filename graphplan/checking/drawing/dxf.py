@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 from pathlib import Path
 
 from .primitives import MAX_DEPTH, Collector, Drawing, DrawingError, read_bytes, text_centre
@@ -186,7 +187,9 @@ class _Reader:
     def _mtext(self, e, layer: str) -> None:
         k = self.k
         try:
-            lines = [ln for ln in e.plain_text(split=True) if ln.strip()]
+            from ezdxf.tools.text import plain_mtext
+
+            lines = [ln for ln in plain_mtext(unstack(e.text), split=True) if ln.strip()]
         except Exception:
             lines = [e.dxf.get("text", "")]
         h = e.dxf.get("char_height", 2.5) * k
@@ -209,4 +212,20 @@ class _Reader:
             self.col.text(ln, x, y, h, rot, self.colour(e), layer)
 
 
-__all__ = ["INSUNITS_MM", "read_dxf"]
+_STACK = re.compile(r"\\S([^;]*?)(\^ ?|/|#)([^;]*);")
+
+
+def unstack(mtext: str) -> str:
+    """MTEXT with its stacked texts (``\\S…;``) written on one line: an index stacked
+    under nothing or under a superscript (``R\\S^ 12;``, ``R\\Sτ^ 43;``: how AutoCAD's and
+    КОМПАС's editors write R₁₂ and R^τ₄₃) as the letters in a row (``R12``, ``Rτ43``); a
+    fraction ``\\S1/2;`` or ``\\S1#2;`` as ``1/2``. (ezdxf's plain text reads the caret of
+    ``^ 12`` as DXF's caret escape.)"""
+    def one(m: re.Match) -> str:
+        up, kind, low = m.group(1), m.group(2), m.group(3)
+        return f"{up}{low}" if kind.startswith("^") else f"{up}/{low}"
+
+    return _STACK.sub(one, mtext)
+
+
+__all__ = ["INSUNITS_MM", "read_dxf", "unstack"]

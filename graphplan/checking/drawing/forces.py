@@ -38,6 +38,29 @@ def is_force_name(name: str) -> bool:
     return bool(_FORCE.match(fold(name)))
 
 
+_TANGENTIAL = re.compile(r"R\^?[tτ](\d\d)")
+_NORMAL = re.compile(r"R\^?[nⁿ](\d\d)")
+_INERTIA = re.compile(r"(?:P|F|Ф)\^?(?:и|u|in)(\d{1,2})")
+
+
+def canonical_name(name: str) -> str:
+    """A force's name as graphplan writes it, from the ways students write it: ``Rt43``,
+    ``R^t43`` → ``Rτ43``; ``R^n12`` → ``Rn12``; ``Fи3``, ``Фи3``, ``Pu3``, ``Pin3`` →
+    ``Pи3`` (the calculation's vocabulary knows graphplan's names only)."""
+    f = fold(name)
+    if m := _TANGENTIAL.fullmatch(f):
+        return f"Rτ{m[1]}"
+    if m := _NORMAL.fullmatch(f):
+        return f"Rn{m[1]}"
+    if m := _INERTIA.fullmatch(f):
+        return f"Pи{m[1]}"
+    return name
+
+
+def _names(text: str) -> list[str]:
+    return [canonical_name(n) for n in split_names(text)]
+
+
 @dataclass(slots=True)
 class DrawnForce:
     """A force's line on the drawing: its ends (mm, the tip second when an arrowhead
@@ -123,6 +146,7 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
     half_w = 0.35 * t.height * len(t.text)
     reach = 3.0 * t.height + half_w + 2.0
     out: list[tuple[float, int]] = []
+    whole: dict[int, tuple[float, float, float, float]] = {}
     for i, s in enumerate(scene.segments):
         if s.length < min_len:
             continue
@@ -139,10 +163,16 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
             continue
         # a force's name is written beside the middle of its line: along a long line,
         # beside its middle part; a short line's name (crowded out) within a few letters
-        # of its middle, from the text's box
-        L2 = s.length ** 2
-        along = ((t.x - s.x1) * (s.x2 - s.x1) + (t.y - s.y1) * (s.y2 - s.y1)) / L2
-        mx, my = (s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2
+        # of its middle, from the text's box. The line is taken whole: a line split into
+        # pieces (a polyline through its middle) has its name by its pieces' ends
+        if i not in whole:
+            _segs, na, nb = _whole_line(scene, i)
+            whole[i] = (scene.nodes[na].x, scene.nodes[na].y, scene.nodes[nb].x,
+                        scene.nodes[nb].y)
+        x1, y1, x2, y2 = whole[i]
+        L2 = max((x2 - x1) ** 2 + (y2 - y1) ** 2, 1e-12)
+        along = ((t.x - x1) * (x2 - x1) + (t.y - y1) * (y2 - y1)) / L2
+        mx, my = (x1 + x2) / 2, (y1 + y2) / 2
         mid_box = math.hypot(max(abs(mx - t.x) - half_w, 0.0),
                              max(abs(my - t.y) - 0.5 * t.height, 0.0))
         if abs(along - 0.5) > 0.4 and mid_box > 3.0 * t.height:
@@ -198,7 +228,7 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
     texts = []
     leaders = scene.leader_lines(_is_forces, slack=0.4)  # a sheared italic's corner
     for ti, t in enumerate(scene.drawing.texts):
-        names = split_names(t.text)
+        names = _names(t.text)
         if not names or not all(is_force_name(n) for n in names):
             continue
         near = _lines_near(scene, t, min_len=0.8)
@@ -255,7 +285,7 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
 
 
 def _is_forces(text: str) -> bool:
-    names = split_names(text)
+    names = _names(text)
     return bool(names) and all(is_force_name(n) for n in names)
 
 

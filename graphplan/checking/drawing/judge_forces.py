@@ -132,6 +132,7 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
               f"{num(ae % 360, 'ru', 4)}° ({num(err, 'ru', 3)}°).")
         j.findings.append(_finding(j.key, pos, f"∠{name}", "direction", err, 0.0, "°", en, ru,
                                    lang, verdict))
+    j.findings += _missing(fp, ref, vocab, k, pos, j.key, lang)
     size = max((f.length for f in fp.forces.values()), default=0.0)
     distinct = {f.segments for f in fp.forces.values()}
     if fp.closure_mm is not None and len(distinct) >= 3 and \
@@ -143,6 +144,41 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
             f"многоугольник сил не замкнут: его концы в {num(fp.closure_mm, 'ru', 3)} мм "
             "друг от друга (сумма сил группы в равновесии равна нулю).", lang))
     return j
+
+
+MISSING_MM = 3.0
+"""A force of the group's polygon at least this long (mm at the plan's Kp) must be drawn."""
+
+
+def _missing(fp: FoundForcePlan, ref, vocab, k: int, pos: str, key: str, lang: str):
+    """A force left out of the polygon: graphplan's plan of the group the drawn forces
+    belong to (the one sharing most of their names) has a force of its polygon of
+    :data:`MISSING_MM` or more at the plan's Kp that is neither named on the drawing nor
+    drawn as an arrow of its length whose name was not read."""
+    def qkey(name: str):
+        q = vocab.lookup(f"{name}_mm")
+        return q.key if q is not None else name
+
+    drawn = {qkey(n) for n in fp.forces}
+    best = max(ref.analysis.force_plans(k), key=lambda p: len(drawn & {qkey(q) for q, _a, _b in
+                                                p.polygons["group"]}), default=None)
+    if best is None:
+        return []
+    out = []
+    for name, _a, _b in best.polygons["group"]:
+        if qkey(name) in drawn:
+            continue
+        e = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
+        if e is None or e < MISSING_MM or any(abs(u.length - e) <= max(0.3, 0.03 * e)
+                                              for u in fp.unnamed):
+            continue
+        out.append(_finding(
+            key, pos, f"{name}_mm", "missing", 0.0, e, "mm",
+            f"{name} ({num(e, 'en', 3)} mm at this Kp) is not in the force polygon: a force "
+            "of the group left out (the polygon then closes with wrong reactions).",
+            f"{name} ({num(e, 'ru', 3)} мм при этом Kp) нет в многоугольнике сил: сила "
+            "группы пропущена (многоугольник замыкают неверные реакции).", lang))
+    return out
 
 
 SHORT_MM = 2.0

@@ -409,6 +409,9 @@ pen for it to continue the text: nearer than a word's gap plus a space."""
 JOIN_ACROSS = 0.45
 """How far (em) off the text's baseline a character continuing it may sit: a subscript
 (graphplan's: 0.7 of the size, 0.22 em down) or a superscript."""
+STACK_BACK = 0.75
+"""How far back (em of the text so far) a smaller character may start: under the script
+before it."""
 SPACE_GAP = 0.16
 """A gap along the baseline wider than this (em) between two characters is a space: PDF
 writers (Typst among them) often place words without a space character between them."""
@@ -419,40 +422,42 @@ def _texts(glyphs: list[_Glyph], col: Collector) -> None:
 
     A character continues the text before it (in the order they are shown) when it runs
     the same way (within 2°), is 0.45–1.6 times its size, starts within
-    :data:`JOIN_ALONG` of its pen and within :data:`JOIN_ACROSS` of its baseline — so a
-    subscript shown smaller and lower (``R`` then ``12``) is one text ``R12``, and a
-    label written glyph by glyph is one text. A gap wider than :data:`SPACE_GAP` is a
-    space. Each text's centre is the middle of its first character's origin and its
-    last one's advance, half a capital height (0.72 em) above the baseline."""
-    runs: list[list] = []  # [chars, first glyph, pen x, pen y, size, colour]
+    :data:`JOIN_ALONG` of its pen (the farthest any of its characters reaches) and within
+    :data:`JOIN_ACROSS` of its baseline — so a subscript shown smaller and lower (``R``
+    then ``12``) is one text ``R12``, and a label written glyph by glyph is one text. A
+    smaller character may start under the one before, up to :data:`STACK_BACK` of the
+    size back (a subscript set under a superscript: ``Rτ43`` as R^τ_43). A gap wider
+    than :data:`SPACE_GAP` is a space. Each text's centre is the middle of its first
+    character's origin and its pen, half a capital height (0.72 em) above the baseline."""
+    runs: list[list] = []  # [chars, first glyph, pen (along the first's baseline), size]
     for g in glyphs:
         r = runs[-1] if runs else None
         if r is not None:
-            f = r[1]
-            size = r[4]
-            along = (g.x - r[2]) * f.ux + (g.y - r[3]) * f.uy
+            f, pen, size = r[1], r[2], r[3]
+            at = (g.x - f.x) * f.ux + (g.y - f.y) * f.uy
+            along = at - pen
             across = (g.x - f.x) * f.nx + (g.y - f.y) * f.ny
+            back = STACK_BACK if g.size < 0.85 * size else -JOIN_ALONG[0]
             if g.ux * f.ux + g.uy * f.uy > math.cos(math.radians(2.0)) and \
                     0.45 * size <= g.size <= 1.6 * size and \
-                    JOIN_ALONG[0] * size <= along <= JOIN_ALONG[1] * size and \
+                    -back * size <= along <= JOIN_ALONG[1] * size and \
                     abs(across) <= JOIN_ACROSS * size:
                 if along > SPACE_GAP * min(size, g.size) and r[0][-1] != " " and \
                         g.char[:1] != " ":
                     r[0].append(" ")
                 r[0].append(g.char)
-                r[2], r[3] = g.ex, g.ey
-                r[4] = max(size, g.size)
+                r[2] = max(pen, (g.ex - f.x) * f.ux + (g.ey - f.y) * f.uy)
+                r[3] = max(size, g.size)
                 continue
-        runs.append([[g.char], g, g.ex, g.ey, g.size, g.colour])
-    for chars, f, px, py, size, colour in runs:
+        runs.append([[g.char], g, (g.ex - g.x) * g.ux + (g.ey - g.y) * g.uy, g.size])
+    for chars, f, pen, size in runs:
         text = " ".join("".join(chars).split())
         if not text:
             continue
-        length = (px - f.x) * f.ux + (py - f.y) * f.uy
         cap = 0.72 * size
-        cx = f.x + 0.5 * length * f.ux + 0.5 * cap * f.nx
-        cy = f.y + 0.5 * length * f.uy + 0.5 * cap * f.ny
-        col.text(text, cx, cy, cap, math.degrees(math.atan2(f.uy, f.ux)), colour)
+        cx = f.x + 0.5 * pen * f.ux + 0.5 * cap * f.nx
+        cy = f.y + 0.5 * pen * f.uy + 0.5 * cap * f.ny
+        col.text(text, cx, cy, cap, math.degrees(math.atan2(f.uy, f.ux)), f.colour)
 
 
 __all__ = ["read_pdf"]
