@@ -300,6 +300,19 @@ def _dxf(plans, path: Path, origin: np.ndarray, inches: bool, leaders: float = 0
     doc.saveas(path)
 
 
+def mpl_page(width: float, height: float):
+    """A matplotlib figure of ``width`` × ``height`` mm whose one axes draws in page mm
+    (no margin, no axis): the page of a student's PDF. Returns (figure, axes)."""
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(width / 25.4, height / 25.4))
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, width)
+    ax.set_ylim(0, height)
+    ax.set_axis_off()
+    return fig, ax
+
+
 def _pdf(plans, path: Path) -> None:
     import matplotlib
 
@@ -313,11 +326,7 @@ def _pdf(plans, path: Path) -> None:
         # the page: A2 landscape (mm), or larger when the plans need it
         W = max(594.0, max(float(q[0]) for q in placed) + 60.0)
         H = max(420.0, max(float(q[1]) for q in placed) + 40.0)
-        fig = plt.figure(figsize=(W / 25.4, H / 25.4))
-        ax = fig.add_axes((0, 0, 1, 1))
-        ax.set_xlim(0, W)
-        ax.set_ylim(0, H)
-        ax.set_axis_off()
+        fig, ax = mpl_page(W, H)
         pt = 72 / 25.4
         for (kind, lab, sym, written, pts, segs, lines), c in _cells(plans):
             pole = "p" if kind == "velocity" else "π"
@@ -358,4 +367,4 @@ def _pdf(plans, path: Path) -> None:
         plt.close(fig)
 
 
-__all__ = ["Plant", "student_sheet"]
+__all__ = ["Plant", "mpl_page", "student_sheet"]

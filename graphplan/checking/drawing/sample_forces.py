@@ -482,6 +482,8 @@ def _dxf(cells, path: Path, origin: np.ndarray, inches: bool) -> None:
 def _pdf(cells, path: Path) -> None:
     import matplotlib
 
+    from .sample import mpl_page
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.backends.backend_pdf import PdfPages
@@ -493,11 +495,7 @@ def _pdf(cells, path: Path) -> None:
                                                       np.array(p.extent()[2:]))]
         W = max(594.0, max(float(q[0]) for q in corners) + 40.0)
         H = max(420.0, max(float(q[1]) for q in corners) + 40.0)
-        fig = plt.figure(figsize=(W / 25.4, H / 25.4))
-        ax = fig.add_axes((0, 0, 1, 1))
-        ax.set_xlim(0, W)
-        ax.set_ylim(0, H)
-        ax.set_axis_off()
+        fig, ax = mpl_page(W, H)
         pt = 72 / 25.4
         for n, (p, c) in enumerate(cells):
             x0, _y0, _x1, y1 = p.extent(lines=False)
