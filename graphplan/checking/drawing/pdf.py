@@ -304,6 +304,8 @@ class _Page:
                 k = math.sqrt(abs(m[0] * m[3] - m[1] * m[2]))
                 for pts, cl in zip(sub, closed, strict=False):
                     tp = [_pt(m, x, y) for x, y in pts]
+                    if curve and len(tp) >= 12:
+                        _circle(tp, self.col, stroke)
                     if op in ("S", "s", "B", "B*", "b", "b*"):
                         self.col.polyline(tp, cl, stroke, width * k, "", len(pts) > 2 and curve)
                     if op in ("f", "F", "f*", "B", "B*", "b", "b*") and len(tp) >= 3 and \
@@ -364,6 +366,20 @@ class _Page:
         res = x.get("/Resources")
         res = res.get_object() if res is not None else resources
         self.run(x, res, depth + 1, _m(mat, ctm))
+
+
+def _circle(pts, col: Collector, colour: str) -> None:
+    """A closed curve whose points are all as far from their middle (to 2 %): a circle
+    (PDF has none: writers draw one as four Bézier arcs), kept as the SVG and DXF readers
+    keep theirs — a joint, a pivot."""
+    (x0, y0), (x1, y1) = pts[0], pts[-1]
+    cx = sum(p[0] for p in pts[:-1]) / (len(pts) - 1)
+    cy = sum(p[1] for p in pts[:-1]) / (len(pts) - 1)
+    rs = [math.hypot(p[0] - cx, p[1] - cy) for p in pts]
+    r = sum(rs) / len(rs)
+    if 0.1 <= r <= 100.0 and math.hypot(x1 - x0, y1 - y0) <= 0.02 * r and \
+            max(abs(q - r) for q in rs) <= 0.02 * r:
+        col.circle(cx, cy, r, colour)
 
 
 def _pypdf_texts(page, col: Collector, base) -> None:

@@ -346,9 +346,9 @@ def _parts(name: str) -> tuple[str, str, str]:
 def _dxf_name(name: str, i: int) -> tuple[str, bool]:
     """The name as a CAD user writes it (``i`` picks the way), and whether it is MTEXT."""
     head, sup, idx = _parts(name)
-    if head == "P" and sup == "и" and i % 2:
-        head = "F"  # Fи3: the force of inertia, as some write it
     way = i % 3
+    if head == "P" and sup == "и" and way != 1:
+        head = "F"  # Fи3: the force of inertia, as some write it
     if not idx and not sup:
         return name, False
     if way == 0:  # the index stacked, as AutoCAD's and КОМПАС's text editors write it
