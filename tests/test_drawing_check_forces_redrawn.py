@@ -36,8 +36,6 @@ REDRAW_TODO: dict[tuple[str, str], str] = {
                         "other (graphplan's own sheet too: FORCE_TODO)",
     ("fourbar", "pdf"): "position 3: G2, Pи2, G3 on one vertical line, drawn over each "
                         "other (graphplan's own sheet too: FORCE_TODO)",
-    ("pump", "pdf"): "position 8: the polygon read 2 mm open (graphplan's own sheet too: "
-                     "FORCE_TODO)",
     ("sixbar_press", "dxf"): "position a, group 2-3: R42's name read at a neighbouring "
                              "line (77.6 mm for 73.3)",
 }
