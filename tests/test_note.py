@@ -153,17 +153,22 @@ def _edit(path: Path, out: Path, old: str, new: str) -> None:
 
 def test_a_slip_planted_in_the_note_is_found(press, capsys, tmp_path):
     note, path = press
+    # position (2)'s Mур: R21 read off its force plan (141,31 mm at Kp = 3000 Н/мм = 423930 Н),
+    # 423930∙37,39∙0,001 = 15850,7 ≈ 15851 Нм; the student writes its digits 8 and 5 swapped
     line = next(b.text for b in note.blocks if isinstance(b, Formula)
-                and b.text.startswith("Мур = R21∙h21∙Кl = 423920"))
-    # 423920∙37,39∙0,001 = 15850 Нм; the student writes 15580
-    slipped = line.replace("= 15850 Нм", "= 15580 Нм")
-    assert slipped != line
+                and b.text.startswith("Мур = R21∙h21∙Кl = ") and "∙37,39∙" in b.text)
+    result = re.search(r"= (\d+) Нм$", line)
+    assert result is not None, line
+    right = result.group(1)
+    wrong = right[0] + right[2] + right[1] + right[3:]
+    assert wrong != right and abs(int(wrong) - int(right)) > 0.01 * int(right)
+    slipped = line[:result.start(1)] + wrong + line[result.end(1):]
     _edit(path, path.parent / "slip.docx", line, slipped)
     (tmp_path / "slip.docx").write_bytes((path.parent / "slip.docx").read_bytes())
     report = _check_json(path.parent / "slip.docx", capsys)
     assert report["summary"]["findings"] >= 1
-    hit = [f for f in report["findings"] if "15580" in f.get("line", "") or
-           f.get("stated") == 15580]
+    hit = [f for f in report["findings"] if wrong in f.get("line", "") or
+           f.get("stated") == int(wrong)]
     assert hit, report["findings"]
 
 

@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import graphplan.checking.checks as checks
 import graphplan.cli
 import graphplan.drawing
 import graphplan.outputs
@@ -207,11 +208,14 @@ def test_the_report_and_the_lessons_solve_each_stage_once(command, count_stages,
     assert solved["velocity_plan"] >= 1 and solved["force_plans"] >= 1
 
 
-def test_checking_students_solves_each_variant_once(count_stages, tmp_path):
+def test_checking_students_solves_each_variant_once(count_stages, tmp_path, monkeypatch):
     """``graphplan check`` of several students' files (in this process; a class folder is
     checked by bounded workers, each its own process): the students of one variant are
     checked against one solved project (the hand-written engine works: correct and with
     carried mistakes)."""
+    # a fresh process's cache of solved variants: another test of this worker may have
+    # checked the engine already, and its reference would then be solved 0 times here
+    monkeypatch.setattr(checks, "_REFERENCES", {})
     work = tmp_path / "class"
     work.mkdir()
     for name in ("engine_ok.toml", "engine_faults.toml"):
