@@ -92,6 +92,13 @@ def _label(name: str) -> str:
     return name.replace("_", "")
 
 
+def _arm_label(name: str) -> str:
+    """The letter of a lever's arm ``h_<force>``: hG2, hPи3; h(F'Mи2) where the force's
+    own name has a stroke (hF'Mи2 would read as h with the index F)."""
+    force = name.removeprefix("h_")
+    return f"h({force})" if "'" in force else f"h{force}"
+
+
 # ------------------------------------------------------------------ plan of positions
 
 
@@ -340,7 +347,7 @@ PLAN_LAYERS = {"velocity": "velocity_plan", "acceleration": "acceleration_plan",
 
 def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
                segment_labels: bool = False, rename: dict[str, str] | None = None,
-               leaders: float = 0.0, keep_out=()) -> list[Item]:
+               leaders: float = 0.0, keep_out=(), arm_labels: bool = False) -> list[Item]:
     """A plan centred in its cell, with its caption and letters.
 
     Any construction with ``kind``, ``points`` and ``steps`` is drawn: velocity and
@@ -348,7 +355,9 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
     vector is also named at its middle (a force plan names its forces, not only its
     vertices); ``rename`` writes some of them otherwise (a force too short to see with its
     value, sheet 2); ``leaders`` as in :func:`graphplan.drawing.labels.place_labels`;
-    ``keep_out``: more areas its letters must not enter. The letters of the mechanism's
+    ``keep_out``: more areas its letters must not enter; ``arm_labels``: the arms (the
+    lever's h of each force, thin lines from the pole) named too, by their far part
+    (sheet 2). The letters of the mechanism's
     points are placed first, those of the construction's own points (the ends of the
     normal and Coriolis components, n… and k…) after them, in the room left.
     """
@@ -391,6 +400,11 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
                               rename.get(name, _label(name)), 3.5,
                               group=f"{ident}-seg" if name not in rename else f"{ident}-{name}")
                  for name, e in named.items()]
+    arms = [LabelRequest(to((e.start[0] + 0.7 * (e.end[0] - e.start[0]),
+                             e.start[1] + 0.7 * (e.end[1] - e.start[1]))),
+                         _arm_label(e.name), 3.5, group=f"{ident}-arm")
+            for e in elems if arm_labels and e.kind == "segment" and e.role == "arm"
+            and math.dist(e.start, e.end) > 1e-9]
     obstacles = [g for it in items
                  if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     inner = Polygon([(cell.x0, cell.y0), (cell.x1, cell.y0), (cell.x1, cell.y1),
@@ -402,6 +416,16 @@ def plan_items(plan: Plan, cell: Rect, caption: str, ident: str, *,
         keep.append(inner.buffer(500.0).difference(inner))
     items += place_labels(reqs, obstacles, layer=layer, id_prefix=f"{ident}-t", merge_mm=1.0,
                           keep_out=keep, leaders=leaders)
+    if arms:  # the arms' letters in the room the plan's own leave, each by its arm or none
+        taken = [g for it in items
+                 if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
+        taken += [text_box(it).buffer(0.3) for it in iter_leaves(items) if isinstance(it, Text)]
+        for it in place_labels(arms, taken, layer=layer, id_prefix=f"{ident}-h", merge_mm=1.0,
+                               keep_out=keep):
+            box = text_box(it) if isinstance(it, Text) else None
+            if box is not None and not any(box.intersects(g) for g in taken):
+                items.append(it)
+                taken.append(box.buffer(0.3))
     items.append(cap)
     return items
 

@@ -349,11 +349,13 @@ def _lowest(geoms) -> float:
 def _bottom_lines(lines: list[str], cell: Rect, ident: str, below: float) -> list[Text]:
     """``lines`` at the bottom of ``cell``, under the figure (whose lowest point is
     ``below``): the last lines that fit there (the results last, so kept first)."""
-    room = len(lines) if below == -math.inf else int((cell.y1 - 1.0 - (below + 1.5)) // EQ_PITCH)
+    # the last baseline 2.5 mm over the cell's foot: the subscripts and descenders of
+    # «Rτ12 = 86,9 Н» keep 1.5 mm from the caption of the cell below
+    room = len(lines) if below == -math.inf else int((cell.y1 - 2.0 - (below + 1.5)) // EQ_PITCH)
     keep = lines[-room:] if room > 0 else []
     out = []
     for n, line in enumerate(keep):
-        y = cell.y1 - 1.5 - EQ_PITCH * (len(keep) - 1 - n)
+        y = cell.y1 - 2.5 - EQ_PITCH * (len(keep) - 1 - n)
         out.append(Text((cell.x0 + 2.0, y), line, EQ_H, layer="text", id=f"{ident}{n + 1}"))
     return out
 
@@ -395,13 +397,16 @@ def _outside(cell: Rect):
     return cell.polygon().buffer(400.0).difference(cell.polygon().buffer(-0.5))
 
 
-def _plan_items(plan, cell: Rect, captions, ident: str, rename) -> list[Item]:
-    """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named),
-    its caption the first of ``captions`` that fits the cell."""
+def _plan_items(plan, cell: Rect, captions, ident: str, rename, arms: bool = False
+                ) -> list[Item]:
+    """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named;
+    with ``arms`` the lever's arms h too), its caption the first of ``captions`` that fits
+    the cell."""
     caption = _caption(cell, captions, f"{ident}-caption")
     items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename,
                        leaders=LEADERS, keep_out=[_outside(cell),
-                                                  text_box(caption).buffer(0.5)])
+                                                  text_box(caption).buffer(0.5)],
+                       arm_labels=arms)
     return [it for it in items if it.id != f"{ident}-caption"] + [caption]
 
 
@@ -477,7 +482,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
         pos = f"{w['pos']} {kin.labels[k]}"
         items += _plan_items(lever, cells[-1], (f"{w['lever']}, {pos}, {kv}",
                                                 f"{w['lever_short']}, {pos}, {kv}"),
-                             f"{ident}-lever", {})
+                             f"{ident}-lever", {}, arms=True)
         items += ill_mark_items(lever, cells[-1], f"{ident}-lever", lang)
         crank = plans[-1]
         assert crank.M_bal is not None  # the crank's plan has Mур
