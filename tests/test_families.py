@@ -457,29 +457,46 @@ def test_a_load_drives_when_it_does_positive_work_over_the_cycle(analyses, name,
                                                                  rel=1e-4)
 
 
-def test_a_four_stroke_cycle_gives_phi_over_720_degrees_on_every_table(analyses):
-    """docs/variant-format.md: 'φ of a position is given in [0°, 720°)'. The engine's
-    positions start at ВМТ, φ = 90°, every 30° over two turns: position 12 is φ = 450°
-    (the expansion stroke's ВМТ), not 90° again (the intake's); position 14 is 510°."""
+def test_a_four_stroke_cycle_gives_the_cycle_angle_on_every_table(analyses):
+    """docs/variant-format.md: φ of a position of a 720° cycle is the cycle angle, the crank's
+    travel from the first position, 0 … 720°. The engine's positions start at ВМТ of intake
+    (O→A at 90°), every 30° over two turns: position 12 is φ = 360° (the expansion stroke's
+    ВМТ), not 90° again; position 14 is 420° — where the angle of O→A modulo 720° read 90,
+    120 … 690, 0, 30, 60 (a jump in the middle of the table). Every table gives it from one
+    function: sheet 1's plans table, sheet 2's force table, the Markdown reports, the text
+    report of ``analyze`` and sheet 3's table."""
     from graphplan.drawing import Text, iter_leaves, kinematics_sheet, kinetostatics_sheet
-    from graphplan.reports import forces_markdown, plans_markdown
+    from graphplan.reports import analysis_text, forces_markdown, plans_markdown, position_rows
 
     a = analyses["engine"]
-    want = {k: (90.0 + 30.0 * k) % 720.0 for k in range(24)}       # 90, 120 … 690, 0, 30, 60
-    assert [a.mech.positions.phi_deg(p) for p in a.kin.phi] == pytest.approx(list(want.values()))
+    want = {k: 30.0 * k for k in range(24)}                          # 0, 30 … 690
+    # the O→A angles are 90 + 30k (mod 360 each turn): the cycle angle is their travel
+    assert np.degrees(a.kin.phi - a.kin.phi[0]) % 720.0 == pytest.approx(list(want.values()))
+    assert math.degrees(a.kin.phi[0]) % 360.0 == pytest.approx(90.0)
     # sheet 1's table of the plans: the column φ; sheet 2's force table (position 14)
     for sheet, table, angles in ((kinematics_sheet, "plans-table-r", list(want.values())),
-                                 (kinetostatics_sheet, "s2-table-r", [510.0])):
+                                 (kinetostatics_sheet, "s2-table-r", [420.0])):
         cells = {it.id: it.text for it in iter_leaves(sheet(a).all_items())
                  if isinstance(it, Text) and (it.id or "").startswith(table)}
         column = [float(t) for i, t in sorted(cells.items()) if i.endswith("c2")
                   and i != f"{table}0c2"]
         assert sorted(column) == sorted(angles), (sheet.__name__, column)
-    assert "## Положение 14, φ = 510.00°" in forces_markdown(a, "ru", 0.0).splitlines()
-    assert "## Положение 12, φ = 450.00°" in plans_markdown(a, "ru", 0.0).splitlines()
-    # a one-turn cycle is unchanged: the angle of O→A in [0°, 360°)
+    assert "## Положение 14, φ = 420.00°" in forces_markdown(a, "ru", 0.0).splitlines()
+    assert "## Положение 12, φ = 360.00°" in plans_markdown(a, "ru", 0.0).splitlines()
+    # the text report of `analyze`: the first table's φ column, rows 0 … 23
+    text = analysis_text(a).splitlines()
+    head = next(n for n, ln in enumerate(text) if ln.split()[:2] == ["pos.", "φ,"])
+    rows = [ln.split() for ln in text[head + 2:head + 26]]
+    assert [r[0] for r in rows] == list(a.kin.labels)
+    assert [float(r[1]) for r in rows] == pytest.approx(list(want.values()))
+    # sheet 3's table gives the same angles
+    assert a.unit is not None
+    assert [float(r[1]) for r in position_rows(a.unit)] == pytest.approx(list(want.values()))
+    # a one-turn cycle is unchanged: the angle of O→A in [0°, 360°), on sheet 3 as in the text
     press = analyze(load(ROOT / "examples" / "press.toml"))
-    assert all(0.0 <= press.mech.positions.phi_deg(p) < 360.0 for p in press.kin.phi)
+    assert press.unit is not None
+    got = [float(r[1]) for r in position_rows(press.unit)]
+    assert got == pytest.approx([math.degrees(p) % 360.0 for p in press.kin.phi], abs=0.06)
 
 
 def test_a_position_on_a_dead_centre_is_in_the_stroke_it_starts():

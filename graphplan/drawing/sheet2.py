@@ -31,6 +31,7 @@ import shapely
 from shapely.geometry import Point
 
 from ..forces import reaction_name
+from ..kinematics import position_angles_deg
 from ..model import russian_kind
 from ..numbers import fmt
 from ..project import (
@@ -487,7 +488,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
         crank = plans[-1]
         assert crank.M_bal is not None  # the crank's plan has Mур
         h21 = next(iter(crank.arms_mm.values()), float("nan"))
-        summary.append([kin.labels[k], f"{mech.positions.phi_deg(kin.phi[k]):.1f}",
+        summary.append([kin.labels[k], f"{position_angles_deg(mech, kin)[k]:.1f}",
                         fmt(plans[0].scale.per_mm)]
                        + [fmt(float(r.magnitude[k]) / 1000.0, 5)
                           for r in forces.reactions.values()]

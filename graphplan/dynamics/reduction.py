@@ -68,7 +68,7 @@ from numpy.typing import NDArray
 
 from ..errors import GraphplanError, InputError
 from ..forces import compute_loads, cycle_travel, load_breaks, load_power, solve_forces
-from ..kinematics import Cycle, Kinematics, solve
+from ..kinematics import Cycle, Kinematics, first_position_phi, solve
 from ..model import Mechanism
 from .settings import GRID, DynamicsSettings
 
@@ -205,10 +205,7 @@ class DynamicModel:
 
 def _first(mech: Mechanism, analysis: Solved) -> tuple[float, float]:
     """Absolute angle of the first position (rad) and the sense of rotation (±1)."""
-    first = str(mech.positions.number_from)
-    labels = analysis.kin.labels
-    k = labels.index(first) if first in labels else 0
-    return float(analysis.kin.phi[k]), mech.crank.sense
+    return first_position_phi(mech, analysis.kin), mech.crank.sense
 
 
 def _grid(mech: Mechanism, grid: int | None) -> int:

@@ -21,7 +21,7 @@ from .cycle import (
     sweep,
     travel_fraction,
 )
-from .exact import Kinematics, solve
+from .exact import Kinematics, cycle_angle_deg, first_position_phi, position_angles_deg, solve
 from .positions import (
     PositionState,
     arg,
@@ -70,11 +70,14 @@ __all__ = [
     "coriolis",
     "csine",
     "csolve2",
+    "cycle_angle_deg",
+    "first_position_phi",
     "guide_line",
     "in_working_stroke",
     "link_coordinate",
     "output_coordinate",
     "place_point",
+    "position_angles_deg",
     "rigid_acceleration",
     "rigid_velocity",
     "slide_key",

@@ -7,6 +7,7 @@ Units: m, m/s, m/s², rad, rad/s, rad/s²; angles CCW positive from +x.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -70,6 +71,49 @@ class Kinematics:
                 name: float(s[k]) for name, s in self.vel.conditioning.items()
             },
         }
+
+
+def cycle_angle_deg(phi, phi_first: float, sense: float, period: float):
+    """A position's angle φ as every table, sheet and report gives it, degrees.
+
+    Over a one-turn cycle (``period`` = 2π) it is the crank's angle, the absolute angle of
+    O→A counter-clockwise from +x, in [0°, 360°). Over a four-stroke cycle (4π) it is the
+    **cycle angle**, the crank's travel from the first position in the sense of rotation,
+    ``(sense·(φ − φ_first)) mod 720°`` in [0°, 720°) — as the engine books count it from the
+    ВМТ of intake, where the angle of O→A modulo 720° would read 90 … 690, 0, 30, 60.
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Absolute crank angles, rad (they may run over two turns).
+    phi_first : float
+        The first position's absolute angle, rad (``positions.number_from``).
+    sense : float
+        +1 for a counter-clockwise crank, −1 for a clockwise one.
+    period : float
+        The cycle, rad of crank travel (2π or 4π).
+    """
+    phi = np.asarray(phi, float)
+    if period > 2.0 * math.pi + 1e-9:
+        out = np.degrees(sense * (phi - phi_first)) % math.degrees(period)
+    else:
+        out = np.degrees(phi) % 360.0
+    out = np.where(np.isclose(out, math.degrees(period), rtol=0.0, atol=1e-9), 0.0, out)
+    return float(out) if out.ndim == 0 else out
+
+
+def position_angles_deg(mech: Mechanism, kin: Kinematics) -> Array:
+    """Each position's φ as the tables, sheets and reports give it (:func:`cycle_angle_deg`),
+    degrees; the first position is the one labelled ``positions.number_from``."""
+    return np.atleast_1d(cycle_angle_deg(kin.phi, first_position_phi(mech, kin),
+                                         mech.crank.sense, mech.positions.period))
+
+
+def first_position_phi(mech: Mechanism, kin: Kinematics) -> float:
+    """The absolute crank angle (rad) of the first position, the one labelled
+    ``positions.number_from`` (the first solved position when there is none)."""
+    first = str(mech.positions.number_from)
+    return float(kin.phi[kin.labels.index(first) if first in kin.labels else 0])
 
 
 def solve(mech: Mechanism, phi, labels=None) -> Kinematics:

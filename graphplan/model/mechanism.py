@@ -306,13 +306,6 @@ class Positions:
         """The cycle in radians of crank travel (2π or 4π)."""
         return math.radians(self.cycle)
 
-    def phi_deg(self, phi: float) -> float:
-        """A position's crank angle φ (rad) as the tables and sheets give it: degrees in
-        [0°, 360°), or [0°, 720°) for a four-stroke cycle, whose positions' φ run over two
-        turns (its positions 0 and 12 have one angle of O→A but lie on different strokes)."""
-        return math.degrees(float(phi)) % self.cycle
-
-
 @dataclass(frozen=True, slots=True)
 class Output:
     """The output link whose motion defines the stroke and the dead centres."""

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from ..kinematics import position_angles_deg
 from ..numbers import general, note_comma
 from .blocks import Arm, Block, Figure, Formula, Heading, Note, Paragraph, Table
 from .figures import sheet_part_svg, svg_png
@@ -194,6 +195,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     ref = os.path.relpath(variant.resolve(), Path(out_dir or ".").resolve())
     key = generate(variant, variant_ref=Path(ref).as_posix())
     labels = analysis.kin.labels
+    angles = position_angles_deg(analysis.mech, analysis.kin)
     prec = float(mech.settings.get("drawing", {}).get("reading_mm", 0.5))
     tb = mech.settings.get("title_block", {})
     blocks: list[Block] = []
@@ -234,7 +236,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     force_md = _position_sections(forces_markdown(analysis, lang, prec), lang)
     by_label = {p.label: p for p in key.positions}
     for k, label in enumerate(labels):
-        phi = analysis.mech.positions.phi_deg(analysis.kin.phi[k])
+        phi = float(angles[k])
         blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         gp = by_label.get(label)
@@ -261,7 +263,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
         lines = [ln for ln in gp.lines if _is_force_line(ln)] if gp is not None else []
         if gp is None or not lines:
             continue
-        phi = analysis.mech.positions.phi_deg(analysis.kin.phi[k])
+        phi = float(angles[k])
         blocks.append(Heading(note_comma(w["position"].format(label=label, phi=phi), lang),
                               3, position=label))
         blocks += [Paragraph(b.text) for b in force_md.get(label, [])

@@ -47,6 +47,7 @@ from ..forces import ForceLoad, point_velocity, resistance_loads, stroke_index
 from ..kinematics import (
     Cycle,
     analyse_cycle,
+    cycle_angle_deg,
     in_working_stroke,
     link_coordinate,
     solve,
@@ -288,8 +289,9 @@ def _twin_position_warnings(mech: Mechanism, cycle: Cycle):
             lab, oth = oth, lab
         if lab not in extra:
             continue
+        angle = cycle_angle_deg(float(cycle.phi[b]), float(cycle.phi[0]), mech.crank.sense, period)
         yield (f"{mech.source}: positions.extra[{extra[lab]}] ('{lab}'): φ = "
-               f"{mech.positions.phi_deg(float(cycle.phi[b])):.2f}°, the crank angle of "
+               f"{angle:.2f}°, the crank angle of "
                f"position '{oth}': the sheets would draw the same position twice; likely "
                f"fix: leave '{lab}' out (an extra position is needed only off the grid)")
 

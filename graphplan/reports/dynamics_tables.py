@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..dynamics import MachineUnit
+from ..kinematics import cycle_angle_deg
 from ..numbers import fmt
 
 T: dict[str, dict[str, Any]] = {
@@ -78,8 +79,8 @@ def position_rows(u: MachineUnit, lang: str | None = None) -> list[list[str]]:
     rows = []
     for k, lab in enumerate(m.moment.labels):
         t = float(m.moment.pos_tau[k])
-        phi = (math.degrees(t) if m.period > 2 * math.pi + 1e-9
-               else math.degrees(m.moment.phi[0] + m.moment.sense * t) % 360.0)
+        phi0 = float(m.moment.phi[0])
+        phi = cycle_angle_deg(phi0 + m.moment.sense * t, phi0, m.moment.sense, m.period)
         rows.append([lab, f"{phi:.1f}", v(float(m.moment.pos_M[k]), big_m),
                      v(float(m.pos_inertia.I_red[k]), big_i),
                      v(float(np.interp(t, wd.tau, wd.A_c)), big_a),

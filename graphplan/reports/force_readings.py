@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..forces import Loads
+from ..kinematics import position_angles_deg
 from ..plans import (
     EXACT,
     Bounded,
@@ -162,6 +163,7 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
     m_full = analysis.forces_full.M_bal
     draft = Reader(prec)
     out = []
+    angles = position_angles_deg(mech, kin)
     for k in range(kin.n):
         memo = analysis.force_memo  # a plan of the same inputs as sheet 2's is built once
         ex = force_plans(mech, kin, forces, loads, k, sc.kl, EXACT, s2.room_mm, memo=memo)
@@ -176,7 +178,7 @@ def _force_readings(analysis: Analysis, prec: float) -> tuple[PositionForces, ..
                                    exact=ex, drawn=dr, lever_exact=lx, lever_drawn=ld,
                                    probes=analysis.probes(prec), memo=memo)
                 if prec > 0 else None)
-        out.append(PositionForces(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), k, prec,
+        out.append(PositionForces(kin.labels[k], float(angles[k]), k, prec,
                                   ex, dr, lx, ld, float(forces.M_bal[k]), float(m_full[k]),
                                   _load_rows(loads, full, k), loads.neglect_below,
                                   sc.kl, float(np.max(np.abs(forces.M_bal))), cond))

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry import norm
-from ..kinematics import output_coordinate
+from ..kinematics import output_coordinate, position_angles_deg
 from ..numbers import cell, csv_number, finite, fmt
 from ..plans import (
     Bounded,
@@ -160,6 +160,7 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
     sc = analysis.sheet1
     kl, kv, ka = sc.kl, sc.kv, sc.ka
     out = []
+    angles = position_angles_deg(mech, kin)
     for k in range(kin.n):  # sheet 1's plans, drafted and exact, each built once a project
         vp, ap = analysis.velocity_plan(k, precision), analysis.acceleration_plan(k, precision)
         ev, ea = analysis.velocity_plan(k), analysis.acceleration_plan(k)
@@ -169,7 +170,7 @@ def _plan_readings(analysis: Analysis, precision: float) -> tuple[PositionPlans,
                                           drawn=(vp, ap), probes=analysis.probes(precision))
         else:
             cond = Conditioning(kin.labels[k], 0.0, intersections(vp) + intersections(ap))
-        out.append(PositionPlans(kin.labels[k], mech.positions.phi_deg(kin.phi[k]), vp, ap, ev, ea,
+        out.append(PositionPlans(kin.labels[k], float(angles[k]), vp, ap, ev, ea,
                                  kl, k, float(precision), cond))
     return tuple(out)
 
@@ -599,8 +600,9 @@ def summary_rows(analysis: Analysis, lang: str = "en") -> tuple[list[str], list[
                      (f"ε{ln}, {w['1/s²']}", kin.acc.epsilon[ln])]
     header = [w["pos"], w["phi"], *(h for h, _ in cols)]
     rows = []
+    angles = position_angles_deg(m, kin)
     for k in range(kin.n):
-        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.1f}"]
+        row = [kin.labels[k], f"{angles[k]:.1f}"]
         for _, arr in cols:
             big = float(np.max(np.abs(arr)))
             x = float(arr[k])

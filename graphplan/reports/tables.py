@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from ..geometry import norm
+from ..kinematics import position_angles_deg
 from ..model import russian_kind
 from ..numbers import fixed
 from ..project import Analysis
@@ -127,12 +128,13 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
     t = TEXT[lang]
     kin, m = a.kin, a.mech
     names = [p for p in kin.point_names() if p not in m.frame_points]
+    angles = position_angles_deg(m, kin)
     links = list(m.moving_links)
     head = [t["pos"], "φ, °"]
     out = [t["kin"], "", t["coords"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
+        row = [kin.labels[k], f"{angles[k]:.2f}"]
         for p in names:
             x, y = kin.pos.points[p][k] * 1e3
             row.append(f"({fixed(x, 2)}, {fixed(y, 2)})")
@@ -140,7 +142,7 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
     out += [format_table(head + names, rows), "", t["vel"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
+        row = [kin.labels[k], f"{angles[k]:.2f}"]
         row += [fixed(norm(kin.vel.points[p][k])) for p in names]
         row += [fixed(kin.vel.omega[ln][k]) for ln in links]
         rows.append(row)
@@ -148,7 +150,7 @@ def kinematics_text(a: Analysis, lang: str = "en") -> str:
             "", t["acc"]]
     rows = []
     for k in range(kin.n):
-        row = [kin.labels[k], f"{m.positions.phi_deg(kin.phi[k]):.2f}"]
+        row = [kin.labels[k], f"{angles[k]:.2f}"]
         row += [fixed(norm(kin.acc.points[p][k])) for p in names]
         row += [fixed(kin.acc.epsilon[ln][k]) for ln in links]
         rows.append(row)
