@@ -2,6 +2,7 @@
 
 from .curve import CURVE_POINTS, MomentCurve, moment_curve
 from .kinetostatics import COND_LIMIT, Forces, Reaction, dyad_pairs, reaction_name, solve_forces
+from .lean import CycleSolution, FullCycle
 from .loads import (
     JUMP_TOL,
     SHAPE_NODES,
@@ -28,8 +29,10 @@ __all__ = [
     "CURVE_POINTS",
     "JUMP_TOL",
     "SHAPE_NODES",
+    "CycleSolution",
     "ForceLoad",
     "Forces",
+    "FullCycle",
     "Loads",
     "MomentCurve",
     "MomentLoad",

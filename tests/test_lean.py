@@ -1,0 +1,144 @@
+"""The lean full cycle (graphplan.forces.lean, issue 21) computes what the general path does.
+
+:class:`FullCycle` generates one straight-line function per mechanism; these tests hold it to
+the general path (:func:`solve`, :func:`compute_loads`, :func:`solve_forces`) on every example
+and test variant — every point's position, velocity and acceleration, every link's ω and ε,
+every reaction, the prismatic pairs' normal forces and couples, and M_ур — to 1e-12 of each
+quantity's largest value over the cycle, with the neglect rule and without it, and on a grid
+with the positions the sheets use. Its speed is the benchmark's (``python -m benchmarks``),
+never a test's.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphplan as g
+from graphplan.forces import FullCycle
+from graphplan.forces.lean import LONG
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = sorted(p.relative_to(ROOT).as_posix() for p in
+               [*(ROOT / "examples").glob("*.toml"),
+                *(ROOT / "tests/data/variants").glob("*.toml")])
+
+
+def _grid(cycle, n: int) -> np.ndarray:
+    """n angles over the whole cycle (both turns of a 720° one) plus the sheets' positions
+    (dead centres among them): φ and φ + 2π are different moments of a four-stroke cycle."""
+    turns = round(cycle.period / (2 * math.pi))
+    fine = cycle.origin + (np.arange(n) + 0.37) * (cycle.period / n)
+    return np.concatenate([fine, np.asarray(cycle.phi, float)]) if turns == 1 else fine
+
+
+def _rel(a, b) -> float:
+    a = np.broadcast_to(a, np.shape(b))
+    scale = float(np.max(np.abs(b)))
+    return float(np.max(np.abs(a - b))) / scale if scale > 0 else float(np.max(np.abs(a)))
+
+
+def _agree(lean, general, size: float) -> dict[str, float]:
+    """The largest relative difference of each kind of quantity (the couples of prismatic
+    pairs relative to their normal force times the group's size: a couple that is zero but
+    for round-off has no scale of its own)."""
+    worst: dict[str, float] = {}
+    for table in ("points", "velocities", "accelerations", "omega", "epsilon", "reactions",
+                  "normal"):
+        got, want = getattr(lean, table), getattr(general, table)
+        assert set(got) == set(want), (table, set(got) ^ set(want))
+        worst[table] = max((_rel(got[k], want[k]) for k in want), default=0.0)
+    assert set(lean.couple) == set(general.couple)
+    worst["couple"] = max((float(np.max(np.abs(lean.couple[k] - general.couple[k])))
+                           / max(size * float(np.max(np.abs(general.normal[k]))), 1e-300)
+                           for k in general.couple), default=0.0)
+    worst["M_bal"] = _rel(lean.M_bal, general.M_bal)
+    return worst
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_the_lean_path_equals_the_general_path_to_1e_12(case, solved):
+    project = solved(str(ROOT / case))
+    mech, cycle = project.mech, project.cycle
+    size = max([mech.crank.length, *(ln for d in mech.dyads for ln in d.lengths)])
+    phi = _grid(cycle, 360)
+    for neglect in (None, 0.0):  # the variant's rule, and every load kept
+        fc = FullCycle(mech, cycle, neglect_below=neglect)
+        assert fc.native, case  # compiled, not handed to the general path
+        lean = fc(phi)
+        assert lean.native
+        worst = _agree(lean, fc.general(phi), size)
+        assert max(worst.values()) < 1e-12, (case, neglect, worst)
+
+
+def test_a_long_sweep_frees_its_arrays_and_agrees(solved):
+    # from LONG positions on, the generated function deletes each array after its last use
+    project = solved(str(ROOT / "examples/sixbar_press.toml"))
+    fc = FullCycle(project.mech, project.cycle)
+    phi = _grid(project.cycle, LONG + 7)
+    worst = _agree(fc(phi), fc.general(phi), 1.0)
+    assert max(worst.values()) < 1e-12, worst
+
+
+def test_one_angle_a_list_and_a_scalar(solved):
+    project = solved("press")
+    fc = FullCycle(project.mech, project.cycle)
+    one = fc(0.3)
+    assert one.phi.shape == (1,) and one.M_bal.shape == (1,)
+    assert one.M_bal[0] == pytest.approx(fc.general([0.3]).M_bal[0], rel=1e-12)
+    two = fc([0.3, 1.2])
+    assert two.M_bal.shape == (2,) and two.M_bal[0] == one.M_bal[0]
+    # a constant is a number where the general path broadcasts it: xy gives both as (N, 2)
+    assert np.array_equal(two.xy("points", "O"), np.zeros((2, 2)))
+    assert np.allclose(two.xy("velocities", "B"), fc.general([0.3, 1.2]).xy("velocities", "B"),
+                       rtol=0, atol=1e-12)
+
+
+def test_a_pose_that_cannot_be_assembled_gets_the_general_paths_error(solved):
+    # the rocker of the four-bar shortened so that it closes over part of the turn only:
+    # the lean function's assembly check fails and the general path names dyad and position
+    project = solved("fourbar")
+    mech, cycle = project.mech, project.cycle
+    (d,) = mech.dyads
+    kin = g.solve(mech, cycle.phi)
+    a, _, c = d.joints
+    ac = np.hypot(*(kin.pos.points[c] - kin.pos.points[a]).T)
+    l1 = d.lengths[0]
+    l2 = float(np.max(ac)) - l1 - 1e-3  # too short at the longest |AC|
+    short = replace(mech, dyads=(replace(d, lengths=(l1, l2)),))
+    fc = FullCycle(short, cycle)
+    at = float(cycle.phi[int(np.argmax(ac))])
+    with pytest.raises(g.AssemblyError) as lean_err:
+        fc([cycle.origin, at])
+    with pytest.raises(g.AssemblyError) as general_err:
+        fc.general([cycle.origin, at])
+    assert str(lean_err.value) == str(general_err.value)
+    assert "cannot be assembled" in str(lean_err.value)
+
+
+def test_settings_it_does_not_compile_go_to_the_general_path(solved):
+    project = solved("press")
+    mech = project.mech
+    shifted = replace(mech, settings={**mech.settings, "kinetostatics": {
+        **mech.settings.get("kinetostatics", {}), "shift_inertia_force": True}})
+    fc = FullCycle(shifted, project.cycle)
+    assert not fc.native
+    res = fc(project.cycle.phi)
+    assert not res.native and res.M_bal.shape == project.cycle.phi.shape
+
+
+def test_the_generated_code_folds_constants():
+    # the press: a frame guide, a weight and the slider's ω = ε = 0 are constants, so the
+    # Coriolis term and the guide's coincident point cost nothing; the velocity and
+    # acceleration solves share one determinant
+    mech = g.load(ROOT / "examples/press.toml")
+    fc = FullCycle(mech)
+    src = fc.source
+    assert src.count("/ ") <= 4, src  # reciprocals only: 1/det of the dyad, of the forces
+    assert "load_values" not in src and "np.interp" not in src  # the diagram is a bound helper
+    lines = [ln for ln in src.splitlines() if " = " in ln]
+    assert len(lines) < 110, len(lines)
