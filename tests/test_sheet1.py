@@ -359,3 +359,99 @@ def test_a_four_stroke_cycle_has_no_idle_stroke_of_540_degrees(solved):
     assert not any("φх.х" in line for line in engine)
     assert structure_lines(solved("press"), "ru")[-1] == (
         "φр.х = 180,0°, φх.х = 180,0° (рабочий и холостой ход)")
+
+
+# ------------------------------------------- the diagrams against the plans (B.2.5, 7)
+
+
+def _table_cells(sheet, ident: str) -> dict[tuple[int, int], str]:
+    out = {}
+    for it in iter_leaves(sheet.all_items()):
+        m = re.fullmatch(rf"{ident}-r(\d+)c(\d+)", it.id or "")
+        if m and isinstance(it, Text):
+            out[int(m[1]), int(m[2])] = it.text.replace(",", ".").replace("−", "-")
+    return out
+
+
+def test_the_diagrams_are_compared_with_the_plans_against_the_closed_form(built):
+    """The press (central slider-crank, guide straight down through O, l1 = 0.08 m,
+    l2 = 0.2 m): B = (0, yB), yB = l1·sin φ − √(l2² − l1²·cos²φ), s measured along the guide
+    (down) in the working direction w. The plan's v is the closed form's derivative,
+    v = w·(−yB'(φ))·ω1; the diagram's v at a node is the mean of the two chords either side,
+    |ω1|·(s(τ+h) − s(τ−h))/(2h), h = 2π/n: the sheet's table must give both, and
+    Δ = (diagram − plan)/plan·100 % to its printed 0.1 %."""
+    from graphplan.drawing.sheet1 import fit_sheet_diagrams
+
+    a, sheet, _ = built("press")
+    d = fit_sheet_diagrams(a, a.sheet1)
+    l1, l2, om = 0.08, 0.2, a.mech.crank.omega
+    w = float(a.mech.output.working)
+
+    def q(phi):  # the slider's coordinate along the guide (pointing down)
+        return -(l1 * np.sin(phi) - np.sqrt(l2**2 - (l1 * np.cos(phi))**2))
+
+    def dq(phi):
+        return -(l1 * np.cos(phi) - l1**2 * np.cos(phi) * np.sin(phi)
+                 / np.sqrt(l2**2 - (l1 * np.cos(phi))**2))
+
+    h = 2 * math.pi / d.intervals
+    cells = _table_cells(sheet, "diagram-check")
+    rows = {cells[i, 1]: i for (i, j) in cells if j == 1 and i > 0}  # ids r<row>c<column>, 1-based
+    assert set(rows) == {str(n) for n in range(1, 9)}  # the press's positions 1…8
+    checked = 0
+    for label, i in rows.items():
+        k = a.kin.labels.index(label)
+        phi = float(a.kin.phi[k])
+        v_plan = w * dq(phi) * om
+        tau = phi - d.phi_first  # the crank turns counter-clockwise (sense +1)
+        v_diag = abs(om) * w * (q(d.phi_first + tau + h) - q(d.phi_first + tau - h)) / (2 * h)
+        assert float(cells[i, 2]) == pytest.approx(v_diag, rel=1e-3, abs=1e-4)
+        assert float(cells[i, 3]) == pytest.approx(v_plan, rel=1e-3, abs=1e-4)
+        if abs(v_plan) > 0.05 * 0.47:  # away from the dead centres (max |v| = 0.47 m/s)
+            delta = (v_diag - v_plan) / v_plan * 100
+            assert float(cells[i, 4]) == pytest.approx(delta, abs=0.051)
+            checked += 1
+        else:
+            assert cells[i, 4] == "—"
+    assert checked == 6  # positions 2, 3, 4, 6, 7, 8 (1 and 5 are the dead centres)
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_the_comparison_table_stands_in_the_strip_clear_of_the_table_of_the_plans(built, name):
+    """Where the strip holds it, the comparison table stands right of the table of the
+    plans, inside the strip, and every column of both is there (nothing cut)."""
+    from graphplan.drawing import item_geometry
+
+    a, sheet, _ = built(name)
+    strip = a.sheet1.layout.table
+    plans = [it for it in iter_leaves(sheet.all_items())
+             if (it.id or "").startswith("plans-table-")]
+    check = [it for it in iter_leaves(sheet.all_items())
+             if (it.id or "").startswith("diagram-check-")]
+    if name == "sixbar_press":  # its table of the plans (20 columns) spans the strip
+        assert check == []
+        return
+    assert check, "no comparison table"
+    def bounds(it):
+        return (text_box(it) if isinstance(it, Text) else item_geometry(it)).bounds
+
+    right = max(bounds(it)[2] for it in plans)
+    for it in check:
+        x0, y0, x1, y1 = bounds(it)
+        assert right < x0 and x1 <= strip.x1 + 1e-6 and strip.y0 - 1e-6 <= y0 and y1 <= strip.y1
+    cells = _table_cells(sheet, "diagram-check")
+    assert max(j for _, j in cells) == 7
+    assert "столбцов" not in next(it.text for it in iter_leaves(sheet.all_items())
+                                  if it.id == "table-title")
+
+
+def test_a_720_degree_cycle_numbers_the_diagrams_nodes_by_the_positions_of_one_turn(solved):
+    """The engine: 24 positions every 30° over 720°, 24 intervals of 15° over one turn: the
+    positions 0…11 of the first turn fall on every second node (the second turn repeats
+    them); before, the nodes were numbered 0…23 one by one, position 1 at 15°."""
+    from graphplan.drawing.sheet1 import fit_sheet_diagrams
+
+    a = solved("engine")
+    d = fit_sheet_diagrams(a, a.sheet1)
+    assert d.intervals == 24
+    assert d.node_labels == (*(str(i // 2) if i % 2 == 0 else "" for i in range(24)), "0")

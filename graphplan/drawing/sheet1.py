@@ -12,6 +12,7 @@ vectors of the plans 0.5 mm with filled arrowheads, construction lines thin.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 from shapely.geometry import Polygon
@@ -20,9 +21,12 @@ from ..kinematics import link_coordinate, output_coordinate
 from ..plans import Plan
 from ..project import (
     CAPTION,
+    GAP,
     PLAN_MARGIN,
     STRUCTURE_LINE,
+    TABLE_PAD,
     Sheet1Scales,
+    fit_columns,
     titled_table,
 )
 from .labels import LabelRequest, place_labels
@@ -593,17 +597,21 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
         items += groups_items(analysis, sc.slots, sc.layout.groups, lang)
     items += scales_items(sc, lang)
     items += structure_items(analysis, sc, lang)
-    items += table_block(analysis, sc, lang)
+    d = fit_sheet_diagrams(analysis, sc) if diagrams else None
+    items += table_block(analysis, sc, lang, d)
     if diagrams:
-        items += diagram_block(analysis, sc, lang)
+        items += diagram_block(analysis, sc, lang, d)
     return Sheet(sc.layout.page, tuple(items), title_block(mech, lang, 1, w["sheet"]),
                  lang=lang)
 
 
-def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
+def table_block(analysis, sc: Sheet1Scales, lang: str, d=None) -> list[Item]:
     """The table of the plans (main values of every position) in the bottom strip, lettered
     3.5 mm, or 2.5 mm where that keeps every column (a six-bar's 18–20 columns); cut, with
-    its title saying so, only where not even 2.5 mm fits (A2, A3)."""
+    its title saying so, only where not even 2.5 mm fits (A2, A3). With the kinematic
+    diagrams ``d``, the table comparing them with the plans (:func:`comparison_block`)
+    right of it, where the strip holds both with every column (the table of the plans
+    lettered 2.5 mm where that makes the room)."""
     from ..reports import summary_rows
 
     def notes(n, m):
@@ -615,23 +623,65 @@ def table_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
 
     header, rows = summary_rows(analysis, lang)
     r = sc.layout.table
-    return titled_table(r.x0, r.y0, r.width, WORDS[lang]["table"], header, rows,
-                        ident="plans-table", title_id="table-title", notes=notes,
-                        lettering=(3.5, 2.5))
+
+    def plans(width: float) -> list[Item]:
+        return titled_table(r.x0, r.y0, width, WORDS[lang]["table"], header, rows,
+                            ident="plans-table", title_id="table-title", notes=notes,
+                            lettering=(3.5, 2.5))
+
+    if d is not None:
+        from ..reports import comparison_rows
+
+        title, c_head, c_rows = comparison_rows(analysis, d, lang)
+        least = sum(fit_columns(c_head, c_rows, math.inf, 2.5, TABLE_PAD * 2.5).widths)
+        width = r.width - least - GAP - 1.0  # 1 mm spare: no cut by round-off
+        if c_rows and fit_columns(header, rows, width, 2.5, TABLE_PAD * 2.5).shown == len(header):
+            table = plans(width)
+            return table + comparison_block(sc, table, title, c_head, c_rows)
+    return plans(r.width)
+
+
+def comparison_block(sc: Sheet1Scales, table: list[Item], title: str, header, rows
+                     ) -> list[Item]:
+    """The table comparing the diagrams' v and a with the plans' at the main positions
+    (method B.2.5, 7: Δ = (diagram − plan)/plan·100 %; :func:`graphplan.reports.
+    comparison_rows`) in the bottom strip right of the table of the plans ``table``,
+    lettered 3.5 mm or 2.5 mm, its title over its own width."""
+    r = sc.layout.table
+    right = max(g.bounds[2] for it in iter_leaves(table) if (g := item_geometry(it)))
+    x0 = right + GAP
+    out = titled_table(x0, r.y0, r.x1 - x0, title, header, rows, ident="diagram-check",
+                       title_id="diagram-check-title", lettering=(3.5, 2.5))
+    right = max(g.bounds[2] for it in iter_leaves(out[1:]) if (g := item_geometry(it)))
+    head = out[0]
+    assert isinstance(head, Text)
+    for h in (5.0, 3.5, 2.5):  # 5 mm, or smaller where 5 mm runs past the table
+        head = replace(head, height=h)
+        if x0 + text_width(head) <= right:
+            break
+    return [head, *out[1:]]
 
 
 DIAGRAM_LENGTH_MAX = 400.0  #: longest abscissa of one cycle on sheet 1, mm
 DIAGRAM_HEIGHT_MAX = 100.0  #: tallest of the three diagrams, mm
 
 
-def diagram_block(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
-    """The kinematic diagrams s(φ), v(φ), a(φ) (matplotlib, embedded as vector graphics)."""
-    from .figures import diagrams_items, fit_diagrams
+def fit_sheet_diagrams(analysis, sc: Sheet1Scales):
+    """The kinematic diagrams s(φ), v(φ), a(φ) sized to their box on the sheet."""
+    from .figures import fit_diagrams
 
     r = sc.layout.diagrams
-    d = fit_diagrams(analysis.mech, analysis.cycle, r.width, r.height,
-                     max_length_mm=DIAGRAM_LENGTH_MAX, max_height_mm=DIAGRAM_HEIGHT_MAX,
-                     solve_on=analysis.solve_on)
+    return fit_diagrams(analysis.mech, analysis.cycle, r.width, r.height,
+                        max_length_mm=DIAGRAM_LENGTH_MAX, max_height_mm=DIAGRAM_HEIGHT_MAX,
+                        solve_on=analysis.solve_on)
+
+
+def diagram_block(analysis, sc: Sheet1Scales, lang: str, d=None) -> list[Item]:
+    """The kinematic diagrams s(φ), v(φ), a(φ) (matplotlib, embedded as vector graphics)."""
+    from .figures import diagrams_items
+
+    r = sc.layout.diagrams
+    d = fit_sheet_diagrams(analysis, sc) if d is None else d
     return [diagrams_items(d, (r.x0, r.y0), r.width, r.height, lang, id="kin-diagrams")]
 
 

@@ -261,9 +261,12 @@ def kinematic_diagrams(mech: Mechanism, cycle: Cycle, *, intervals: int | None =
     v_err = float(np.max(np.abs(v_ch - v_mid)) / max(np.abs(v).max(), np.abs(v_mid).max()))
     a_err = float(np.max(np.abs(a_ch - a_node)) / max(np.abs(a).max(), np.abs(a_node).max()))
 
+    # the positions of one turn (a 720° cycle's second turn repeats the first's motion): a
+    # node is a main position when it falls on one of them
+    per_turn = count * 360 // mech.positions.cycle
     labels = []
     for i in range(n + 1):
-        k, r = divmod((i % n) * count, n)
+        k, r = divmod((i % n) * per_turn, n)
         labels.append(str(mech.positions.number_from + k) if r == 0 else "")
     return KinematicDiagrams(
         output_kind=cycle.output_kind, omega1=omega, phi_first=phi0, sense=sense,

@@ -1,5 +1,6 @@
 """Reports of a solved variant: text, Markdown and CSV tables of the plans, forces and dynamics."""
 
+from .diagram_comparison import comparison_rows
 from .dynamics_tables import T, dynamics_csv, dynamics_markdown, position_rows
 from .force_readings import TINY, LoadRow, PositionForces, force_readings
 from .force_tables import curve_markdown, forces_csv, forces_markdown
@@ -29,6 +30,7 @@ __all__ = [
     "PositionPlans",
     "T",
     "analysis_text",
+    "comparison_rows",
     "curve_markdown",
     "cycle_text",
     "dynamics_csv",
