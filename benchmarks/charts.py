@@ -154,6 +154,7 @@ def stability_chart(results: dict, folder: Path) -> Path:
 
 SWEEP_STYLE = {
     "graphplan full cycle": ("#1f77b4", "-", "o"),
+    "graphplan full cycle, general objects": ("#9467bd", "-", "D"),
     "graphplan kinematics": ("#1f77b4", "--", "o"),
     "closed form: full cycle": ("#2ca02c", "-", "s"),
     "closed form: kinematics": ("#2ca02c", "--", "s"),

@@ -101,10 +101,13 @@ def tables(results: dict) -> str:
                                             "(≥ 1)",
                   "full_over_closed_form": "graphplan full cycle / closed form (≤ 4 at 360)",
                   "kinematics_over_closed_form": "graphplan kinematics / closed form",
-                  "numba_over_kinematics": "pylinkage numba / graphplan kinematics"}
+                  "numba_over_kinematics": "pylinkage numba / graphplan kinematics",
+                  "general_over_full": "graphplan general objects / graphplan full cycle"}
         out += ["", "| ratio | " + " | ".join(f"N = {n:,}" for n in sizes) + " |",
                 "|---|" + "---:|" * len(sizes)]
         for key, label in labels.items():
+            if key not in sw["ratios"]:  # a results.json of an earlier benchmark
+                continue
             out.append(f"| {label} | " + " | ".join(
                 "—" if v is None else f"{v:.3g}" for v in sw["ratios"][key]) + " |")
         agree = sw.get("closed_form_agreement", {})

@@ -292,20 +292,23 @@ def measure(name: str, n: int, reps: int, drafting: bool = True, timed: dict | N
 def profile_press(reps: int, n: int = 360) -> dict:
     """What the press's full cycle of ``n`` positions is made of (medians, s)."""
     import graphplan as g
-    from graphplan.forces import compute_loads, solve_forces
+    from graphplan.forces import FullCycle, compute_loads, solve_forces
     from graphplan.kinematics import solve
 
     mech = g.load(ROOT / "examples" / "press.toml")
     cycle = g.analyse_cycle(mech)
     phi = grid(n)
+    lean = FullCycle(mech, cycle)
     kin = solve(mech, phi)
     loads = compute_loads(mech, kin, cycle)
     A = next(iter(solve_forces(mech, kin, loads).systems.values()))
     rhs = np.ones((A.shape[0], 6, 1))
     times = interleaved({
-        "kinematics": lambda: solve(mech, phi),
-        "loads": lambda: compute_loads(mech, kin, cycle),
-        "kinetostatics (closed-form dyad solves)": lambda: solve_forces(mech, kin, loads),
+        "the lean full cycle (FullCycle: all of it, the unit of the sweep)": lambda: lean(phi),
+        "general objects: kinematics": lambda: solve(mech, phi),
+        "general objects: loads": lambda: compute_loads(mech, kin, cycle),
+        "general objects: kinetostatics (closed-form dyad solves)":
+            lambda: solve_forces(mech, kin, loads),
         f"not in the cycle: LAPACK solve + det of the same {n} 6×6 (before issue 21)":
             lambda: (np.linalg.solve(A, rhs), np.linalg.det(A)),
         "not in the cycle: condition numbers by SVD (on demand)": lambda: np.linalg.cond(A),

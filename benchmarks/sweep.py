@@ -5,7 +5,13 @@ At each number of positions N the methods are timed in turns in one process
 
 * ``graphplan kinematics`` — :func:`graphplan.kinematics.solve`;
 * ``graphplan full cycle`` — kinematics + loads + kinetostatics with the variant's
-  settings (:func:`benchmarks.methods.full_cycle`), the unit of the speed targets;
+  settings through :class:`graphplan.forces.FullCycle` (compiled once per mechanism
+  before the timing, as the closed form reads its data and pylinkage builds its linkage
+  once): every point's position, velocity and acceleration, every link's ω and ε, every
+  reaction and Mур — the unit of the speed targets;
+* ``graphplan full cycle, general objects`` — the same through :func:`solve`,
+  :func:`compute_loads` and :func:`solve_forces` (:func:`benchmarks.methods.full_cycle`),
+  which build what the plans, tables and the JSON report read;
 * ``closed form: kinematics`` and ``closed form: full cycle`` — the press written out
   by hand in numpy (:mod:`benchmarks.closed_form`), the yardstick of the limit;
 * ``pylinkage numba`` — pylinkage's ``step_fast_with_kinematics`` (positions, velocities,
@@ -34,9 +40,10 @@ SIZES = (36, 360, 3600, 36000, 360000)
 """Positions per turn of the sweep: a course project's 36 to a fine simulation's 360,000."""
 
 GP_KIN, GP_FULL = "graphplan kinematics", "graphplan full cycle"
+GP_GENERAL = "graphplan full cycle, general objects"
 CF_KIN, CF_FULL = "closed form: kinematics", "closed form: full cycle"
 NUMBA, DEFAULT = "pylinkage numba (kinematics)", "pylinkage default (kinematics)"
-METHODS = (GP_KIN, GP_FULL, CF_KIN, CF_FULL, NUMBA, DEFAULT)
+METHODS = (GP_KIN, GP_FULL, GP_GENERAL, CF_KIN, CF_FULL, NUMBA, DEFAULT)
 
 
 def grid(n: int) -> np.ndarray:
@@ -59,6 +66,7 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
     """Median times (s) of every method at every N (``with_peers=False``: graphplan and
     the closed form only)."""
     import graphplan as g
+    from graphplan.forces import FullCycle
 
     from .closed_form import CrankSlider, check
     from .run import ROOT
@@ -66,6 +74,7 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
     mech = g.load(ROOT / "examples" / f"{name}.toml")
     cycle = g.analyse_cycle(mech)
     cs = CrankSlider(mech)
+    lean = FullCycle(mech, cycle)
     out: dict = {"mechanism": name, "sizes": list(sizes), "median_s": {m: [] for m in METHODS},
                  "repetitions": [], "paired": {"numba_over_full": []},
                  "closed_form_agreement": check(mech, cycle, grid(360))}
@@ -73,7 +82,8 @@ def sweep(name: str = "press", sizes=SIZES, budget_s: float = 2.0, default_budge
     for n in sizes:
         phi = grid(n)
         fns = {GP_KIN: lambda phi=phi: M.kinematics_only(mech, phi),
-               GP_FULL: lambda phi=phi: M.full_cycle(mech, cycle, phi),
+               GP_FULL: lambda phi=phi: lean(phi),
+               GP_GENERAL: lambda phi=phi: M.full_cycle(mech, cycle, phi),
                CF_KIN: lambda phi=phi: cs.kinematics(phi),
                CF_FULL: lambda phi=phi: cs.full_cycle(phi)}
         pl = None
@@ -131,7 +141,9 @@ def ratios(sw: dict) -> dict:
             "numba_over_full_paired": sw["paired"]["numba_over_full"],
             "full_over_closed_form": r(med[GP_FULL], med[CF_FULL]),
             "kinematics_over_closed_form": r(med[GP_KIN], med[CF_KIN]),
-            "numba_over_kinematics": r(med[NUMBA], med[GP_KIN])}
+            "numba_over_kinematics": r(med[NUMBA], med[GP_KIN]),
+            "general_over_full": r(med.get(GP_GENERAL, [None] * len(med[GP_FULL])),
+                                   med[GP_FULL])}
 
 
 __all__ = ["METHODS", "SIZES", "grid", "ratios", "sweep"]

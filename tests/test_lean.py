@@ -142,3 +142,27 @@ def test_the_generated_code_folds_constants():
     assert "load_values" not in src and "np.interp" not in src  # the diagram is a bound helper
     lines = [ln for ln in src.splitlines() if " = " in ln]
     assert len(lines) < 110, len(lines)
+
+
+def test_a_diagram_near_its_nodes_is_the_general_functions():
+    # np.interp is the diagram except within JUMP_TOL of a node where two pieces meet
+    # (there the general function takes the larger piece, extrapolated): the lean helper
+    # hands those x to the general function
+    from graphplan.forces import JUMP_TOL, diagram_value
+    from graphplan.forces.lean import _interp
+
+    d = ((0.0, 0.0), (0.88513, 0.0), (0.98938, 1.0), (1.0, 1.0))
+    xs, ys = np.array([p[0] for p in d]), np.array([p[1] for p in d])
+    value = _interp(xs, ys, xs[1:-1], d, False, False, 0.0, 1.0)
+    rng = np.random.default_rng(7)
+    for x in (rng.uniform(0, 1, 50), np.array([0.98938 + 0.5 * JUMP_TOL, 0.3]),
+              np.array([0.88513 - 0.9 * JUMP_TOL]), np.array([-1e-16, 1.0 + 1e-16])):
+        want = diagram_value(d, np.clip(x, 0, 1))
+        assert np.allclose(value(x), want, rtol=0, atol=1e-15), (x, value(x), want)
+    # beyond the ends it holds the end value where the diagram spans [0, 1], and is zero
+    # where it stops short (the general function's zero outside its pieces)
+    short = ((0.2, 0.5), (0.8, 1.0))
+    xs, ys = np.array([0.2, 0.8]), np.array([0.5, 1.0])
+    value = _interp(xs, ys, xs, short, False, False, 0.0, 1.0)
+    x = np.array([0.0, 0.1, 0.5, 0.95, 1.0])
+    assert np.allclose(value(x), diagram_value(short, x), rtol=0, atol=1e-15)

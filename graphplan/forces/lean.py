@@ -370,16 +370,14 @@ class FullCycle:
                              forces.M_bal, native=False)
 
     def __call__(self, phi) -> CycleSolution:
-        phi = np.atleast_1d(np.asarray(phi, float))
+        if not (type(phi) is np.ndarray and phi.dtype == np.float64 and phi.ndim == 1):
+            phi = np.atleast_1d(np.asarray(phi, float))
         if not self.native:
             return self.general(phi)
         out = self._run(phi)
         if out is None:  # a check failed: the general path raises (or was only cautious)
             return self.general(phi)
-        lay = self._layout
-        k = iter(out)
-        P, V, A, W, E, R, N, C = ({name: next(k) for name in names} for names in lay)
-        return CycleSolution(phi, P, V, A, W, E, R, N, C, next(k))
+        return CycleSolution(phi, *out)
 
     # -------------------------------------------------------------- compilation
     def _compile(self) -> None:
@@ -403,11 +401,11 @@ class FullCycle:
         g.lines.append(f"ok = (isfinite(concatenate({listed})).all() if phi.shape[0] <= 4096 "
                        f"else isfinite(sum([x.sum() for x in {listed}])))")
         g.check("ok")
-        outputs = []
-        self._layout = []
+        outputs = []  # the tables as dict displays, then M_ур
         for t in tables:
-            self._layout.append(tuple(t))
-            outputs += [g.ref(v) if v.const is None else repr(_py(v.const)) for v in t.values()]
+            items = (f"{name!r}: {g.ref(v) if v.const is None else repr(_py(v.const))}"
+                     for name, v in t.items())
+            outputs.append("{" + ", ".join(items) + "}")
         outputs.append(g.ref(m_bal))
         self.source = g.source("full_cycle", "phi", outputs)
         ns = dict(g.ns)
@@ -456,6 +454,7 @@ class _State:
         self.theta: dict[str, _V] = {}
         self.guides: dict[str, tuple[_V, _V]] = {}
         self.SV: dict = {}               # sliding speeds by pair key (see sv)
+        self.along: dict[str, _V] = {}   # an RRP slider's coordinate along its guide
         self.dyad: dict[str, dict] = {}  # per dyad what its velocity solve shares
         self.still = _translating(mech)
 
@@ -566,8 +565,10 @@ class _State:
         h = g.im(cw)
         g.check(f"{g.ref(g.abs(h))}.max() <= {l1!r}")
         root = g.sqrt(g.sub(g.K(l1 * l1), g.mul(h, h)))
-        B = g.add(G, g.mul(u, g.add(g.re(cw), g.mul(g.K(s), root))))
+        along = g.add(g.re(cw), g.mul(g.K(s), root))
+        B = g.add(G, g.mul(u, along))
         self.P[b] = B
+        self.along[slide_key(j, d.guides[0].link)] = along  # (B − G)·u
         self.axis[i] = g.mul(g.sub(B, self.P[a]), g.K(1.0 / l1))
         self.axis[j] = u
         self.guides[slide_key(j, d.guides[0].link)] = (G, u)
@@ -881,15 +882,23 @@ class _State:
         self.A[pd] = g.add(g.add(self._coincident_a(gd, self.P[pd]), corj), g.mul(u, as_))
 
 
-def _interp(xs, ys, nodes, d, signed: bool, clip: bool, outside: bool):
-    """The diagram ``d`` as ``np.interp`` (see _Loads._diagram)."""
+def _interp(xs, ys, nodes, d, signed: bool, clip: bool, lo: float, hi: float):
+    """The diagram ``d`` as ``np.interp`` (see _Loads._diagram); x is clipped to [lo, hi]
+    only where the general function is called (np.interp holds its end values beyond the
+    ends, and x leaves [0, 1] by round-off only)."""
     tol = 2 * JUMP_TOL
-    left = 0.0 if outside else None
+    # zero beyond an end inside [lo, hi]; an end at or beyond lo or hi holds its value
+    left = 0.0 if xs[0] > lo else None
+    right = 0.0 if xs[-1] < hi else None
+    # a step function 1 within 2·tol of a node, 0 elsewhere: one interpolation finds
+    # whether any x is near a node
+    gx = np.array([v for n in nodes for v in (n - 2 * tol, n - tol, n + tol, n + 2 * tol)])
+    gy = np.array([v for _ in nodes for v in (0.0, 1.0, 1.0, 0.0)])
 
     def value(x):
-        if nodes.size and (np.abs(x[:, None] - nodes) <= tol).any():
-            return diagram_value(d, x, signed=signed)
-        v = np.interp(x, xs, ys, left, left)
+        if gx.size and np.interp(x, gx, gy).any():
+            return diagram_value(d, np.clip(x, lo, hi), signed=signed)
+        v = np.interp(x, xs, ys, left, right)
         return np.maximum(v, 0.0) if clip else v
 
     return value
@@ -994,7 +1003,7 @@ class _Loads:
         tau = g.fn("np.mod", tau, g.K(period))
         if res.over == "crank":
             x = g.fn("np.mod", g.sub(tau, g.K(res.phase)), g.K(period))
-            val = self._diagram(res.strokes[0], x, True, (0.0, period), n_res, 0)
+            val = self._diagram(res.strokes[0], x, True, (0.0, period), n_res, 0, clip_x=False)
             return g.sub(g.mul(val, g.K(res.maximum)), g.K(res.offset)), None
         lt = cycle.travels[(res.travel_link or mech.output.link,
                             res.working or mech.output.working)]
@@ -1023,7 +1032,7 @@ class _Loads:
             q = g.add(q, g.mul(g.fn("np.round", g.mul(g.sub(g.K(mid), q), g.K(1 / two_pi))),
                                g.K(two_pi)))
         xr = g.mul(g.sub(q, g.K(lt.q_start)), g.K(1.0 / (lt.q_end - lt.q_start)))
-        x = g.fn("np.clip", xr, g.K(0.0), g.K(1.0))
+        x = xr  # in [0, 1] but for round-off: clipped where the general function reads it
         signed = res.sense == "diagram"
         size = g.K(0.0)
         for m in loaded:
@@ -1040,7 +1049,8 @@ class _Loads:
             return g.sub(g.K(1.0), g.mul(g.fn("np.mod", k, g.K(2.0)), g.K(2.0)))
         return size, dirn
 
-    def _diagram(self, d, x: _V, signed: bool, span, n_res: int, m: int) -> _V:
+    def _diagram(self, d, x: _V, signed: bool, span, n_res: int, m: int,
+                 clip_x: bool = True) -> _V:
         """:func:`~graphplan.forces.diagram_value` of ``d`` at x: ``np.interp`` for a diagram
         without jumps, which is the same function except within :data:`JUMP_TOL` of a node
         where two pieces meet (or of an end inside ``span``); there, or for a diagram with
@@ -1049,15 +1059,16 @@ class _Loads:
         xs = np.array([p[0] for p in d], float)
         ys = np.array([p[1] for p in d], float)
         name = f"_{n_res}_{m}"
-        if not np.all(np.diff(xs) > 2 * JUMP_TOL):
+        if not np.all(np.diff(xs) > 10 * JUMP_TOL):
             fn = g.bind(f"diagram{name}", lambda x, d=d, s=signed: diagram_value(d, x, signed=s))
+            if clip_x:
+                x = g.fn("np.clip", x, g.K(float(span[0])), g.K(float(span[1])))
             return g.tmp(f"{fn}({g.ref(x)})")
         nodes = [float(v) for v in xs[1:-1]]
         nodes += [float(v) for v in (xs[0], xs[-1]) if span[0] < v < span[1]]
         clip = not signed and ys.min() < 0
         fn = g.bind(f"diagram{name}",
-                    _interp(xs, ys, np.array(sorted(nodes)), d, signed, clip,
-                            xs[0] > span[0] or xs[-1] < span[1]))
+                    _interp(xs, ys, np.array(sorted(nodes)), d, signed, clip, *span))
         return g.tmp(f"{fn}({g.ref(x)})")
 
     def _coordinate(self, link: str) -> _V:
@@ -1070,6 +1081,8 @@ class _Loads:
                 slider, carrier = key.split("/")
                 if slider == link and carrier == mech.frame_link:
                     point = d.new_points[0] if d.new_points else d.joints[0]
+                    if d.kind == "RRP" and key in st.along:  # B = G + u·(B − G)·u
+                        return st.along[key]
                     return g.dot(u, g.sub(st.P[point], G))
             break
         theta = st.theta_of(link)
