@@ -66,13 +66,15 @@ def test_the_lean_path_equals_the_general_path_to_1e_12(case, solved):
     mech, cycle = project.mech, project.cycle
     size = max([mech.crank.length, *(ln for d in mech.dyads for ln in d.lengths)])
     phi = _grid(cycle, 360)
-    for neglect in (None, 0.0):  # the variant's rule, and every load kept
-        fc = FullCycle(mech, cycle, neglect_below=neglect)
+    # the variant's rule; every load kept; no inertia and a rule that drops loads often
+    # (the dynamics' setting, where a group may have only its weights: decided once)
+    for inertia, neglect in ((None, None), (None, 0.0), (False, 0.4)):
+        fc = FullCycle(mech, cycle, inertia=inertia, neglect_below=neglect)
         assert fc.native, case  # compiled, not handed to the general path
         lean = fc(phi)
         assert lean.native
         worst = _agree(lean, fc.general(phi), size)
-        assert max(worst.values()) < 1e-12, (case, neglect, worst)
+        assert max(worst.values()) < 1e-12, (case, inertia, neglect, worst)
 
 
 def test_a_long_sweep_frees_its_arrays_and_agrees(solved):

@@ -1106,27 +1106,53 @@ class _Loads:
                 [self.moments[ln][k][0] for ln, k in ml]
             if len(set(names)) < len(names):
                 raise _NotNative("two loads of one name in a group")
-            sizes = [g.abs(self.forces[ln][k][1]) for ln, k in fl]
-            if ml:
-                ell = self._group_size(links)
-                sizes += [g.div(g.abs(self.moments[ln][k][1]), ell) for ln, k in ml]
-            consts = [s.const for s in sizes if s.const is not None]
-            arrays = [s for s in sizes if s.const is None]
-            big = g.K(max(consts)) if consts else None
-            for s in arrays:
-                big = s if big is None else g.maximum(big, s)
-            assert big is not None
+            ell = self._group_size(links) if ml else g.K(1.0)
+            # the loads that vary (a force by its vector, a couple by M/ℓ) and the constants
+            rows: list[tuple[str, tuple[str, int], _V]] = []
+            consts: list[tuple[str, tuple[str, int], float]] = []
+            for kind, keys in (("f", fl), ("m", ml)):
+                for ln, k in keys:
+                    v = self.forces[ln][k][1] if kind == "f" else \
+                        g.div(self.moments[ln][k][1], ell)
+                    if v.const is not None:
+                        consts.append((kind, (ln, k), abs(v.const)))
+                    else:
+                        rows.append((kind, (ln, k), v))
+            if not rows:  # constants only (the weights, without inertia): decided here
+                limit_c = frac * max(c for _, _, c in consts)
+                for kind, (ln, k), size in consts:
+                    if size < limit_c:
+                        if kind == "f":
+                            nm, _, at = self.forces[ln][k]
+                            self.forces[ln][k] = (nm, g.K(0.0), at)
+                        else:
+                            self.moments[ln][k] = (self.moments[ln][k][0], g.K(0.0))
+                continue
+            # the largest size, position by position (np.maximum of each: numpy's stack
+            # and a reduction over its axis cost more at a course project's 36 positions)
+            sizes = [g.abs(v) for _, _, v in rows]
+            big = g.K(max(c for _, _, c in consts)) if consts else sizes[0]
+            for sz in (sizes if consts else sizes[1:]):
+                big = g.maximum(big, sz)
             limit = g.mul(big, g.K(frac))
-            # where a size is 0 its load is 0: keeping only the loads at or above the
-            # limit is the general rule's drop of those below it and above 0
-            for (ln, k), s in zip(fl, sizes[:len(fl)], strict=True):
-                nm, vec, at = self.forces[ln][k]
-                keep = g.tmp(f"{g.ref(s)} >= {g.ref(limit)}")
-                self.forces[ln][k] = (nm, g.mul(vec, keep), at)
-            for (ln, k), s in zip(ml, sizes[len(fl):], strict=True):
-                nm, mom = self.moments[ln][k]
-                keep = g.tmp(f"{g.ref(s)} >= {g.ref(limit)}")
-                self.moments[ln][k] = (nm, g.mul(mom, keep))
+            # where a size is 0 its load is 0: keeping the loads at or above the limit is
+            # the general rule's drop of those below it and above 0
+            for (kind, (ln, k), _), sz in zip(rows, sizes, strict=True):
+                keep = g.tmp(f"{g.ref(sz)} >= {g.ref(limit)}")
+                if kind == "f":
+                    nm, vec, at = self.forces[ln][k]
+                    self.forces[ln][k] = (nm, g.mul(vec, keep), at)
+                else:
+                    nm, mom = self.moments[ln][k]
+                    self.moments[ln][k] = (nm, g.mul(mom, keep))
+            for kind, (ln, k), size in consts:
+                keep = g.tmp(f"{g.ref(limit)} <= {size!r}")
+                if kind == "f":
+                    nm, vec, at = self.forces[ln][k]
+                    self.forces[ln][k] = (nm, g.mul(vec, keep), at)
+                else:
+                    nm, mom = self.moments[ln][k]
+                    self.moments[ln][k] = (nm, g.mul(mom, keep))
 
     def _group_size(self, links) -> _V:
         """ℓ of a group (loads.group_size): pairs on one rigid link are constants."""
