@@ -11,7 +11,6 @@ never a test's.
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from pathlib import Path
 
@@ -31,9 +30,8 @@ CASES = sorted(p.relative_to(ROOT).as_posix() for p in
 def _grid(cycle, n: int) -> np.ndarray:
     """n angles over the whole cycle (both turns of a 720° one) plus the sheets' positions
     (dead centres among them): φ and φ + 2π are different moments of a four-stroke cycle."""
-    turns = round(cycle.period / (2 * math.pi))
     fine = cycle.origin + (np.arange(n) + 0.37) * (cycle.period / n)
-    return np.concatenate([fine, np.asarray(cycle.phi, float)]) if turns == 1 else fine
+    return np.concatenate([fine, np.asarray(cycle.phi, float)])
 
 
 def _rel(a, b) -> float:
