@@ -379,6 +379,7 @@ def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
     out: set[float] = set()
     two_pi = 2 * math.pi
     P = cycle.period
+    nodes: dict[int, tuple[LinkTravel, list]] = {}  # per travel: (a, b, x, falling) to find
     for res in mech.resistances:
         if res.over == "crank":
             d = res.strokes[0]
@@ -399,7 +400,9 @@ def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
             if ends:
                 out.update((a % P, b % P))
             for i in _kinks(d, 0.0, 1.0, every_kink):
-                out.add(_travel_angle(mech, cycle, lt, a, b, d[i][0], bool(odd)) % P)
+                nodes.setdefault(id(lt), (lt, []))[1].append((a, b, d[i][0], bool(odd)))
+    for lt, todo in nodes.values():
+        out.update(t % P for t in _travel_angles(mech, cycle, lt, *zip(*todo, strict=True)))
     return tuple(sorted(round(t, 12) for t in out))
 
 
@@ -418,20 +421,23 @@ def _kinks(d, lo: float, hi: float, every_kink: bool = True) -> list[int]:
     return out
 
 
-def _travel_angle(mech: Mechanism, cycle: Cycle, lt: LinkTravel, a: float, b: float,
-                  x: float, falling: bool) -> float:
-    """τ in [a, b] (one stroke of the travel link) where its x reaches ``x`` (bisection)."""
+def _travel_angles(mech: Mechanism, cycle: Cycle, lt: LinkTravel, a, b, x, falling
+                   ) -> list[float]:
+    """τ in [a, b] (one stroke of the travel link) where its x reaches ``x``, for each
+    (a, b, x, falling): all bisected together, one assembly of every midpoint per step
+    (each τ the same number as bisected alone: the arithmetic is elementwise, and a
+    rocker's angle is taken as solved, not unwrapped across the different strokes)."""
     sense = mech.crank.sense
-    lo, hi = a, b
+    lo, hi = np.array(a, float), np.array(b, float)
+    x, falling = np.array(x, float), np.array(falling, bool)
     for _ in range(80):
         mid = 0.5 * (lo + hi)
-        pos = solve_positions(mech, [cycle.origin + sense * mid])
-        f = float(lt.fraction(link_coordinate(mech, lt.link, pos)[1])[0])
-        if (f < x) != falling:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
+        pos = solve_positions(mech, cycle.origin + sense * mid)
+        q = (pos.theta[lt.link] if lt.kind == "rocker"
+             else link_coordinate(mech, lt.link, pos)[1])
+        up = (lt.fraction(q) < x) != falling
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+    return [float(t) for t in 0.5 * (lo + hi)]
 
 
 def shift_inertia_force(vector, moment, centre, max_arm: float = math.inf):
