@@ -50,7 +50,7 @@ from numpy.typing import NDArray
 from ..kinematics import Cycle, analyse_cycle, slide_key, solve
 from ..model import Mechanism
 from .kinetostatics import COND_LIMIT, dyad_pairs, reaction_name, solve_forces
-from .loads import JUMP_TOL, compute_loads, diagram_value
+from .loads import JUMP_TOL, compute_loads, diagram_value, resistance_names
 
 Array = NDArray[np.float64]
 
@@ -944,17 +944,8 @@ class _Loads:
 
     def _resistances(self, cycle: Cycle) -> None:
         st, g, mech = self.st, self.st.g, self.st.mech
-        count = {"force": 0, "moment": 0}
-        for res in mech.resistances:
-            count[res.kind] += res.name is None
-        seen = {"force": 0, "moment": 0}
-        for n_res, res in enumerate(mech.resistances):
-            if res.name is None:
-                seen[res.kind] += 1
-                base = "Q" if res.kind == "force" else "Mс"
-                name = base if count[res.kind] == 1 else f"{base}{seen[res.kind]}"
-            else:
-                name = res.name
+        for n_res, (res, name) in enumerate(zip(mech.resistances, resistance_names(mech),
+                                                strict=True)):
             tl = res.travel_link or mech.output.link
             q = g.K(0.0)
             if res.over == "stroke":

@@ -302,17 +302,7 @@ def resistance_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = Non
         return ()
     cycle = cycle or analyse_cycle(mech)
     out: list[ForceLoad | MomentLoad] = []
-    count = {"force": 0, "moment": 0}
-    for res in mech.resistances:
-        count[res.kind] += res.name is None
-    seen = {"force": 0, "moment": 0}
-    for res in mech.resistances:
-        if res.name is None:
-            seen[res.kind] += 1
-            base = "Q" if res.kind == "force" else "Mс"
-            name = base if count[res.kind] == 1 else f"{base}{seen[res.kind]}"
-        else:
-            name = res.name
+    for res, name in zip(mech.resistances, resistance_names(mech), strict=True):
         q_tr = None
         tl = res.travel_link or mech.output.link
         if res.over == "stroke":
@@ -349,6 +339,24 @@ def resistance_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = Non
                 mom = s * motion * size
             out.append(MomentLoad(name, res.link, kind, np.asarray(mom, float)))
     return tuple(out)
+
+
+def resistance_names(mech: Mechanism) -> tuple[str, ...]:
+    """The name of each of the variant's loads: its ``name``, else ``"Q"`` for a force and
+    ``"Mс"`` for a moment (``Q1``, ``Q2`` … when the variant lists several of one kind)."""
+    count = {"force": 0, "moment": 0}
+    for res in mech.resistances:
+        count[res.kind] += res.name is None
+    seen = {"force": 0, "moment": 0}
+    names = []
+    for res in mech.resistances:
+        if res.name is None:
+            seen[res.kind] += 1
+            base = "Q" if res.kind == "force" else "Mс"
+            names.append(base if count[res.kind] == 1 else f"{base}{seen[res.kind]}")
+        else:
+            names.append(res.name)
+    return tuple(names)
 
 
 def _guide_key(mech: Mechanism, link: str) -> str:
@@ -679,6 +687,7 @@ __all__ = [
     "point_velocity",
     "power_balance_moment",
     "resistance_loads",
+    "resistance_names",
     "shift_inertia_force",
     "stroke_index",
 ]
