@@ -42,7 +42,6 @@ import re
 import sys
 import threading
 import time
-import tomllib
 from collections import Counter, deque
 from dataclasses import dataclass
 from html import escape
@@ -199,15 +198,15 @@ def _one_line(exc: BaseException) -> str:
 def _toml_kind(path: Path, max_bytes: int) -> str:
     """``"student"``, ``"other"`` (a variant, a class file) — or raises the one-line
     error of a file that cannot be read."""
+    from ..model import parse_toml
     from .errors import StudentFileError
 
     raw = read_input(path, max_bytes, StudentFileError)
     try:
-        data = tomllib.loads(decode_text(raw, str(path), StudentFileError))
-    except RecursionError:
-        raise StudentFileError(f"{path}: not valid TOML (nested too deeply)") from None
-    except (tomllib.TOMLDecodeError, ValueError):  # StudentFileError: not UTF-8
-        return "student"  # reported by load_student with its reason
+        data = parse_toml(decode_text(raw, str(path), StudentFileError), str(path),
+                          StudentFileError)
+    except StudentFileError:  # not UTF-8, not TOML: load_student reports it with its reason
+        return "student"
     return "student" if "work" in data else "other"  # a variant, a class file, settings
 
 
