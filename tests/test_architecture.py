@@ -238,3 +238,15 @@ def test_the_readme_module_map_names_every_package_in_layer_order():
     order = [h.rstrip("/") for h in heads if h.endswith("/")]
     rank = {name: k for k, names in enumerate(LAYERS) for name in names}
     assert [rank[p] for p in order] == sorted(rank[p] for p in order)
+
+
+def test_one_toml_reader():
+    """Every TOML input (a variant, a student's work, a class file, settings) is read by
+    :func:`graphplan.model.parse_toml`: its one-line errors and hints hold for all of them.
+    Was: checking/batch.py read students' files with its own ``tomllib.loads``."""
+    readers = sorted(m for m, p in MODULES.items()
+                     if any(isinstance(n, (ast.Import, ast.ImportFrom))
+                            and "tomllib" in ([a.name for a in n.names] if isinstance(n, ast.Import)
+                                              else [n.module or ""])
+                            for n in ast.walk(ast.parse(p.read_text(encoding="utf-8")))))
+    assert readers == ["graphplan.model.toml_text"]
