@@ -50,6 +50,7 @@ from .sheet import (
 
 L = "position_plan"
 MARGIN = 12.0  #: room around a scheme for its arrows and letters, mm
+CAPTION_GAP = 9.0  #: from the foot of a scheme's caption (its scale) to the scheme's top, mm
 OMEGA_R, EPS_R = 5.0, 8.5  #: radii of the arrows of ω and ε, mm
 TURNING = 1e-9  #: |ω|, |ε| below this: the link does not turn (rad/s, rad/s²)
 #: Mantissas of the schemes' length scales: the reductions of GOST 2.302 (1:1, 1:1.5 … 1:7.5,
@@ -247,12 +248,16 @@ def _lettered(items: list[Item], labels: list[LabelRequest], cell: Rect, caption
     and the scale in its bottom-left corner."""
     from shapely.geometry import box as shp_box
 
-    head = text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), caption, 3.5,
-                          layer="text", id=f"{ident}-caption")
-    foot = text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION + 1.5), scale, 2.5,
-                          layer="text", id=f"{ident}-scale")
     obstacles = [g for it in iter_leaves(items) if (g := item_geometry(it)) is not None
                  and not isinstance(it, Hatch)]
+    # the caption and the scale over the drawing (CAPTION_GAP above its top), not at the top
+    # of a cell the drawing does not fill (a scheme 60 mm under its caption)
+    top = min((g.bounds[1] for g in obstacles), default=cell.y0)
+    y = max(cell.y0, top - CAPTION_GAP - CAPTION - 1.5)
+    head = text_at_centre(((cell.x0 + cell.x1) / 2, y + CAPTION / 2), caption, 3.5,
+                          layer="text", id=f"{ident}-caption")
+    foot = text_at_centre(((cell.x0 + cell.x1) / 2, y + CAPTION + 1.5), scale, 2.5,
+                          layer="text", id=f"{ident}-scale")
     outside = shp_box(cell.x0 - 500, cell.y0 - 500, cell.x1 + 500, cell.y1 + 500).difference(
         shp_box(cell.x0 + 0.5, cell.y0 + 0.5, cell.x1 - 0.5, cell.y1 - 0.5))
     keep = [outside, text_box(head).buffer(0.8), text_box(foot).buffer(0.8)]

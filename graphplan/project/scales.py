@@ -43,6 +43,7 @@ PLAN_MARGIN = 14.0  #: room around the plan of positions for symbols and letters
 SLACK = 8.0  #: of a cell's margins a plan may take when that spares it the coarser scale, mm
 READ_MIN = 53.0  #: a plan's longest vector, arrowhead included, is read at least this long
 #: (its shaft 50 mm, the method's least main vector), mm
+READ_MEDIAN = 50.0  #: the plans' longest vectors have at least this median (the method: 50–100)
 LONGEST_READ = 40.0  #: a plan whose longest vector the cells keep shorter is not read: fewer
 #: positions' plans are drawn, larger (the norm's least longest vector), mm
 SLOT_OVER = 11.0  #: a slot runs this far past its block's centre at the ends of its travel, mm
@@ -185,22 +186,32 @@ def acceleration_positions(mech: Mechanism, kin, cycle=None, forces=None) -> tup
 
     ``drawing.accelerations`` (labels) when the variant gives it; else the positions of
     the force analysis (``kinetostatics.positions``, or by default the working position(s)
-    and one idle position, :func:`default_positions`): the plans sheet 2 is built on.
+    and one idle position, :func:`default_positions`): the plans sheet 2 is built on. Where
+    the force analysis is of one position, a second plan beside it: the default's position
+    of the other stroke (working or idle), as students draw at least two.
     ``cycle`` and ``forces`` are the project's (solved here when not given).
     """
     which = positions_by_label(mech, kin, "drawing", "accelerations")
     if which is not None:
         return which
-    which = positions_by_label(mech, kin, "kinetostatics")
-    if which is not None:
-        return which
+    given = positions_by_label(mech, kin, "kinetostatics")
+    if given is not None and len(given) >= 2:
+        return given
     from ..forces import compute_loads, solve_forces
     from ..kinematics import analyse_cycle
 
     cycle = analyse_cycle(mech) if cycle is None else cycle
     if forces is None:
         forces = solve_forces(mech, kin, compute_loads(mech, kin, cycle))
-    return default_positions(mech, kin, forces, cycle)
+    default = default_positions(mech, kin, forces, cycle)
+    if given is None:
+        return default
+    # one position of the force analysis: the plan of a position of the other stroke
+    # (the default's of the largest |Mур| there) beside it, as students draw two
+    working = in_working_stroke(mech, cycle, kin.phi)
+    other = [k for k in default if k not in given and working[k] != working[given[0]]]
+    rest = other or [k for k in default if k not in given]
+    return (*given, *rest[:1])
 
 
 def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
@@ -244,71 +255,85 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
             break
         kl_m = kl.per_mm
     acc = acceleration_positions(mech, kin, cycle, forces)
-    # an acceleration plan is built on its position's velocity plan: that one is drawn too
-    plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
-    plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
-    # the velocity plans of every position; on a smaller format, as many as fit: every
-    # second position, then the acceleration plans' positions only (of drawing.positions,
-    # when the variant gives it: on its own format it is drawn as given)
-    given = positions_by_label(mech, kin, "drawing")
-    every = tuple(range(kin.n)) if given is None else given
-    tries = [every, every[::2], ()]
-    scheme_aspect = _scheme_aspect(mech, kin, acc)
-    for n_try, chosen in enumerate(tries):
-        which = tuple(sorted(set(chosen) | set(acc)))
-        v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc)
-        longest = (max(v_long, default=1.0), max(a_long, default=1.0))
-        try:
-            layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
-                                   len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads))
-            # plans too small to read: fewer of them, larger
-            if layout.plan_size * max(longest) >= LONGEST_READ or n_try == len(tries) - 1:
-                break
-        except LayoutError:
-            if n_try == len(tries) - 1:
-                raise
-    va = abs(cr.omega) * cr.length
-    aa = cr.omega**2 * cr.length
 
-    def fit(cells, shapes, longs, defining) -> float:
-        """Units per mm: of the series values whose plans all fit their cells (the room
-        kept for letters and construction lines may be eaten by SLACK) with no vector over
-        VECTOR_HARD, the one that draws the most plans with their longest vector READ_MIN
-        to VECTOR_MAX mm long; of equals, the one whose plans are nearest those marks."""
-        rooms = [cell_room(c) for c in cells]
-        loose = min([min((iw + SLACK) / max(sw, 1e-9), (ih + SLACK) / max(sh, 1e-9))
-                     for (iw, ih), (sw, sh) in zip(rooms, shapes, strict=True)]
-                    + [VECTOR_HARD / max(max(longs), 1e-9)])
-        d = max(defining, 1e-12)
-        e0 = math.floor(math.log10(d / max(loose, 1e-9)))
-        values = sorted(float(f"{m * 10.0**e:.12g}") for e in (e0 - 1, e0, e0 + 1)
-                        for m in PLAN_SERIES)
-        fitting = [u for u in values if d / u <= loose] or [values[-1]]
+    def at(acc: tuple[int, ...]) -> tuple[Sheet1Scales, list[float]]:
+        """The scales and layout with the acceleration plans of ``acc``, and the longest
+        vector of every plan drawn, mm."""
+        # an acceleration plan is built on its position's velocity plan: that one is drawn too
+        plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
+        plan_h = (ext[3] - ext[1]) / kl.per_mm + 2 * PLAN_MARGIN
+        # the velocity plans of every position; on a smaller format, as many as fit: every
+        # second position, then the acceleration plans' positions only (of drawing.positions,
+        # when the variant gives it: on its own format it is drawn as given)
+        given = positions_by_label(mech, kin, "drawing")
+        every = tuple(range(kin.n)) if given is None else given
+        tries = [every, every[::2], ()]
+        scheme_aspect = _scheme_aspect(mech, kin, acc)
+        for n_try, chosen in enumerate(tries):
+            which = tuple(sorted(set(chosen) | set(acc)))
+            v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc)
+            longest = (max(v_long, default=1.0), max(a_long, default=1.0))
+            try:
+                layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
+                                       len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads))
+                # plans too small to read: fewer of them, larger
+                if layout.plan_size * max(longest) >= LONGEST_READ or n_try == len(tries) - 1:
+                    break
+            except LayoutError:
+                if n_try == len(tries) - 1:
+                    raise
+        va = abs(cr.omega) * cr.length
+        aa = cr.omega**2 * cr.length
 
-        def score(u):
-            mm = [lg * d / u for lg in longs]
-            good = sum(READ_MIN <= x <= VECTOR_MAX for x in mm)
-            miss = sum(max(READ_MIN - x, 0.0) + max(x - VECTOR_MAX, 0.0) for x in mm)
-            return good, -miss
+        def fit(cells, shapes, longs, defining) -> float:
+            """Units per mm: of the series values whose plans all fit their cells (the room
+            kept for letters and construction lines may be eaten by SLACK) with no vector over
+            VECTOR_HARD, the one that draws the most plans with their longest vector READ_MIN
+            to VECTOR_MAX mm long; of equals, the one whose plans are nearest those marks."""
+            rooms = [cell_room(c) for c in cells]
+            loose = min([min((iw + SLACK) / max(sw, 1e-9), (ih + SLACK) / max(sh, 1e-9))
+                         for (iw, ih), (sw, sh) in zip(rooms, shapes, strict=True)]
+                        + [VECTOR_HARD / max(max(longs), 1e-9)])
+            d = max(defining, 1e-12)
+            e0 = math.floor(math.log10(d / max(loose, 1e-9)))
+            values = sorted(float(f"{m * 10.0**e:.12g}") for e in (e0 - 1, e0, e0 + 1)
+                            for m in PLAN_SERIES)
+            fitting = [u for u in values if d / u <= loose] or [values[-1]]
 
-        return max(fitting, key=score)
+            def score(u):
+                mm = [lg * d / u for lg in longs]
+                good = sum(READ_MIN <= x <= VECTOR_MAX for x in mm)
+                miss = sum(max(READ_MIN - x, 0.0) + max(x - VECTOR_MAX, 0.0) for x in mm)
+                return good, -miss
 
-    kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, v_shapes, v_long, va), 1.0,
-                   quantity=f"v{cr.pin}", defining=va,
-                   segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"),
-                   series=PLAN_SERIES)
-    ka_fit = fit(layout.a_cells, a_shapes, a_long, aa) if a_shapes else \
-        nice_ceil(aa / 50.0, PLAN_SERIES)
-    ka = fit_scale("Ka", "(m/s²)/mm", ka_fit, 1.0,
-                   quantity=f"a{cr.pin}", defining=aa,
-                   segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
-                   series=PLAN_SERIES)
-    # the cells cut again round the plans at the scales chosen: the place they leave to
-    # the diagrams and the schemes
-    sizes = (va / kv.per_mm, aa / ka.per_mm if a_shapes else 0.0)
-    layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
-                           len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes)
-    return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc)
+            return max(fitting, key=score)
+
+        kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, v_shapes, v_long, va), 1.0,
+                       quantity=f"v{cr.pin}", defining=va,
+                       segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"),
+                       series=PLAN_SERIES)
+        ka_fit = fit(layout.a_cells, a_shapes, a_long, aa) if a_shapes else \
+            nice_ceil(aa / 50.0, PLAN_SERIES)
+        ka = fit_scale("Ka", "(m/s²)/mm", ka_fit, 1.0,
+                       quantity=f"a{cr.pin}", defining=aa,
+                       segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
+                       series=PLAN_SERIES)
+        # the cells cut again round the plans at the scales chosen: the place they leave to
+        # the diagrams and the schemes
+        sizes = (va / kv.per_mm, aa / ka.per_mm if a_shapes else 0.0)
+        layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
+                               len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes)
+        drawn = ([lg * sizes[0] for lg in v_long] + [lg * sizes[1] for lg in a_long])
+        return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc), drawn
+
+    sc, drawn = at(acc)
+    given = positions_by_label(mech, kin, "kinetostatics")
+    if given is not None and len(acc) > len(given) and not (
+            min(drawn) >= LONGEST_READ and float(np.median(drawn)) >= READ_MEDIAN):
+        # the second acceleration plan (acceleration_positions) makes the plans too small to
+        # read: the force analysis's position alone
+        sc, _ = at(given)
+    return sc
 
 
 def _scheme_aspect(mech: Mechanism, kin, acc: tuple[int, ...]) -> float:
@@ -319,7 +344,7 @@ def _scheme_aspect(mech: Mechanism, kin, acc: tuple[int, ...]) -> float:
     pts = np.concatenate([np.array([p[k] for p in kin.pos.points.values()]) for k in acc])
     w, h = np.ptp(pts, axis=0)
     span = max(float(w), float(h), 1e-12)
-    return float(np.clip((w + 0.25 * span) / (h + 0.25 * span), 0.6, 2.5))
+    return float(np.clip((w + 0.25 * span) / (h + 0.25 * span), 0.6, 6.0))
 
 
 def default_positions(mech, kin, forces, cycle) -> tuple[int, ...]:

@@ -79,6 +79,8 @@ def _delta(diag: float, plan: float, big: float) -> str:
     if abs(plan) < ZERO_SHARE * big:
         return DASH
     pct = (diag - plan) / plan * 100.0
+    if abs(pct) < 0.05:
+        return "0.0"
     return f"{pct:+.1f}" if abs(pct) < 1000 else f"{pct:+.0f}"
 
 
