@@ -47,7 +47,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..kinematics import Cycle, analyse_cycle, slide_key, solve
+from ..errors import GraphplanError
+from ..kinematics import Cycle, analyse_cycle, slide_key, solve, translating_links
 from ..model import Mechanism
 from .kinetostatics import COND_LIMIT, dyad_pairs, reaction_name, solve_forces
 from .loads import JUMP_TOL, compute_loads, diagram_value, resistance_names
@@ -346,8 +347,8 @@ class FullCycle:
             if st.get("shift_inertia_force", False):
                 raise _NotNative("shift_inertia_force")
             self._compile()
-        except _NotNative:
-            self.native = False
+        except (_NotNative, GraphplanError):  # (the probe cannot be assembled: the general
+            self.native = False                # path says where, when it is called)
 
     # -------------------------------------------------------------- the general path
     def general(self, phi) -> CycleSolution:
@@ -383,8 +384,7 @@ class FullCycle:
     def _compile(self) -> None:
         mech, g = self.mech, _Gen()
         probe = solve(mech, [self.cycle.origin])  # distances a rigid link keeps
-        self._probe = probe
-        self._g = g
+        self._g = g  # the generated code's names (for a look at the source with its values)
         st = _State(mech, g, probe)
         st.positions()
         st.velocities()
@@ -456,7 +456,7 @@ class _State:
         self.SV: dict = {}               # sliding speeds by pair key (see sv)
         self.along: dict[str, _V] = {}   # an RRP slider's coordinate along its guide
         self.dyad: dict[str, dict] = {}  # per dyad what its velocity solve shares
-        self.still = _translating(mech)
+        self.still = translating_links(mech)
 
     def dist(self, a: str, b: str) -> float:
         """|ab| at the probe (for two points of one rigid link: constant)."""
@@ -516,14 +516,14 @@ class _State:
                 u = self.axis[p.link]
             self.P[p.name] = g.add(origin, g.mul(u, g.K(complex(p.along, p.across))))
 
-    def _guide(self, gd, where_point: str | None = None) -> tuple[_V, _V]:
+    def _guide(self, gd) -> tuple[_V, _V]:
         g = self.g
         if gd.through is not None:
             base = self.P[gd.through]
         else:
             base = g.K(complex(float(gd.xy[0]), float(gd.xy[1])))
         if gd.toward is not None:
-            if not self.on_one_link(gd.through or "", gd.toward) or gd.through is None:
+            if gd.through is None or not self.on_one_link(gd.through, gd.toward):
                 raise _NotNative("a guide toward a point of another link")
             dist = self.dist(gd.through, gd.toward)
             u = g.mul(g.sub(self.P[gd.toward], base), g.K(1.0 / dist))
@@ -902,12 +902,6 @@ def _interp(xs, ys, nodes, d, signed: bool, clip: bool, lo: float, hi: float):
         return np.maximum(v, 0.0) if clip else v
 
     return value
-
-
-def _translating(mech: Mechanism) -> set[str]:
-    from ..kinematics import translating_links
-
-    return translating_links(mech)
 
 
 class _Loads:
