@@ -598,3 +598,95 @@ def test_in_line_twin_with_cranks_at_180_turning_moment_is_two_closed_forms():
     grav = compute_loads(mech, sol, a.cycle, kinds=("gravity",), inertia=False)
     Mg = load_power(mech, sol, grav) / abs(mech.crank.omega)
     np.testing.assert_allclose(M - Mg, closed(fine), rtol=1e-9, atol=1e-9 * np.abs(M).max())
+
+
+# --- the variants' sheet 1 (issue 18's defects found on the families' variants) -------------
+
+VARIANT_DIR = ROOT / "tests" / "data" / "variants"
+
+
+def test_a_loaded_coupler_point_is_traced_and_numbered(drawn):
+    """The dough mixer's load acts at E, the end of the kneading arm on the coupler: sheet 1's
+    plan of positions draws E's trajectory (the machine's working loop, a closed dash-dot
+    curve through E of every position) and numbers E in every position, as it numbers the
+    crank pin; the centres of mass's paths stay drawn."""
+    from graphplan.drawing import Polyline, Text, iter_leaves
+
+    sheet = drawn(VARIANT_DIR / "dough_mixer.toml", 1)
+    items = list(iter_leaves(sheet.items))
+    paths = {it.id: it for it in items if isinstance(it, Polyline) and (it.id or "").startswith(
+        "pp-path-")}
+    assert {"pp-path-E", "pp-path-S2", "pp-path-S3"} <= set(paths)
+    assert paths["pp-path-E"].closed
+    texts = [it.text for it in items if isinstance(it, Text) and (it.id or "").startswith(
+        "pp-label")]
+    numbers = {t for t in " ".join(texts).replace(",", " ").split() if t.startswith("E")}
+    assert {f"E{k}" for k in range(1, 13)} <= numbers, sorted(numbers)
+
+
+def test_the_stroke_arcs_have_ends(drawn):
+    """The arcs of the working and idle strokes round the crank stop short of the dead
+    centres and end in arrowheads in the sense of rotation (the dough mixer's two arcs of
+    183° and 177° closed into one thin circle round the crank circle, read as a second
+    crank circle); round a short crank (the crusher's 6 mm) they stay plain arcs."""
+    from graphplan.drawing import Arc, Arrow, iter_leaves
+
+    items = list(iter_leaves(drawn(VARIANT_DIR / "dough_mixer.toml", 1).items))
+    arcs = {it.id: it for it in items if isinstance(it, Arc) and (it.id or "").startswith(
+        "pp-arc-")}
+    heads = [it for it in items if isinstance(it, Arrow) and (it.id or "").startswith(
+        "pp-arc-")]
+    assert set(arcs) == {"pp-arc-working-arc", "pp-arc-idle-arc"} and len(heads) == 2
+    r = next(iter(arcs.values())).r
+    swept = sum(abs(a.end_deg - a.start_deg) for a in arcs.values())
+    # two gaps of ARC_GAP = 2.5 mm at each of the two dead centres: 4 × 2.5 mm of arc
+    assert swept == pytest.approx(360.0 - math.degrees(4 * 2.5 / r), abs=1e-6)
+    crusher = [it for it in iter_leaves(drawn("crusher", 1).items)
+               if (it.id or "").startswith("pp-arc-")]
+    assert crusher and not any(isinstance(it, Arrow) for it in crusher)
+
+
+def test_a_720_cycle_draws_the_velocity_plans_of_one_turn(solved, drawn):
+    """The in-line twin's 24 positions over 720° repeat their kinematics each turn: sheet 1
+    draws the 12 velocity plans of the first turn (it drew every second of the 24, so
+    positions 12 … 22 repeated 0 … 10); an acceleration plan of the second turn (13, 19,
+    the force analysis's) stands on its twin's velocity plan, captioned with both labels."""
+    from graphplan.drawing import Text, iter_leaves
+    from graphplan.project import distinct_positions
+
+    a = solved(VARIANT_DIR / "inline_twin_180.toml")
+    assert distinct_positions(a.kin) == tuple(range(12))
+    sc = a.sheet1
+    assert sc.plans == tuple(range(12)) and sc.acc_plans == (13, 19)
+    caps = {it.text for it in iter_leaves(drawn(VARIANT_DIR / "inline_twin_180.toml", 1).items)
+            if isinstance(it, Text) and it.text.startswith("План скоростей")}
+    assert {"План скоростей, пол. 1, 13", "План скоростей, пол. 7, 19"} <= caps
+    assert len(caps) == 12
+    # a one-turn cycle keeps every position
+    press = solved("press")
+    assert distinct_positions(press.kin) == tuple(range(press.kin.n))
+
+
+def test_a_scheme_is_not_coarsened_for_what_does_not_shrink():
+    """sheet 1's schemes take the finest Kl of the series whose drawing fits their box; a
+    part drawn at a fixed paper size (a guide's 36 mm hatched strip) that overflows the box
+    at every Kl by less than half the margin must not raise Kl step after step (the rotating
+    кулиса's ω/ε scheme went from 0.015 to 0.15 m/mm, its links a 3 mm blob)."""
+    from graphplan.drawing import Line
+    from graphplan.drawing.sheet import Rect, Style
+    from graphplan.drawing.sheet1_schemes import MARGIN, _drawn_to_fit
+
+    box = Rect(0.0, 0.0, 100.0, 35.0)
+    pts = np.array([[0.0, 0.0], [0.3, 0.47]])        # 0.47 m tall: fits 35 mm at 0.015
+
+    def draw(P):
+        x, y = P(pts[1])
+        x0, y0 = P(pts[0])
+        # the links, and a fixed 36.4 mm strip: 1.4 mm over the box at any scale
+        return [Line((x0, y0), (x, y), Style(0.5), layer="construction"),
+                Line((x0 + 5.0, 17.5 - 18.2), (x0 + 5.0, 17.5 + 18.2), Style(0.5),
+                     layer="construction")]
+
+    kl, _, _ = _drawn_to_fit(pts, box, draw)
+    assert kl == pytest.approx(0.015)
+    assert MARGIN / 2 >= 1.4

@@ -4,7 +4,8 @@ added): a two-stroke engine, an in-line compressor, an in-line twin over 720°, 
 kN diagram, a crusher with a force on the jaw, a four-bar clockwise at 12 rad/s, a shaper
 cutting part of its stroke, a four-bar with a fixed-direction force, an in-line twin with cranks
 at 180°, a two-stage V compressor in кгс/см², a dough mixer loaded at a coupler point, rocking
-shears (кулиса → RRR) in rad/s and N, a slotting machine with a rotating кулиса…
+shears (кулиса → RRR) in rad/s and N, a slotting machine with a rotating кулиса, a two-stage
+opposed compressor with its cranks at 180°, a rocking conveyor (RRR → RRP, weights in N)…
 
 Issue 17 holds the assignment families to the sheets issue's norm control: each variant's
 sheets are measured with the same measures as the examples' (``norm_measures``):
@@ -49,7 +50,12 @@ TODO = {
     # 100 mm at one Ka, and its pole letters 'p, a3, b, s3, d, s4, s5' crossed by the plan's
     # lines. (The two-stage compressor's crank scheme, Kl 0.00025, ran its R21 line over group
     # 4–5's equations, and the loom's too: the crank is drawn at most 4x the groups' scale.)
+    # Session 9: the in-line twin draws the 12 velocity plans of one turn (the second turn's
+    # positions 13 and 19 are captioned on their twins 1 and 7), still at Kv 0.3: pa = 47 mm,
+    # but the two pistons' vectors point opposite ways, so a plan is twice its longest vector
+    # tall (94 mm) in rows of 102 mm — as in the opposed compressor (43/44 mm).
     ("inline_twin_180", 1, "plans"),
+    ("opposed_compressor", 1, "plans"),
     ("shears_rocking", 1, "plans"),
     ("shears_rocking", 1, "overlaps"),
 }

@@ -404,6 +404,24 @@ def test_the_scheme_of_the_machine_unit_where_delta_t_leaves_room(solved):
     assert not [it for it in iter_leaves(press.items) if (it.id or "").startswith("s3-unit-")]
 
 
+def test_a_flywheel_on_the_motors_shaft_is_captioned_with_its_own_inertia(solved):
+    """The rocking conveyor's flywheel sits on the motor's shaft (``flywheel.shaft =
+    "motor"``): the scheme of the machine unit gives the wheel drawn there its own moment of
+    inertia, Jм.дв = Jм/u² (57.5/15² ≈ 0.256 kg·m²), not the crank's Jм, u² times larger."""
+    from pathlib import Path
+
+    from graphplan.numbers import fmt
+
+    a = solved(Path(__file__).parent / "data" / "variants" / "rocking_conveyor.toml")
+    u = a.unit_on(Page("A1"))
+    assert u.shaft == "motor" and u.motor is not None
+    assert u.mounted.inertia == pytest.approx(u.flywheel.I_m / u.motor.u**2, rel=1e-12)
+    cap = next(it.text for it in iter_leaves(dynamics_sheet(a).items)
+               if it.id == "s3-unit-fly-cap")
+    assert cap.startswith("Jм.дв = ") and fmt(u.mounted.inertia, 4).replace(".", ",") in cap
+    assert fmt(u.flywheel.I_m, 4).replace(".", ",") not in cap
+
+
 @pytest.mark.parametrize("name", ["press", "engine", "compressor", "dough_mixer"])
 def test_the_flywheel_results_can_be_followed(solved, name):
     """The result Jм = JI − Jкр (− Jрот·u²) writes its terms out and they subtract to the

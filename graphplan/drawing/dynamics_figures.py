@@ -538,9 +538,12 @@ def unit_scheme_items(u, x: float, y: float, width: float, title: str, lang: str
                               id="s3-unit-flywheel"))
         items.append(Text((cx, ys - 15.5), w["fly"], 3.5, "middle", layer=LAYER,
                           id="s3-unit-fly-name"))
-        items.append(Text((cx, ys + 8.0 + bh / 2), sheet_text(
-            f"Jм = {fmt(fw.I_m, 4)} {ww['kgm2']}", lang), 3.5, "middle", layer=LAYER,
-            id="s3-unit-fly-cap"))
+        # on the motor's shaft the flywheel's own moment of inertia, Jм.дв = Jм/u² (the
+        # Jм of the crank would be u² times too large for the wheel drawn there)
+        cap = (f"{'Jм.дв' if lang == 'ru' else 'Jм,motor'} = {fmt(u.mounted.inertia, 4)}"
+               if u.shaft == "motor" and u.motor is not None else f"Jм = {fmt(fw.I_m, 4)}")
+        items.append(Text((cx, ys + 8.0 + bh / 2), sheet_text(f"{cap} {ww['kgm2']}", lang),
+                          3.5, "middle", layer=LAYER, id="s3-unit-fly-cap"))
     return items
 
 

@@ -17,7 +17,7 @@ from dataclasses import replace
 import numpy as np
 from shapely.geometry import Polygon
 
-from ..kinematics import link_coordinate, output_coordinate
+from ..kinematics import link_coordinate, output_coordinate, translating_links
 from ..plans import Plan
 from ..project import (
     CAPTION,
@@ -27,6 +27,7 @@ from ..project import (
     TABLE_PAD,
     Sheet1Scales,
     fit_columns,
+    kinematic_twin,
     titled_table,
 )
 from .labels import LabelRequest, place_labels
@@ -146,8 +147,15 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
             if p not in numbered:
                 numbered.append(p)
 
-    # trajectories of the centres of mass (closed curves) and of the crank pin
-    for name in sorted(centres | {mech.crank.pin}):
+    # trajectories of the centres of mass (closed curves), of the crank pin, and of every
+    # point a load acts at or a coupler point of [[points]] (a kneading arm's end E: the
+    # machine's working loop) on a link that turns and moves (not on the crank, nor a slider);
+    # a loaded point there is numbered in every position as the output's point is
+    moving = set(mech.moving_links) - translating_links(mech) - {mech.crank.link}
+    traced = centres | {mech.crank.pin} | _traced_points(mech, moving)
+    numbered += sorted(r.point for r in mech.resistances
+                       if r.point and r.link in moving and r.point not in numbered)
+    for name in sorted(traced):
         if name not in paths or name in mech.frame_points:
             continue
         pts = [P(q) for q in paths[name][:-1]]
@@ -253,6 +261,16 @@ def position_plan_items(analysis, sc: Sheet1Scales, lang: str) -> list[Item]:
     return items
 
 
+def _traced_points(mech, moving: set[str]) -> set[str]:
+    """The points whose trajectory the plan of positions draws besides the centres of mass:
+    a load's point and a coupler point (of [[points]], not a joint of a pair) on a link of
+    ``moving``."""
+    loaded = {r.point for r in mech.resistances if r.point and r.link in moving}
+    joints = set(_joints(mech)) | set(mech.frame_points)
+    coupler = {p.name for p in mech.points if p.link in moving and p.name not in joints}
+    return loaded | coupler
+
+
 def _clear_caption(box: Rect, text: str, h: float, obstacles, avoid,
                    span: tuple[float, float]) -> Text:
     """The caption of the plan of positions at the top left of its box, or, where a line
@@ -300,6 +318,8 @@ def _dedupe(reqs: list[LabelRequest]) -> list[LabelRequest]:
 
 
 ARC_OFFSET = 7.0  #: the arcs of the working and idle strokes run this far outside the crank circle
+ARC_GAP = 2.5  #: and stop this far short of the dead centres, mm
+ARC_HEADS = 20.0  #: arcs of this radius (mm) and more end in arrowheads
 
 
 def _stroke_arcs(analysis, c: Pt, kl: float, lang: str, items: list) -> list[LabelRequest]:
@@ -314,11 +334,24 @@ def _stroke_arcs(analysis, c: Pt, kl: float, lang: str, items: list) -> list[Lab
     full = math.degrees(cy.period) if cy.period <= 2 * math.pi + 1e-9 else 360.0
     sense = 1.0 if cr.omega >= 0 else -1.0
     names = ("р.х.", "х.х.") if lang == "ru" else ("w.s.", "i.s.")
+    # each arc stops ARC_GAP mm short of the dead centres and ends in an arrowhead in the
+    # sense of rotation: two arcs with ends, not one thin circle round the crank circle;
+    # round a short crank (an arc under ARC_HEADS mm) the heads would crowd its numbers:
+    # plain arcs 2° short of the dead centres there
+    heads = r >= ARC_HEADS
+    gap = math.degrees(ARC_GAP / r) if heads else 2.0
     out = []
     for n, (a0, sweep) in enumerate(((start, work), (start + sense * work, full - work))):
         lo, hi = (a0, a0 + sweep) if sense > 0 else (a0 - sweep, a0)
-        items.append(Arc(c, r, lo + 2.0, hi - 2.0, THIN, layer="position_plan",
-                         id=f"pp-arc-{'working' if n == 0 else 'idle'}"))
+        if hi - lo <= 2.0 * gap + 1.0:
+            continue
+        ident = f"pp-arc-{'working' if n == 0 else 'idle'}"
+        if not heads:
+            items.append(Arc(c, r, lo + gap, hi - gap, THIN, layer="position_plan", id=ident))
+        else:
+            items += turning_arrow(c, r, lo + gap, hi - lo - 2.0 * gap, sense > 0,
+                                   math.degrees(4.0 / r), layer="position_plan",
+                                   ident=ident)
         out.append(LabelRequest(arc_point(c, r, (lo + hi) / 2), names[n], 3.5, group="arcs"))
     return out
 
@@ -580,7 +613,10 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
     for c, k in enumerate(sc.plans):
         vp = analysis.velocity_plan(k, precision, page)  # the lessons' plan too
         cell = sc.layout.v_cells[c]
-        items += plan_items(vp, cell, f"{w['velocity']}, {w['pos']} {kin.labels[k]}", f"vp{k}",
+        # the plan of a position of the other turn (720°) whose acceleration plan is drawn
+        same = [kin.labels[j] for j in sc.acc_plans if kinematic_twin(kin, j, (k,)) == k]
+        items += plan_items(vp, cell, f"{w['velocity']}, {w['pos']} "
+                            f"{', '.join([kin.labels[k], *same])}", f"vp{k}",
                             leaders=PLAN_LEADERS)
         items += ill_mark_items(vp, cell, f"vp{k}", lang)
     for c, k in enumerate(sc.acc_plans):

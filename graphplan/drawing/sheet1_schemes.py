@@ -41,6 +41,7 @@ from .sheet import (
     Pt,
     Rect,
     Style,
+    Text,
     arc_point,
     item_geometry,
     iter_leaves,
@@ -77,6 +78,7 @@ def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
     slots and guides included, which the points alone do not bound — fits ``box``,
     centred in it: ``(kl, P, items)``."""
     kl = _fit(points, box.width, box.height) if kl is None else kl
+    best: tuple[float, float, _Paper] | None = None  # (overflow, kl, P) of the scale before
     for _ in range(6):
         P = _centred(points, kl, box)
         items = draw(P)
@@ -85,8 +87,16 @@ def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
         dx = (box.x0 + box.x1) / 2 - (x0 + x1) / 2
         dy = (box.y0 + box.y1) / 2 - (y0 + y1) / 2
         P = _Paper((P.ox + dx, P.oy + dy), kl, P.pivot)
-        if x1 - x0 <= box.width + 1e-6 and y1 - y0 <= box.height + 1e-6:
+        over = max(x1 - x0 - box.width, y1 - y0 - box.height)
+        if over <= 1e-6:
             return kl, P, draw(P)
+        if best is not None and over > best[0] - 0.5 and best[0] <= MARGIN / 2:
+            # a coarser scale does not shrink it: what overflows is drawn at a fixed paper
+            # size (a guide's hatched strip, a block), not the links — keep the scale before,
+            # into at most half the margin kept round the box, rather than draw the links as
+            # blobs (a rotating кулиса's scheme went to Kl 0.15 m/mm, the press's groups 0.01)
+            return best[1], best[2], draw(best[2])
+        best = (over, kl, P)
         kl = nice_ceil(kl * 1.01, SCHEME_SERIES)
     return kl, P, draw(P)
 
@@ -261,6 +271,8 @@ def _lettered(items: list[Item], labels: list[LabelRequest], cell: Rect, caption
     outside = shp_box(cell.x0 - 500, cell.y0 - 500, cell.x1 + 500, cell.y1 + 500).difference(
         shp_box(cell.x0 + 0.5, cell.y0 + 0.5, cell.x1 - 0.5, cell.y1 - 0.5))
     keep = [outside, text_box(head).buffer(0.8), text_box(foot).buffer(0.8)]
+    # the texts already there (the groups' formulas under their pieces) are kept clear too
+    keep += [text_box(it).buffer(0.8) for it in iter_leaves(items) if isinstance(it, Text)]
     items += place_labels(labels, obstacles, layer=L, id_prefix=f"{ident}-t", merge_mm=1.0,
                           keep_out=keep, leaders=20.0)
     return [*items, head, foot]

@@ -137,9 +137,30 @@ def positions_by_label(mech: Mechanism, kin, section: str, key: str = "positions
 
 
 def plan_positions(mech: Mechanism, kin) -> tuple[int, ...]:
-    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or all)."""
+    """Indices of the positions whose plans sheet 1 draws (``drawing.positions``, or every
+    position of :func:`distinct_positions`)."""
     which = positions_by_label(mech, kin, "drawing")
-    return tuple(range(kin.n)) if which is None else which
+    return distinct_positions(kin) if which is None else which
+
+
+def distinct_positions(kin) -> tuple[int, ...]:
+    """The positions whose kinematics no earlier position repeats: all of a one-turn cycle;
+    the first turn of a four-stroke cycle (720°), whose positions 12 … 23 stand where 0 … 11
+    stand, with the same velocities and accelerations (the crank turns at constant ω1)."""
+    kept: list[int] = []
+    for k in range(kin.n):
+        if kinematic_twin(kin, k, kept) is None:
+            kept.append(k)
+    return tuple(kept)
+
+
+def kinematic_twin(kin, k: int, among) -> int | None:
+    """The first of the positions ``among`` (other than ``k``) where the crank stands as in
+    position ``k`` (the same angle of O→A: the other turn of a 720° cycle), or None."""
+    turn = 2.0 * math.pi
+    phi = float(kin.phi[k])
+    return next((j for j in among if j != k
+                 and abs((phi - float(kin.phi[j]) + math.pi) % turn - math.pi) < 1e-9), None)
 
 
 def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...]):
@@ -266,11 +287,14 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         # second position, then the acceleration plans' positions only (of drawing.positions,
         # when the variant gives it: on its own format it is drawn as given)
         given = positions_by_label(mech, kin, "drawing")
-        every = tuple(range(kin.n)) if given is None else given
+        every = distinct_positions(kin) if given is None else given
         tries = [every, every[::2], ()]
         scheme_aspect = _scheme_aspect(mech, kin, acc)
         for n_try, chosen in enumerate(tries):
-            which = tuple(sorted(set(chosen) | set(acc)))
+            # an acceleration plan's velocity plan is drawn, once: a position of the second
+            # turn of a 720° cycle is built on its twin's of the first turn
+            which = tuple(sorted(set(chosen) | {k for k in acc
+                                                if kinematic_twin(kin, k, chosen) is None}))
             v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc)
             longest = (max(v_long, default=1.0), max(a_long, default=1.0))
             try:
