@@ -19,7 +19,6 @@ import pytest
 
 import graphplan as g
 from graphplan.forces import FullCycle
-from graphplan.forces.lean import LONG
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted(p.relative_to(ROOT).as_posix() for p in
@@ -75,11 +74,12 @@ def test_the_lean_path_equals_the_general_path_to_1e_12(case, solved):
         assert max(worst.values()) < 1e-12, (case, inertia, neglect, worst)
 
 
-def test_a_long_sweep_frees_its_arrays_and_agrees(solved):
-    # from LONG positions on, the generated function deletes each array after its last use
+def test_a_long_sweep_agrees(solved):
+    # past 4,096 positions the check for NaN sums each output instead of copying them all
     project = solved(str(ROOT / "examples/sixbar_press.toml"))
     fc = FullCycle(project.mech, project.cycle)
-    phi = _grid(project.cycle, LONG + 7)
+    assert "; del " in fc.source  # each array deleted after its last use
+    phi = _grid(project.cycle, 4100)
     worst = _agree(fc(phi), fc.general(phi), 1.0)
     assert max(worst.values()) < 1e-12, worst
 
@@ -166,3 +166,18 @@ def test_a_diagram_near_its_nodes_is_the_general_functions():
     value = _interp(xs, ys, xs, short, False, False, 0.0, 1.0)
     x = np.array([0.0, 0.1, 0.5, 0.95, 1.0])
     assert np.allclose(value(x), diagram_value(short, x), rtol=0, atol=1e-15)
+
+
+def test_names_with_primes_are_quoted_in_the_generated_code():
+    # point names may carry primes (B', S2''): the generated function holds them as string
+    # literals (repr), never as code
+    text = (ROOT / "examples/press.toml").read_text(encoding="utf-8")
+    text = text.replace('name = "S2"', "name = \"S2''\"").replace('centre = "S2"',
+                                                                 "centre = \"S2''\"")
+    mech = g.loads(text, "primes.toml")
+    assert any(p.name == "S2''" for p in mech.points)
+    fc = FullCycle(mech)
+    assert fc.native and "S2''" in fc.source
+    phi = _grid(fc.cycle, 36)
+    worst = _agree(fc(phi), fc.general(phi), 0.2)
+    assert max(worst.values()) < 1e-12, worst
