@@ -149,11 +149,11 @@ def test_a_diagram_near_its_nodes_is_the_general_functions():
     # (there the general function takes the larger piece, extrapolated): the lean helper
     # hands those x to the general function
     from graphplan.forces import JUMP_TOL, diagram_value
-    from graphplan.forces.lean import _interp
+    from graphplan.forces.lean_loads import interp_diagram
 
     d = ((0.0, 0.0), (0.88513, 0.0), (0.98938, 1.0), (1.0, 1.0))
     xs, ys = np.array([p[0] for p in d]), np.array([p[1] for p in d])
-    value = _interp(xs, ys, xs[1:-1], d, False, False, 0.0, 1.0)
+    value = interp_diagram(xs, ys, xs[1:-1], d, False, False, 0.0, 1.0)
     rng = np.random.default_rng(7)
     for x in (rng.uniform(0, 1, 50), np.array([0.98938 + 0.5 * JUMP_TOL, 0.3]),
               np.array([0.88513 - 0.9 * JUMP_TOL]), np.array([-1e-16, 1.0 + 1e-16])):
@@ -163,7 +163,7 @@ def test_a_diagram_near_its_nodes_is_the_general_functions():
     # where it stops short (the general function's zero outside its pieces)
     short = ((0.2, 0.5), (0.8, 1.0))
     xs, ys = np.array([0.2, 0.8]), np.array([0.5, 1.0])
-    value = _interp(xs, ys, xs, short, False, False, 0.0, 1.0)
+    value = interp_diagram(xs, ys, xs, short, False, False, 0.0, 1.0)
     x = np.array([0.0, 0.1, 0.5, 0.95, 1.0])
     assert np.allclose(value(x), diagram_value(short, x), rtol=0, atol=1e-15)
 
