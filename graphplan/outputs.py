@@ -27,7 +27,7 @@ several variants, each goes into ``DIR/<variant name>/``.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 
@@ -62,8 +62,7 @@ def _project_files(analysis, lang, precision, formats, dpi, pool) -> dict:
     from .render import DEFAULT_DPI, sheet_files
     from .reports import forces_csv, forces_markdown, plans_csv, plans_markdown
 
-    drawing = analysis.mech.settings.get("drawing", {})
-    prec = float(drawing.get("reading_mm", 0.5)) if precision is None else precision
+    prec = analysis.mech.drawing.reading_mm if precision is None else precision
     dpi = DEFAULT_DPI if dpi is None else dpi
 
     def sheets(named) -> dict[str, str | bytes]:
@@ -79,8 +78,10 @@ def _project_files(analysis, lang, precision, formats, dpi, pool) -> dict:
         "forces.en.md": forces_markdown(analysis, "en", prec),
         "forces.csv": forces_csv(analysis, prec),
     }
+    from .dynamics import DynamicsSettings
+
     unit = None
-    if "delta" in analysis.mech.settings.get("dynamics", {}):  # sheet 3 needs δ
+    if DynamicsSettings.of(analysis.mech).delta is not None:  # sheet 3 needs δ
         from .drawing import dynamics_sheet
         from .reports import dynamics_csv, dynamics_markdown
 
@@ -119,12 +120,8 @@ def write_project(variant: str | Path, out_dir: str | Path, *, lang: str | None 
         raise OutputError(f"{out}: exists and is not a folder (the output must be a folder)")
     mech = load(variant)
     if page:  # the format decides the scales: the sheet, tables and JSON must agree
-        drawing = {**mech.settings.get("drawing", {}), "format": page}
-        if page != mech.settings.get("drawing", {}).get("format", "A1"):
-            # scales the variant fixed were chosen for its own format, not this one
-            drawing = {k: v for k, v in drawing.items() if k not in ("Kl", "Kv", "Ka")}
-        mech = replace(mech, settings={**mech.settings, "drawing": drawing})
-    lang = lang or mech.settings.get("drawing", {}).get("language", "ru")
+        mech = mech.on_format(page)
+    lang = lang or mech.drawing.language
     analysis = analyze(mech)
     texts = project_files(analysis, lang=lang, precision=precision, formats=formats,
                           dpi=dpi)

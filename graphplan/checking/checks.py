@@ -196,7 +196,9 @@ class Checker:
         """δ in the general lines is the coefficient of speed fluctuation (коэффициент
         неравномерности хода), compared with the variant's ``dynamics.delta`` as a datum:
         a fraction (``δ = 1/80 = 0,0125``) or in per cent (``δ = 1,25 %``)."""
-        d = self.ref.mech.settings.get("dynamics", {}).get("delta")
+        from ..dynamics import DynamicsSettings
+
+        d = DynamicsSettings.of(self.ref.mech).delta
         if d is None:
             return
         from dataclasses import replace

@@ -332,7 +332,7 @@ def _stroke_arcs(analysis, c: Pt, kl: float, lang: str, items: list) -> list[Lab
     start = math.degrees(cy.dead_centres[0])
     work = math.degrees(cy.working_turn)
     full = math.degrees(cy.period) if cy.period <= 2 * math.pi + 1e-9 else 360.0
-    sense = 1.0 if cr.omega >= 0 else -1.0
+    sense = cr.sense
     names = ("р.х.", "х.х.") if lang == "ru" else ("w.s.", "i.s.")
     # each arc stops ARC_GAP mm short of the dead centres and ends in an arrowhead in the
     # sense of rotation: two arcs with ends, not one thin circle round the crank circle;
@@ -488,18 +488,16 @@ def ill_mark_items(plan, cell: Rect, ident: str, lang: str) -> list[Item]:
 
 def title_block(mech, lang: str, sheet_no: int, what: str) -> TitleBlock:
     """Form 1 filled from the variant's ``[title_block]``."""
-    tb = mech.settings.get("title_block", {})
-    title = " ".join(s for s in (tb.get("title", mech.name), ".", what) if s).replace(" .", ".")
-    org = " ".join(s for s in (tb.get("school", ""), tb.get("group", "")) if s)
+    tb = mech.title_block
+    title = " ".join(s for s in (tb.title or mech.name, ".", what) if s).replace(" .", ".")
+    org = " ".join(s for s in (tb.school, tb.group) if s)
+    sheet = sheet_no if tb.sheet is None else tb.sheet
     return TitleBlock(
-        designation=str(tb.get("designation", "")), title=title,
-        litera=str(tb.get("litera", "У")), scale=str(tb.get("scale", "")),
-        sheet=int(tb.get("sheet", sheet_no)),
+        designation=tb.designation, title=title, litera=tb.litera, scale=tb.scale, sheet=sheet,
         # graph 8 "Листов": the number of sheets, on the first sheet only (GOST 2.104, 4.2)
-        sheets=tb.get("sheets") if int(tb.get("sheet", sheet_no)) == 1 else None,
-        organisation=org, mass=str(tb.get("mass", "")),
-        signatures=signatures(str(tb.get("author", "")), str(tb.get("checker", "")),
-                              date=str(tb.get("date", ""))),
+        sheets=tb.sheets if sheet == 1 else None,
+        organisation=org, mass=tb.mass,
+        signatures=signatures(tb.author, tb.checker, date=tb.date),
     )
 
 

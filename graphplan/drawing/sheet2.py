@@ -444,7 +444,7 @@ def _note_items(notes: dict[str, str], cell: Rect, ident: str, lang: str) -> lis
 def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None) -> Sheet:
     """Sheet 2 of the project for ``analysis`` (see the module docstring)."""
     mech, kin = analysis.mech, analysis.kin
-    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    page = page or Page(mech.drawing.format)
     forces = analysis.forces
     s2 = analysis.sheet2_on(page)
     kl = s2.kl

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from ..dynamics import MachineUnit, machine_unit
+from ..dynamics import DynamicsSettings, MachineUnit, machine_unit
 from ..errors import LayoutError
 from ..numbers import fmt, sheet_text
 from ..project import CAPTION, GAP, fit_columns, titled_table
@@ -400,13 +400,13 @@ def _scheme_below(u: MachineUnit, work: list, geo: dict, x_left: float, x_right:
     y, width = low + 8.0, x_right - 2.0 - (axis_x + 10.0)
     if y_frame - 4.0 - y < SCHEME_HEIGHT:
         return []
-    title = str(mech.settings.get("title_block", {}).get("title") or mech.name)
+    title = (mech.title_block.title or mech.name)
     return unit_scheme_items(u, axis_x + 10.0, y, width, title, lang)
 
 
 def _page_of(analysis) -> Page:
     """The variant's ``drawing.format`` (A1 when it gives none)."""
-    return Page(analysis.mech.settings.get("drawing", {}).get("format", "A1"))
+    return Page(analysis.mech.drawing.format)
 
 
 def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
@@ -436,7 +436,7 @@ def dynamics_sheet(analysis, *, lang: str = "ru", page: Page | None = None,
     page = page or _page_of(analysis)
     if unit is not None:
         u = unit
-    elif "delta" in mech.settings.get("dynamics", {}) and hasattr(analysis, "unit_on"):
+    elif DynamicsSettings.of(mech).delta is not None and hasattr(analysis, "unit_on"):
         u = analysis.unit_on(page)
     else:
         u = machine_unit(analysis)  # the error without δ

@@ -125,14 +125,13 @@ class FullCycle:
                  inertia: bool | None = None, neglect_below: float | None = None):
         self.mech = mech
         self.cycle = cycle if cycle is not None else analyse_cycle(mech)
-        st = mech.settings.get("kinetostatics", {})
-        self.inertia = bool(st.get("inertia", True)) if inertia is None else inertia
-        self.neglect_below = (float(st.get("neglect_below", 0.0)) if neglect_below is None
-                              else neglect_below)
+        st = mech.kinetostatics
+        self.inertia = st.inertia if inertia is None else inertia
+        self.neglect_below = st.neglect_below if neglect_below is None else neglect_below
         self.native = True
         self.source = ""
         try:
-            if st.get("shift_inertia_force", False):
+            if st.shift_inertia_force:
                 raise NotCompiled("shift_inertia_force")
             self._compile()
         except (NotCompiled, GraphplanError):  # (the probe cannot be assembled: the general

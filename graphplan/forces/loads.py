@@ -513,10 +513,10 @@ def compute_loads(mech: Mechanism, kin: Kinematics, cycle: Cycle | None = None, 
     -------
     Loads
     """
-    st = mech.settings.get("kinetostatics", {})
-    inertia = bool(st.get("inertia", True)) if inertia is None else inertia
-    frac = float(st.get("neglect_below", 0.0)) if neglect_below is None else neglect_below
-    shift = bool(st.get("shift_inertia_force", False)) if shift_inertia is None else shift_inertia
+    st = mech.kinetostatics
+    inertia = st.inertia if inertia is None else inertia
+    frac = st.neglect_below if neglect_below is None else neglect_below
+    shift = st.shift_inertia_force if shift_inertia is None else shift_inertia
     P, V = kin.pos.points, kin.acc.points
     gvec = np.asarray(mech.gravity, float)
     forces: dict[str, list[ForceLoad]] = {ln: [] for ln in mech.moving_links}

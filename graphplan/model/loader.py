@@ -86,7 +86,8 @@ SECTIONS: dict[str, set[str] | None] = {
         "motor_series",
         "motor_speed",
     },
-    "drawing": {"format", "Kl", "Kv", "Ka", "Kp", "reading_mm", "language", "positions"},
+    "drawing": {"format", "Kl", "Kv", "Ka", "Kp", "reading_mm", "language", "positions",
+                "accelerations"},
     "title_block": {
         "title",
         "designation",
@@ -827,8 +828,9 @@ def _check_settings(r: _Reader, settings: dict) -> None:
     drw = settings.get("drawing", {})
     _check_drawing(r, drw)
     for sec, table in (("kinetostatics", settings.get("kinetostatics", {})), ("drawing", drw)):
-        if "positions" in table:
-            _check_position_labels(r, table["positions"], f"{sec}.positions")
+        for key in ("positions", "accelerations"):
+            if key in table:
+                _check_position_labels(r, table[key], f"{sec}.{key}")
     for key, value in settings.get("title_block", {}).items():
         if key in ("sheet", "sheets"):
             r.integer(value, f"title_block.{key}", 1, 99)

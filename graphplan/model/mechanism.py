@@ -29,8 +29,19 @@ Sign conventions (said once here and in ``docs/variant-format.md``):
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
+from typing import Any
+
+from ..errors import InputError
+from .settings import (
+    FORMATS,
+    DrawingSettings,
+    KinetostaticsSettings,
+    TitleBlockSettings,
+    description_of,
+)
 
 DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 """The five kinds (виды) of class-II Assur dyads, outer–inner–outer pair."""
@@ -336,6 +347,44 @@ class Mechanism:
     output: Output
     length_unit: str = "m"
     settings: dict = field(default_factory=dict)
+
+    # --- the settings, typed (:mod:`graphplan.model.settings`: every default there) -----
+
+    @property
+    def drawing(self) -> DrawingSettings:
+        """``[drawing]``: format, language, reading step, fixed scales and positions."""
+        return DrawingSettings.of(self.settings)
+
+    @property
+    def kinetostatics(self) -> KinetostaticsSettings:
+        """``[kinetostatics]``: the neglect rule, inertia, the shifted inertia force."""
+        return KinetostaticsSettings.of(self.settings)
+
+    @property
+    def title_block(self) -> TitleBlockSettings:
+        """``[title_block]``: what the sheets' title block is filled with."""
+        return TitleBlockSettings.of(self.settings)
+
+    @property
+    def description(self) -> str | None:
+        """``[variant] description`` (None: not given)."""
+        return description_of(self.settings)
+
+    def with_drawing(self, **changes: Any) -> Mechanism:
+        """This variant with fields of its ``[drawing]`` settings changed (names and types
+        of :class:`DrawingSettings`; None removes a key)."""
+        d = dataclasses.replace(self.drawing, **changes)
+        return dataclasses.replace(self, settings={**self.settings, "drawing": d.table()})
+
+    def on_format(self, fmt: str) -> Mechanism:
+        """This variant drawn on format ``fmt`` ("A1", "A2", "A3"): the format decides the
+        scales, so the scales Kl, Kv, Ka the variant fixed for its own format are dropped
+        (chosen again to fill the new one); the same variant when ``fmt`` is its own."""
+        if fmt not in FORMATS:
+            raise InputError(f"a sheet format is one of {', '.join(FORMATS)} (got {fmt!r})")
+        if fmt == self.drawing.format:
+            return self
+        return self.with_drawing(format=fmt, Kl=None, Kv=None, Ka=None)
 
     @property
     def moving_links(self) -> tuple[str, ...]:

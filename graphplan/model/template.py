@@ -173,6 +173,8 @@ KEYS: dict[str, tuple[str, str]] = {
     "reading_mm": ("точность чтения отрезков на планах, мм (0 — точно)",
                    "reading precision of the plans, mm (0: exact)"),
     "language": ("язык надписей листов: \"ru\" или \"en\"", "ru or en"),
+    "accelerations": ("положения, планы ускорений которых чертятся на листе 1",
+                      "the positions of sheet 1's acceleration plans"),
     "title_block": ("основная надпись (штамп)", "the title block"),
     "title": ("наименование изделия в основной надписи", "the title"),
     "designation": ("обозначение документа, например ТММ.КП.00.00.00", "the designation"),

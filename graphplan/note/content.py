@@ -20,6 +20,7 @@ import os
 from pathlib import Path
 from typing import Any
 
+from ..dynamics import DynamicsSettings
 from ..errors import InputError
 from ..kinematics import position_angles_deg
 from ..numbers import general, note_comma
@@ -196,14 +197,13 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     key = generate(variant, variant_ref=Path(ref).as_posix())
     labels = analysis.kin.labels
     angles = position_angles_deg(analysis.mech, analysis.kin)
-    prec = float(mech.settings.get("drawing", {}).get("reading_mm", 0.5))
-    tb = mech.settings.get("title_block", {})
+    prec = mech.drawing.reading_mm
     blocks: list[Block] = []
 
     # introduction
-    description = mech.settings.get("variant", {}).get("description")
-    what = ((tb.get("title") or description) if lang == "ru" else
-            (description or tb.get("title"))) or mech.name
+    tb = mech.title_block
+    title, description = tb.title, mech.description
+    what = ((title or description) if lang == "ru" else (description or title)) or mech.name
     blocks += [Heading(w["intro"], 1, numbered=False),
                Paragraph(w["intro_text"].format(what=what, variant=variant.name))]
 
@@ -282,7 +282,7 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
 
     # 4 dynamics
     unit = None
-    if "delta" in mech.settings.get("dynamics", {}):
+    if DynamicsSettings.of(mech).delta is not None:
         from ..drawing import dynamics_sheet
         from ..dynamics import machine_unit
         from ..reports import dynamics_markdown
@@ -306,10 +306,10 @@ def build_note(variant: str | Path, *, lang: str = "ru", out_dir: str | Path | N
     blocks += [Paragraph(f"{i}. {r}") for i, r in enumerate(w["refs"], 1)]
 
     return Note(
-        title=str(tb.get("title", what)),
-        designation=str(tb.get("designation", "")),
-        organisation=" ".join(s for s in (tb.get("school", ""), tb.get("group", "")) if s),
-        author=str(tb.get("author", "")), checker=str(tb.get("checker", "")),
+        title=tb.title or what,
+        designation=tb.designation,
+        organisation=" ".join(s for s in (tb.school, tb.group) if s),
+        author=tb.author, checker=tb.checker,
         variant=Path(ref).as_posix(), lang=lang, blocks=tuple(blocks))
 
 

@@ -132,7 +132,7 @@ class Project:
 
     @property
     def _format(self) -> str:
-        return str(self.mech.settings.get("drawing", {}).get("format", "A1"))
+        return self.mech.drawing.format
 
     # --- the plans of a position, as the sheets draw them and the lessons teach them -----
 
@@ -229,9 +229,11 @@ class Project:
         """The machine unit of sheet 3 (flywheel, motor, simulation), when the variant gives
         ``dynamics.delta``; else None. Its scales (Kφ, KM, H, KA, KT, KJ) are those of sheet 3
         on the variant's ``drawing.format``."""
-        if "delta" not in self.mech.settings.get("dynamics", {}):
+        from ..dynamics import DynamicsSettings
+
+        if DynamicsSettings.of(self.mech).delta is None:
             return None
-        return self.unit_on(Page(self.mech.settings.get("drawing", {}).get("format", "A1")))
+        return self.unit_on(Page(self.mech.drawing.format))
 
     def unit_on(self, page: Page) -> MachineUnit:
         """The machine unit with its diagrams sized for sheet 3 on ``page`` (solved once per
@@ -326,7 +328,9 @@ class Project:
                               "segments_mm": segments, **_marks(vp, ap)}
         self._add_forces(positions)
         out = {"mechanism": mechanism, "positions": positions, "warnings": list(self.warnings)}
-        if "delta" in self.mech.settings.get("dynamics", {}):
+        from ..dynamics import DynamicsSettings
+
+        if DynamicsSettings.of(self.mech).delta is not None:
             from ..dynamics import machine_unit
 
             out["dynamics"] = (unit or self.unit or machine_unit(self)).to_json()
@@ -364,8 +368,6 @@ def _report_scales(project: Project):
     """The scales of the report: sheet 1's, or — when sheet 1 cannot hold the plans of
     every position (48 positions and more) — those of a sheet drawing an even sample of
     them, so that the JSON never depends on a sheet's layout. Returns (scales, note)."""
-    from dataclasses import replace
-
     from ..errors import LayoutError
     from .scales import sheet_scales  # the sheet's layout: shapely, only when reporting
 
@@ -374,11 +376,10 @@ def _report_scales(project: Project):
         return project.sheet1, ""
     except LayoutError as exc:
         first = str(exc)
-    drawing = m.settings.get("drawing", {})
     for size in (8, 1):
         step = max(1, kin.n // size)
         sample = list(dict.fromkeys(kin.labels[k] for k in range(0, kin.n, step)))[:size]
-        mm = replace(m, settings={**m.settings, "drawing": {**drawing, "positions": sample}})
+        mm = m.with_drawing(positions=tuple(sample))
         try:
             sc = sheet_scales(mm, kin)
         except LayoutError:

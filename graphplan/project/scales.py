@@ -126,7 +126,7 @@ def position_extent(mech: Mechanism, kin, paths: dict[str, np.ndarray]
 def positions_by_label(mech: Mechanism, kin, section: str, key: str = "positions"
                        ) -> tuple[int, ...] | None:
     """Indices of the positions a section's ``positions`` (or ``key``) names (None if none)."""
-    wanted = mech.settings.get(section, {}).get(key)
+    wanted = getattr({"drawing": mech.drawing, "kinetostatics": mech.kinetostatics}[section], key)
     if wanted is None:
         return None
     for lab in wanted:
@@ -249,13 +249,13 @@ def sheet_scales(mech: Mechanism, kin, page: Page | None = None, *, cycle=None,
     longer than VECTOR_MAX. ``cycle`` and ``forces``: the project's, for the positions of
     the force analysis (solved here when not given); ``fine``: its :func:`one_turn`.
     """
-    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    page = page or Page(mech.drawing.format)
     return _sheet_scales(mech, kin, page, cycle, forces, fine)
 
 
 def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
                   fine=None) -> Sheet1Scales:
-    fixed = mech.settings.get("drawing", {})
+    fixed = mech.drawing
     fine = one_turn(mech, kin) if fine is None else fine
     paths = trajectories(mech, kin, fine)
     slots = slot_ranges(mech, fine)
@@ -271,7 +271,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         ext = position_extent(mech, kin, {**paths, **ends})
         need = max((ext[2] - ext[0]) / room_w, (ext[3] - ext[1]) / room_h)
         kl = fit_scale("Kl", "m/mm", need, 1.0, quantity=f"l{cr.pivot}{cr.pin}",
-                       defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.get("Kl"))
+                       defining=cr.length, segment=f"{cr.pivot}{cr.pin}", fixed=fixed.Kl)
         if kl.per_mm == kl_m:
             break
         kl_m = kl.per_mm
@@ -334,13 +334,13 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
 
         kv = fit_scale("Kv", "(m/s)/mm", fit(layout.v_cells, v_shapes, v_long, va), 1.0,
                        quantity=f"v{cr.pin}", defining=va,
-                       segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.get("Kv"),
+                       segment="p" + plan_name(mech, cr.pin, "p"), fixed=fixed.Kv,
                        series=PLAN_SERIES)
         ka_fit = fit(layout.a_cells, a_shapes, a_long, aa) if a_shapes else \
             nice_ceil(aa / 50.0, PLAN_SERIES)
         ka = fit_scale("Ka", "(m/s²)/mm", ka_fit, 1.0,
                        quantity=f"a{cr.pin}", defining=aa,
-                       segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.get("Ka"),
+                       segment="π" + plan_name(mech, cr.pin, "π"), fixed=fixed.Ka,
                        series=PLAN_SERIES)
         # the cells cut again round the plans at the scales chosen: the place they leave to
         # the diagrams and the schemes
@@ -534,7 +534,7 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
     from ..forces import compute_loads
     from .layout import _column_widths
 
-    page = page or Page(mech.settings.get("drawing", {}).get("format", "A1"))
+    page = page or Page(mech.drawing.format)
     wanted = sheet2_positions(mech, kin, forces, cycle)
     header = sheet2_table_header(forces.reactions, "ru")
     # the table's rows as wide as its widest values are likely to be (the layout is cut

@@ -114,7 +114,7 @@ class PositionForces(Bounded):
 
 def _precision(analysis: Analysis, precision: float | None) -> float:
     if precision is None:
-        precision = float(analysis.mech.settings.get("drawing", {}).get("reading_mm", 0.5))
+        precision = analysis.mech.drawing.reading_mm
     if not (math.isfinite(precision) and precision >= 0):
         raise ValueError(f"the drafting precision must be finite and >= 0 mm (got {precision!r})")
     return float(precision)  # 0: exact readings (the drafted plans are the exact ones)

@@ -53,7 +53,7 @@ def run(args: argparse.Namespace) -> int:
     path = Path(args.variant) if args.variant else bundled_example("press")
     mech = load(path)
     analysis = analyze(mech)
-    lang = args.lang or mech.settings.get("drawing", {}).get("language", "ru")
+    lang = args.lang or mech.drawing.language
     labels = list(args.position or [])
     if labels == ["all"]:
         labels = list(analysis.kin.labels)
@@ -73,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     from ..files import write_atomic
     from .index import INDEX_NAME, index_page
 
-    title = mech.settings.get("title_block", {}).get("title") or mech.name
+    title = mech.title_block.title or mech.name
     index = write_atomic(Path(args.output) / INDEX_NAME,
                          index_page(args.output, variant=str(title),
                                     labels=tuple(analysis.kin.labels), lang=lang),

@@ -755,7 +755,7 @@ def judge_position_plan(plan: PositionPlan, scene: Scene, ref, tol, lang: str):
     # the strokes' letters by their arcs
     cy = ref.analysis.cycle
     if cy.dead_centres and plan.strokes:
-        sense = 1.0 if mech.crank.omega >= 0 else -1.0
+        sense = mech.crank.sense
         start = cy.dead_centres[0]
         for key, t in plan.strokes:
             a = math.atan2(t.y - plan.pivot[1], t.x - plan.pivot[0])

@@ -62,7 +62,7 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     phi = [float(p) for p in kin.phi]
     if plant is not None and plant.kind == "extreme":
         k = labels.index(plant.position)
-        phi[k] += math.radians(plant.turn) * (1.0 if mech.crank.omega >= 0 else -1.0)
+        phi[k] += math.radians(plant.turn) * mech.crank.sense
     pos = solve_positions(mech, phi)
     P = pos.points
     piv = mech.crank.pivot
@@ -149,7 +149,7 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     order = list(range(len(labels)))
     if plant is not None and plant.kind == "numbering":
         # each number of the equally spaced positions written at the next one's pin
-        even = _equally_spaced([float(p) for p in kin.phi], mech.crank.omega,
+        even = _equally_spaced([float(p) for p in kin.phi], mech.crank.sense,
                               ref.analysis.cycle.period)
         nxt = {even[i]: even[(i + 1) % len(even)] for i in range(len(even))}
         order = [nxt.get(k, k) for k in order]
@@ -166,7 +166,7 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
                 X(q + np.array([2.5, -2.5])), attachment_point=7)
     cy = ref.analysis.cycle
     if cy.dead_centres:
-        sense = 1.0 if mech.crank.omega >= 0 else -1.0
+        sense = mech.crank.sense
         a0 = cy.dead_centres[0]
         for name, mid in (("р.х.", a0 + sense * cy.working_turn / 2),
                           ("х.х.", a0 + sense * (cy.working_turn + (2 * math.pi -
@@ -183,11 +183,10 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     return path
 
 
-def _equally_spaced(phi: list[float], omega: float, period: float) -> list[int]:
+def _equally_spaced(phi: list[float], sense: float, period: float) -> list[int]:
     """The positions of the main series (the crank turned by one step from each to the
     next, the step the commonest gap), in the order of the crank's turn over the whole
     cycle: the others (``a``, ``1'``) left out."""
-    sense = 1.0 if omega >= 0 else -1.0
     base = phi[0]
     turned = [((p - base) * sense) for p in phi]
     ring = sorted({round(t % (2 * math.pi), 9) for t in turned})
