@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 
+from graphplan import fonts
 from graphplan.drawing import (
     TEXT,
     Circle,
@@ -13,7 +14,6 @@ from graphplan.drawing import (
     diagrams_items,
     diagrams_size,
     fit_diagrams,
-    fonts,
 )
 from graphplan.errors import InputError, LayoutError
 from graphplan.files import bundled_example

@@ -608,7 +608,7 @@ def test_engines_are_chosen_by_name_or_environment(monkeypatch):
 
 def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(ex, monkeypatch, tmp_path):
     # the same bytes whatever the machine has: typst is given the bundled fonts only
-    from graphplan.drawing import fonts as fonts_mod
+    from graphplan import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     s, text = ex.sheet("press-1"), ex.svg("press-1")
@@ -620,7 +620,7 @@ def test_the_pdf_letters_in_the_bundled_fonts_without_system_fonts(ex, monkeypat
 
 
 def test_the_png_is_the_same_pixels_without_system_fonts(ex, monkeypatch, tmp_path):
-    from graphplan.drawing import fonts as fonts_mod
+    from graphplan import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     text = ex.svg("press-2")
@@ -653,7 +653,7 @@ def test_a_character_no_bundled_font_draws_comes_from_a_system_font(ex, monkeypa
 
     import matplotlib
 
-    from graphplan.drawing import fonts as fonts_mod
+    from graphplan import fonts as fonts_mod
 
     monkeypatch.delenv(extra.ENGINE_ENV, raising=False)
     folder = tmp_path / "fonts"

@@ -1,6 +1,6 @@
 """The font metrics cache: the same metrics from the cache as from the file, never another's.
 
-:func:`graphplan.drawing.fonts.load_font` keeps each font file's metrics in the user's
+:func:`graphplan.fonts.load_font` keeps each font file's metrics in the user's
 cache folder keyed by the SHA-256 of the file (and of the glyph rules); these tests point
 ``$GRAPHPLAN_CACHE_DIR`` at a temporary folder.
 """
@@ -11,7 +11,7 @@ import json
 
 import pytest
 
-from graphplan.drawing import fonts
+from graphplan import fonts
 from graphplan.files import CACHE_ENV, user_cache_dir
 
 

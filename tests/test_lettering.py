@@ -8,6 +8,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from graphplan import fonts
 from graphplan.drawing import (
     Group,
     Page,
@@ -15,7 +16,6 @@ from graphplan.drawing import (
     Text,
     decimal_comma,
     dynamics_sheet,
-    fonts,
     iter_leaves,
     kinematics_sheet,
     kinetostatics_sheet,

@@ -6,6 +6,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from graphplan import fonts
 from graphplan.drawing import (
     DASHDOT,
     DASHDOTDOT,
@@ -27,7 +28,6 @@ from graphplan.drawing import (
     Text,
     TitleBlock,
     check_layout,
-    fonts,
     signatures,
     table_items,
 )

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import matplotlib
 
-from graphplan.drawing import fonts
+from graphplan import fonts
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))

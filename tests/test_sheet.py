@@ -6,6 +6,7 @@ import math
 import pytest
 from shapely.geometry import box
 
+from graphplan import fonts
 from graphplan.drawing import (
     DASHDOT,
     DASHDOTDOT,
@@ -29,7 +30,6 @@ from graphplan.drawing import (
     arc_point,
     arrow_parts,
     check_layout,
-    fonts,
     frame_items,
     hatch_segments,
     iter_leaves,

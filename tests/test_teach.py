@@ -382,7 +382,7 @@ def test_the_page_is_deterministic_and_carries_its_fonts(press):
     les = lesson(press, "acceleration", "(3)")
     one, two = teaching_page(les, "en"), teaching_page(les, "en")
     assert one == two
-    from graphplan.drawing import fonts
+    from graphplan import fonts
 
     for fam in fonts.FONT_CHAIN:
         if fonts.find_font_file(fam) is not None:
@@ -600,7 +600,7 @@ def test_embedded_fonts_keep_their_own_date():
 
     from fontTools.ttLib import TTFont
 
-    from graphplan.drawing import fonts
+    from graphplan import fonts
     from graphplan.teaching.webfonts import _subset_woff
 
     family = fonts.FONT_CHAIN[0]

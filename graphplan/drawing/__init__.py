@@ -1,29 +1,6 @@
 """Sheets, renderer-independent: items, frame, title block, fonts, labels, figures, sheets 1–3."""
 
-from ..numbers import decimal_comma
-from ..paper import FORMATS, GRAPH26_SIZE, MARGIN, MARGIN_LEFT, TITLE_BLOCK_SIZE, Page, Rect
-from .dynamics_figures import (
-    BELOW,
-    DOT,
-    LAYER,
-    LEFT_B,
-    MIN_READ,
-    STRIP,
-    Block,
-    energy_mass_items,
-    energy_mass_width,
-    omega_items,
-    unit_parts,
-    work_items,
-)
-from .figures import (
-    TEXT,
-    diagrams_items,
-    diagrams_size,
-    fit_diagrams,
-    spaced_labels,
-)
-from .fonts import (
+from ..fonts import (
     FALLBACK_ADVANCE,
     FALLBACK_CAP_RATIO,
     FALLBACK_NARROW,
@@ -51,6 +28,29 @@ from .fonts import (
     system_fonts_hidden,
     text_of_svg,
     uncovered_chars,
+)
+from ..numbers import decimal_comma
+from ..paper import FORMATS, GRAPH26_SIZE, MARGIN, MARGIN_LEFT, TITLE_BLOCK_SIZE, Page, Rect
+from .dynamics_figures import (
+    BELOW,
+    DOT,
+    LAYER,
+    LEFT_B,
+    MIN_READ,
+    STRIP,
+    Block,
+    energy_mass_items,
+    energy_mass_width,
+    omega_items,
+    unit_parts,
+    work_items,
+)
+from .figures import (
+    TEXT,
+    diagrams_items,
+    diagrams_size,
+    fit_diagrams,
+    spaced_labels,
 )
 from .labels import LabelRequest, merge_coincident, place_labels
 from .scheme import mechanism_scheme, scheme_links, scheme_paper
@@ -128,6 +128,7 @@ from .sheet3 import (
     results_lines,
     u_density,
 )
+from .tables import split_table, titled_table
 
 __all__ = [
     "ARROW_MM",
@@ -244,6 +245,7 @@ __all__ = [
     "signatures",
     "slider_point",
     "spaced_labels",
+    "split_table",
     "system_font_files",
     "system_fonts_hidden",
     "table_block",
@@ -254,6 +256,7 @@ __all__ = [
     "text_of_svg",
     "title_block",
     "title_block_items",
+    "titled_table",
     "turning_arrow",
     "u_density",
     "uncovered_chars",

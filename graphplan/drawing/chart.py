@@ -28,8 +28,8 @@ import math
 
 import numpy as np
 
+from .. import fonts
 from ..numbers import decimal_comma
-from . import fonts
 from .sheet import Circle, Item, Polyline, Style, Text
 
 LAYER = "diagrams"

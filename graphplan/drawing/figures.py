@@ -17,12 +17,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import fonts
 from ..errors import LayoutError
 from ..kinematics import Cycle
 from ..model import Mechanism
 from ..numbers import plain
 from ..plans import MIN_NODES, KinematicDiagrams, diagram_motion, kinematic_diagrams
-from . import fonts
 from .chart import MIN_DOT, Chart
 from .sheet import Circle, Group, Item, Style
 

@@ -23,7 +23,7 @@ import numpy as np
 import shapely
 from shapely.geometry.base import BaseGeometry
 
-from . import fonts
+from .. import fonts
 from .sheet import SLANT_DEG, THIN, Line, Pt, Text, text_at_centre, text_box
 
 #: Directions tried around an anchor (degrees, counter-clockwise as seen), best first.

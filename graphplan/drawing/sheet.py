@@ -34,9 +34,9 @@ from shapely import affinity
 from shapely.geometry import LinearRing, LineString, MultiLineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
+from .. import fonts
 from ..errors import InputError, LayoutError
 from ..paper import Page, Rect
-from . import fonts
 
 Pt = tuple[float, float]
 
@@ -60,7 +60,7 @@ MARGIN_LAYERS = frozenset({"frame", "title"})
 #: Capital heights of lettering, GOST 2.304 (1.8 allowed for type B only).
 TEXT_HEIGHTS: tuple[float, ...] = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0, 28.0, 40.0)
 #: GOST 2.304 type B slant: letters lean at 75° to the baseline.
-SLANT_DEG = 15.0
+SLANT_DEG = fonts.SLANT_DEG
 #: Minimum line pitch of type B lettering, in units of h (baseline to baseline).
 LINE_PITCH = 1.7
 
@@ -419,10 +419,7 @@ def hatch_segments(hatch: Hatch) -> tuple[tuple[Pt, Pt], ...]:
 
 def text_width(text: Text) -> float:
     """Advance width of a text in mm plus, if italic, the lean of its capitals."""
-    w = fonts.text_width(text.text, text.height)
-    if text.italic:
-        w += text.height * math.tan(math.radians(SLANT_DEG))
-    return w
+    return fonts.lettering_width(text.text, text.height, text.italic)
 
 
 def text_box(text: Text) -> Polygon:
@@ -625,7 +622,7 @@ def _wrap(text: str, height: float, width: float) -> list[str] | None:
 
 
 def _width(s: str, h: float) -> float:
-    return fonts.text_width(s, h) + h * math.tan(math.radians(SLANT_DEG))
+    return fonts.lettering_width(s, h)
 
 
 def _fit(text: str, cell: Rect, heights: Sequence[float], what: str, *, wrap: bool = False,

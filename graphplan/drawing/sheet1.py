@@ -28,7 +28,6 @@ from ..project import (
     Sheet1Scales,
     fit_columns,
     kinematic_twin,
-    titled_table,
 )
 from .labels import LabelRequest, place_labels
 from .linkage import (
@@ -80,6 +79,7 @@ from .sheet import (
     text_box,
     text_width,
 )
+from .tables import titled_table
 
 WORDS = {
     "ru": {"positions": "План положений", "velocity": "План скоростей",

@@ -40,7 +40,6 @@ from ..project import (
     group_links,
     sheet2_positions,
     sheet2_table_header,
-    split_table,
 )
 from ..units import Scale
 from .labels import LabelRequest, place_labels
@@ -78,6 +77,7 @@ from .sheet1 import (
     title_block,
     turning_arrow,
 )
+from .tables import split_table
 
 ARROW_MM = 16.0  #: length of a load's or reaction's arrow on a group (direction only), mm
 LEADERS = 30.0  #: a letter with no clear spot by its point is written up to this far, on a leader

@@ -31,7 +31,7 @@ import math
 from ..dynamics import DynamicsSettings, MachineUnit, machine_unit
 from ..errors import LayoutError
 from ..numbers import fmt, sheet_text
-from ..project import CAPTION, GAP, fit_columns, titled_table
+from ..project import CAPTION, GAP, fit_columns
 from ..reports import T as TABLE_WORDS
 from ..reports import position_rows
 from .sheet import (
@@ -55,6 +55,7 @@ from .sheet import (
     text_width,
 )
 from .sheet1 import title_block
+from .tables import titled_table
 
 WORDS = {
     "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",

@@ -29,6 +29,7 @@ from pathlib import Path
 
 from ..errors import GraphplanError, InputError
 from ..files import decode_text
+from ..model import MOTOR_SERIES, SYNC_SPEEDS
 
 __all__ = [
     "DEFAULT_SERIES",
@@ -44,15 +45,10 @@ __all__ = [
     "series_names",
 ]
 
-#: synchronous speeds at 50 Hz, rpm (2, 4, 6, 8 poles)
-SYNC_SPEEDS = (3000, 1500, 1000, 750)
 #: synchronous speed used when none is given: 4 poles, the common choice of course projects
 DEFAULT_SYNC_RPM = 1500
 
 _FILES = {"AIR": "motors_air.csv", "4A": "motors_4a.csv", "DELPHI": "motors_delphi.csv"}
-# spellings accepted for the series (Latin and Cyrillic, any case)
-_ALIASES = {"AIR": "AIR", "АИР": "AIR", "4A": "4A", "4А": "4A", "DELPHI": "DELPHI",
-            "MOTIVE": "DELPHI", "MOTIVE DELPHI": "DELPHI"}
 #: the series used when the variant names none: the one bundled catalogue that gives the
 #: rotor inertia (and both torque ratios), so that J_рот·u² counts in the flywheel
 DEFAULT_SERIES = "DELPHI"
@@ -122,7 +118,7 @@ class MotorChoice:
 
 
 def _series_key(series: str) -> str:
-    key = _ALIASES.get(str(series).strip().upper())
+    key = MOTOR_SERIES.get(str(series).strip().upper())
     if key is None:
         raise MotorSelectionError(
             f"unknown motor series {series!r}: expected one of AIR (АИР), 4A (4А), "
@@ -133,7 +129,7 @@ def _series_key(series: str) -> str:
 
 def series_names() -> tuple[str, ...]:
     """Every accepted spelling of the bundled series (``dynamics.motor_series``)."""
-    return tuple(_ALIASES)
+    return tuple(MOTOR_SERIES)
 
 
 def catalogue_path(series: str = DEFAULT_SERIES) -> Path:

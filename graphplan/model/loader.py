@@ -33,6 +33,7 @@ from .mechanism import (
     Positions,
     Resistance,
 )
+from .settings import MOTOR_SERIES, SYNC_SPEEDS
 from .toml_text import _CONTROL, one_line, parse_toml
 
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3}
@@ -861,15 +862,11 @@ def _check_dynamics(r: _Reader, dyn: dict) -> None:
         if key in dyn:
             r.integer(dyn[key], f"dynamics.{key}", lo, hi)
     if "motor_series" in dyn:
-        from ..dynamics import series_names
-
         s = r.string(dyn["motor_series"], "dynamics.motor_series")
-        if s.strip().upper() not in series_names():
+        if s.strip().upper() not in MOTOR_SERIES:
             raise r.fail("dynamics.motor_series", "expected a bundled motor series, one of "
-                         f"{', '.join(series_names())} (got {s!r})")
+                         f"{', '.join(MOTOR_SERIES)} (got {s!r})")
     if "motor_speed" in dyn:
-        from ..dynamics import SYNC_SPEEDS
-
         speed = r.integer(dyn["motor_speed"], "dynamics.motor_speed", 1, 100000)
         if speed not in SYNC_SPEEDS:
             raise r.fail("dynamics.motor_speed", "expected a synchronous speed at 50 Hz, one "

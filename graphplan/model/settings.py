@@ -16,6 +16,13 @@ from typing import Any
 FORMATS = ("A1", "A2", "A3")  #: sheet formats, GOST 2.301
 LANGUAGES = ("ru", "en")  #: the sheets' lettering
 
+#: ``[dynamics] motor_speed``: synchronous speeds at 50 Hz, rpm (2, 4, 6, 8 poles)
+SYNC_SPEEDS = (3000, 1500, 1000, 750)
+#: ``[dynamics] motor_series``: the spellings accepted for the bundled motor catalogues
+#: (Latin and Cyrillic, any case) and the series each names (:mod:`graphplan.dynamics.motor`)
+MOTOR_SERIES = {"AIR": "AIR", "АИР": "AIR", "4A": "4A", "4А": "4A", "DELPHI": "DELPHI",
+                "MOTIVE": "DELPHI", "MOTIVE DELPHI": "DELPHI"}
+
 
 def _labels(value: Any) -> tuple[str, ...] | None:
     return None if value is None else tuple(str(v) for v in value)
@@ -130,5 +137,5 @@ def description_of(settings: Mapping[str, Any]) -> str | None:
     return None if value is None else str(value)
 
 
-__all__ = ["FORMATS", "LANGUAGES", "DrawingSettings", "KinetostaticsSettings",
-           "TitleBlockSettings", "description_of"]
+__all__ = ["FORMATS", "LANGUAGES", "MOTOR_SERIES", "SYNC_SPEEDS", "DrawingSettings",
+           "KinetostaticsSettings", "TitleBlockSettings", "description_of"]

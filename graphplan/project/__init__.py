@@ -15,6 +15,7 @@ from .layout import (
     SHEET2_STRIP,
     STRUCTURE_LINE,
     TABLE_PAD,
+    TABLE_PART_GAP,
     VECTOR_HARD,
     VECTOR_MAX,
     FittedTable,
@@ -27,10 +28,8 @@ from .layout import (
     sheet2_cell_min,
     sheet2_layout,
     sheet2_table_header,
-    split_table,
     split_table_height,
     table_parts,
-    titled_table,
 )
 from .plausibility import K_MARGIN, load_drives, machine_warnings
 from .scales import (
@@ -80,6 +79,7 @@ __all__ = [
     "SLOT_OVER",
     "STRUCTURE_LINE",
     "TABLE_PAD",
+    "TABLE_PART_GAP",
     "TRAJECTORY_POINTS",
     "VECTOR_HARD",
     "VECTOR_MAX",
@@ -114,9 +114,7 @@ __all__ = [
     "sheet_scales",
     "slot_ranges",
     "solve_project",
-    "split_table",
     "split_table_height",
     "table_parts",
-    "titled_table",
     "trajectories",
 ]

@@ -21,6 +21,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import LayoutError
+from ..fonts import lettering_width
 from ..paper import GRAPH26_SIZE, TITLE_BLOCK_SIZE, Page, Rect
 
 GAP = 8.0  #: clearance between regions, mm
@@ -349,13 +350,7 @@ def fit_columns(header, rows, width: float, height: float = 3.5,
     A table wider than its place loses its last columns (the full table is in the
     markdown tables); the caller says so in the table's title.
     """
-    from ..drawing.sheet import Text, text_width
-
-    widths = []
-    for j in range(len(header)):
-        cells = [str(header[j])] + [str(row[j]) for row in rows]
-        widths.append(max(text_width(Text((0, 0), c, height, layer="tables")) for c in cells
-                          if c.strip()) + pad)
+    widths = _column_widths(header, rows, height, pad)
     keep, acc = [], 0.0
     for j, wd in enumerate(widths):
         if acc + wd > width:
@@ -643,51 +638,11 @@ def plan_room(cell: Rect) -> float:
     return min(cell.width, cell.height - CAPTION) - 2 * LABEL_ROOM
 
 
-def titled_table(x0: float, y0: float, width: float, title: str, header, rows, *,
-                 ident: str, title_id: str, notes=None,
-                 lettering: tuple[float, ...] = (3.5,)) -> list:
-    """A table under its title at (x0, y0), cut to ``width`` by :func:`fit_columns`.
-
-    ``lettering``: the heights of the table's lettering to try, largest first (GOST 2.304's
-    3.5 and 2.5 mm): the first at which every column fits is used, its rows kept ROW tall and
-    (a smaller one) its columns widened alike to span ``width``; when none fits, the last,
-    cut. When columns were left out, ``notes(shown, total)`` gives the remarks to append to
-    the title, longest first; the first that fits the width at 3.5 or 2.5 mm is used.
-    """
-    from ..drawing.sheet import Text, table_items, text_width
-
-    for lh in lettering:
-        fit = fit_columns(header, rows, width, lh, TABLE_PAD * lh)
-        if fit.shown == fit.total:
-            break
-    if lh < lettering[0] and fit.shown == fit.total:
-        # smaller lettering to keep every column: the table still spans its place
-        k = width / sum(fit.widths)
-        fit = FittedTable(fit.header, fit.rows, [w * k for w in fit.widths], fit.shown, fit.total)
-    text, height = title, 5.0
-    if fit.shown < fit.total and notes is not None:
-        for note in notes(fit.shown, fit.total):
-            for h in (3.5, 2.5):
-                if text_width(Text((0, 0), title + note, h, layer="text")) <= width:
-                    text, height = title + note, h
-                    break
-            if height < 5.0:
-                break
-    items: list[object] = [Text((x0, y0 + 5.0), text, height, layer="text", id=title_id)]
-    items += table_items((x0, y0 + CAPTION), fit.widths, fit.rows, fit.header, lh,
-                         row_height=ROW, id=ident)
-    return items
-
-
 def _column_widths(header, rows, height: float = 3.5, pad: float = 3.0) -> list[float]:
-    from ..drawing.sheet import Text, text_width
-
-    widths = []
-    for j in range(len(header)):
-        cells = [str(header[j])] + [str(row[j]) for row in rows]
-        widths.append(max(text_width(Text((0, 0), c, height, layer="tables")) for c in cells
-                          if c.strip()) + pad)
-    return widths
+    """Each column as wide as its widest entry lettered at ``height`` (type B), plus ``pad``."""
+    return [max(lettering_width(c, height) for c in
+                [str(header[j])] + [str(row[j]) for row in rows] if c.strip()) + pad
+            for j in range(len(header))]
 
 
 def table_parts(header, rows, width: float, key: int = 1) -> list[FittedTable]:
@@ -726,22 +681,3 @@ def split_table_height(header, rows, width: float, key: int = 1) -> float:
         return math.inf
     return sum(CAPTION + ROW * (len(rows) + 1) for _ in parts) + TABLE_PART_GAP * (
         len(parts) - 1)
-
-
-def split_table(x0: float, y0: float, width: float, title: str, header, rows, *, ident: str,
-                title_id: str, continued: str, key: int = 1) -> list:
-    """A table under its title at (x0, y0); wider than ``width``, in parts one under the
-    other (:func:`table_parts`), each after the first under ``continued`` («Продолжение
-    таблицы …») with the key columns and its own header. Ids: the first part
-    ``{ident}-r{i}c{j}``, the n-th ``{ident}-{n}-r{i}c{j}``."""
-    from ..drawing.sheet import Text, table_items
-
-    items: list = []
-    y = y0
-    for n, part in enumerate(table_parts(header, rows, width, key), 1):
-        items.append(Text((x0, y + 5.0), title if n == 1 else continued, 5.0 if n == 1 else 3.5,
-                          layer="text", id=title_id if n == 1 else f"{title_id}-{n}"))
-        items += table_items((x0, y + CAPTION), part.widths, part.rows, part.header, 3.5,
-                             id=ident if n == 1 else f"{ident}-{n}")
-        y += CAPTION + ROW * (len(rows) + 1) + TABLE_PART_GAP
-    return items

@@ -28,7 +28,7 @@ Items
 Text styles
     ``GOST_B`` names the font of the sheets, osifont (``osifont.ttf``, an ISO 3098 /
     GOST 2.304-like CAD font); texts that osifont cannot letter (Ё, Э, −, ₁ …; see
-    :mod:`graphplan.drawing.fonts`) use ``DEJAVU_SANS`` or ``DEJAVU_SANS_MONO``. A CAD
+    :mod:`graphplan.fonts`) use ``DEJAVU_SANS`` or ``DEJAVU_SANS_MONO``. A CAD
     program without the font substitutes its own.
 Ids
     An item's id is attached as XDATA of application ``GRAPHPLAN`` (group code 1000).
@@ -46,7 +46,7 @@ from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
 
-from ..drawing import fonts
+from .. import fonts
 from ..drawing.sheet import (
     LAYERS,
     SLANT_DEG,
@@ -94,7 +94,7 @@ GOST_LINETYPES: dict[tuple[float, ...], tuple[str, str]] = {
         "GOST_DASHDOTDOT", "GOST 2.303 dash-dot-dot / штрихпунктирная с двумя точками __ .. __"),
 }
 
-#: Font family (graphplan.drawing.fonts.FONT_CHAIN) → (DXF text style, font file).
+#: Font family (graphplan.fonts.FONT_CHAIN) → (DXF text style, font file).
 TEXT_STYLES: dict[str, tuple[str, str]] = {
     "osifont": ("GOST_B", "osifont.ttf"),
     "DejaVu Sans": ("DEJAVU_SANS", "DejaVuSans.ttf"),

@@ -8,7 +8,7 @@ sheet at 1:1. Two engines write it:
   macOS or Linux): a one-page Typst document whose page is the sheet's size and whose
   only content is the sheet's SVG, converted by Typst's SVG engine (usvg + svg2pdf):
   lines and fills stay vector paths, the lettering stays text in subsets of the
-  bundled fonts (osifont, DejaVu; :func:`graphplan.drawing.fonts.find_font_file`), embedded.
+  bundled fonts (osifont, DejaVu; :func:`graphplan.fonts.find_font_file`), embedded.
   The system's fonts are never consulted, so the PDF is the same bytes everywhere.
 * ``cairo`` (``pip install 'graphplan[cairo]'`` and the cairo C library): CairoSVG,
   the first engine; cairo finds fonts through fontconfig only, so it letters in
@@ -25,7 +25,8 @@ import re
 from html import unescape
 from pathlib import Path
 
-from ..drawing import Sheet, fonts
+from .. import fonts
+from ..drawing import Sheet
 from ..errors import InputError
 from ..files import write_atomic
 from .extra import engine_for, require
@@ -60,9 +61,9 @@ def svg_size_mm(svg_text: str) -> tuple[float, float]:
 def font_folders(svg_text: str = "") -> list[str]:
     """Folders of the fonts Typst may use for ``svg_text``.
 
-    The folders of the bundled fonts of :data:`graphplan.drawing.fonts.FONT_CHAIN`, then — only
+    The folders of the bundled fonts of :data:`graphplan.fonts.FONT_CHAIN`, then — only
     when the SVG has characters none of them draws — the folders of the system fonts
-    that do (:func:`graphplan.drawing.fonts.fallback_font_files`). Typst takes folders, not files.
+    that do (:func:`graphplan.fonts.fallback_font_files`). Typst takes folders, not files.
     """
     paths = [fonts.find_font_file(f) for f in fonts.FONT_CHAIN]
     folders = list(dict.fromkeys(str(p.parent) for p in paths if p is not None))

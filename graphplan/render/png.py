@@ -8,7 +8,7 @@ Two engines draw it: ``resvg`` (the default; the resvg-py wheel, MIT, no system
 library), given the bundled font files only — never the system's — so the preview is
 the same pixels on every machine; and ``cairo`` (CairoSVG, the ``cairo`` extra and the
 cairo C library), whose fonts come from fontconfig. Both letter each text in the first
-family of its font list, which :mod:`graphplan.drawing.fonts` makes a family that draws the
+family of its font list, which :mod:`graphplan.fonts` makes a family that draws the
 whole text. Choose with ``engine=`` or ``$GRAPHPLAN_EXPORT_ENGINE``.
 """
 
@@ -17,7 +17,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from ..drawing import Sheet, fonts
+from .. import fonts
+from ..drawing import Sheet
 from ..errors import InputError
 from ..files import write_atomic
 from .extra import engine_for, require

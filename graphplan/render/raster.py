@@ -1,7 +1,7 @@
 """PNG previews of SVG sheets (the engine of :mod:`graphplan.render.png`).
 
 resvg (a wheel, no system library) letters each text in the first family of its
-font-family list from the bundled fonts; :mod:`graphplan.drawing.fonts` puts a family that
+font-family list from the bundled fonts; :mod:`graphplan.fonts` puts a family that
 draws the whole text first.
 """
 

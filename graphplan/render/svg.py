@@ -20,6 +20,7 @@ from pathlib import Path
 
 import svgwrite
 
+from .. import fonts
 from ..drawing import (
     LAYERS,
     SLANT_DEG,
@@ -36,7 +37,6 @@ from ..drawing import (
     Text,
     arc_point,
     arrow_parts,
-    fonts,
     hatch_segments,
 )
 from ..errors import LayoutError

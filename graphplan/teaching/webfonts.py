@@ -1,12 +1,12 @@
 """The sheets' fonts inlined into a page: ``@font-face`` rules with ``data:`` URLs.
 
 A teaching page must open on a laptop with no network and without graphplan's fonts
-installed, so the families of :data:`graphplan.drawing.fonts.FONT_CHAIN` (osifont, the GOST-like
+installed, so the families of :data:`graphplan.fonts.FONT_CHAIN` (osifont, the GOST-like
 lettering of the drawings; DejaVu Sans and DejaVu Sans Mono for the symbols osifont
 lacks, and for the captions) are embedded, each **subset to the characters the page
 uses** (fontTools, which comes with matplotlib) and packed as WOFF: a few tens of kB
 instead of the 0.3–0.8 MB of the whole files. The ``@font-face`` rules keep the families'
-own names, so the SVG's ``font-family`` lists (:func:`graphplan.drawing.fonts.font_family`) pick
+own names, so the SVG's ``font-family`` lists (:func:`graphplan.fonts.font_family`) pick
 them up unchanged. A family whose file is not installed is left out; the page then
 falls back on the reader's fonts (it still loads nothing).
 """
@@ -17,7 +17,7 @@ import base64
 import io
 from functools import lru_cache
 
-from ..drawing import fonts
+from .. import fonts
 
 #: Characters every page embeds, whatever it letters: Latin, Cyrillic, Greek, digits and
 #: the symbols of the method. A page's own characters outside it are added; so nearly

@@ -44,6 +44,7 @@ fontTools (a declared dependency) is imported only when a font file is read.
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import unicodedata
 from collections.abc import Mapping
@@ -316,7 +317,7 @@ def _metrics_key(raw: bytes) -> str:
 
 
 def _metrics_path(key: str) -> Path | None:
-    from ..files import user_cache_dir
+    from .files import user_cache_dir
 
     folder = user_cache_dir()
     return None if folder is None else folder / "font-metrics" / f"{key}.json"
@@ -359,8 +360,8 @@ def _write_cached_metrics(key: str, metrics: _Metrics) -> None:
     """Store the metrics under ``key`` (atomically); silently nothing if it cannot."""
     import json
 
-    from ..errors import GraphplanError
-    from ..files import write_atomic
+    from .errors import GraphplanError
+    from .files import write_atomic
 
     path = _metrics_path(key)
     if path is None:
@@ -530,6 +531,18 @@ def text_width(text: str, height: float) -> float:
         else:
             total += adv / info.units_per_em * size  # type: ignore[union-attr]
     return total
+
+
+#: GOST 2.304 type B slant: the letters lean at 75° to the baseline, 15° from upright.
+SLANT_DEG = 15.0
+
+
+def lettering_width(text: str, height: float, italic: bool = True) -> float:
+    """Width (mm) of a line of lettering at capital height ``height``: the advance widths
+    (:func:`text_width`) plus, when slanted (type B), the lean of its capitals,
+    w = Σ advance + h·tan 15°."""
+    lean = height * math.tan(math.radians(SLANT_DEG)) if italic else 0.0
+    return text_width(text, height) + lean
 
 
 def text_of_svg(svg_text: str) -> str:
