@@ -32,6 +32,7 @@ from .primitives import (
     Collector,
     Drawing,
     DrawingError,
+    fit_circle,
     read_bytes,
     text_centre,
 )
@@ -373,10 +374,8 @@ def _circle(pts, col: Collector, colour: str) -> None:
     (PDF has none: writers draw one as four Bézier arcs), kept as the SVG and DXF readers
     keep theirs — a joint, a pivot."""
     (x0, y0), (x1, y1) = pts[0], pts[-1]
-    cx = sum(p[0] for p in pts[:-1]) / (len(pts) - 1)
-    cy = sum(p[1] for p in pts[:-1]) / (len(pts) - 1)
+    cx, cy, r = fit_circle(pts)
     rs = [math.hypot(p[0] - cx, p[1] - cy) for p in pts]
-    r = sum(rs) / len(rs)
     if 0.1 <= r <= 100.0 and math.hypot(x1 - x0, y1 - y0) <= 0.02 * r and \
             max(abs(q - r) for q in rs) <= 0.02 * r:
         col.circle(cx, cy, r, colour)

@@ -6,8 +6,10 @@ positions among them, the working and idle strokes marked ``р.х.`` / ``х.х.`
 found by its caption (``План положений``, no position named) and the crank's pivot
 lettered near it, and read as a draftsman reads it:
 
-1. **The pivot** — the joint circle by the pivot's letter (``O``, ``O1``) that most lines
-   end on (the crank of every position starts there).
+1. **The pivot** — the joint circle by the pivot's letter (``O``, ``O1``) whose lines
+   (ending on it, or through it: a two-throw crank ``A–O–D`` drawn as one line) lead to
+   the most joint circles at one distance (the crank of every position starts there). A
+   joint's circle is 0,6–3,5 mm in radius, not filled (a filled dot is a centre of mass).
 2. **The crank pins** — the joint circles at the far ends of the lines from the pivot
    (lines split into pieces followed on); the drawn crank radius ``r`` is their median
    distance, so the plan's Kl as drawn is ``l_OA / r``.
@@ -42,7 +44,10 @@ Judged (:func:`judge_position_plan`), with the calculation checker's verdicts:
   between the dead centres and ``х.х.`` (``i.s.``) by the idle one; swapped or on the
   wrong side is an ``extreme`` finding.
 
-Trajectories of points are not compared.
+* **A position not drawn** (no number of it at the crank circle): ``extreme`` at a dead
+  centre, ``missing`` elsewhere; wrong.
+* **The trajectories** drawn (:mod:`.trajectories`): each point's curves against its
+  exact path over the turn (``point``, quantity ``⌒S2``).
 """
 
 from __future__ import annotations
@@ -55,11 +60,11 @@ import numpy as np
 from ..units import fold
 from .plans import caption_kind, caption_position, stated_scales
 from .positions import PivotPlaced
-from .primitives import Text
+from .primitives import Text, fit_circle
 from .scene import Scene, split_names
 
 Pt = tuple[float, float]
-HINGE_R = (0.9, 3.5)  #: radii of a drawn joint's circle, mm (a centre of mass' dot is smaller)
+HINGE_R = (0.6, 3.5)  #: radii of a drawn joint's circle, mm (a filled dot is a centre of mass)
 GATE = 6.0  #: a drawn joint farther than this from its exact place is not taken as it, mm
 STROKES = {"р.х.": "working", "рх": "working", "w.s.": "working",
            "х.х.": "idle", "хх": "idle", "i.s.": "idle"}
@@ -83,6 +88,8 @@ class PositionPlan(PivotPlaced):
     links: dict[tuple[str, str], tuple[Pt, Pt]] = field(default_factory=dict)
     strokes: list[tuple[str, Text]] = field(default_factory=list)
     kl_used: float | None = None
+    paths: list = field(default_factory=list)  # the trajectories drawn (DrawnPath)
+    exact_paths: dict = field(default_factory=dict)  # point → its exact path on the sheet
     kind: str = "positions"
     position: str | None = None
 
@@ -115,9 +122,13 @@ def _hinges(scene: Scene) -> np.ndarray:
     got = getattr(scene, "_pp_hinges", None)
     if got is not None:
         return got
-    cs = [(c.x, c.y, c.r) for c in scene.drawing.circles if HINGE_R[0] <= c.r <= HINGE_R[1]]
+    dots = _dots(scene)
+    cs = [(c.x, c.y, c.r) for c in scene.drawing.circles if HINGE_R[0] <= c.r <= HINGE_R[1]
+          and not _is_dot(dots, c.x, c.y, c.r)]
     # a reader that gives a circle also as its curve pieces (DXF) counts it once
-    loops = _round_loops([s for s in scene.drawing.segments if s.curve and s.length < 2.0])
+    loops = [lp for lp in _round_loops([s for s in scene.drawing.segments
+                                        if s.curve and s.length < 2.0])
+             if not _is_dot(dots, *lp)]
     left = list(cs)
     for lp in loops:
         twin = next((c for c in left if math.hypot(c[0] - lp[0], c[1] - lp[1]) < 0.2 and
@@ -129,6 +140,29 @@ def _hinges(scene: Scene) -> np.ndarray:
     out = np.array(cs, float).reshape(-1, 3)
     scene._pp_hinges = out  # type: ignore[attr-defined]
     return out
+
+
+def _dots(scene: Scene) -> np.ndarray:
+    """The filled round shapes of the drawing as ``(x, y, r)`` rows: a dot (a centre of
+    mass) is filled, a joint's circle is not."""
+    out = []
+    for f in scene.drawing.fills:
+        if len(f.points) < 8 or f.colour == "#ffffff":
+            continue
+        pts = np.asarray(f.points, float)
+        c = (pts.min(axis=0) + pts.max(axis=0)) / 2  # a closing point repeats the first
+        r = np.hypot(pts[:, 0] - c[0], pts[:, 1] - c[1])
+        if float(r.mean()) <= HINGE_R[1] + 0.5 and float(r.max() - r.min()) <= 0.1 * r.mean():
+            out.append((float(c[0]), float(c[1]), float(r.mean())))
+    return np.array(out, float).reshape(-1, 3)
+
+
+def _is_dot(dots: np.ndarray, x: float, y: float, r: float) -> bool:
+    """A circle that is the outline of a filled dot of its size."""
+    if not len(dots):
+        return False
+    d = np.hypot(dots[:, 0] - x, dots[:, 1] - y)
+    return bool(np.any((d <= 0.25 * r) & (np.abs(dots[:, 2] - r) <= 0.2 * r + 0.05)))
 
 
 def _round_loops(segs) -> list[tuple[float, float, float]]:
@@ -172,7 +206,7 @@ def _round_loops(segs) -> list[tuple[float, float, float]]:
         if len(many) != 1 or min(many) % 2:
             continue
         pts = np.array([(segs[i].x1, segs[i].y1) for i in idx])
-        c = pts.mean(axis=0)
+        c = np.array(fit_circle(pts)[:2])
         r = np.hypot(pts[:, 0] - c[0], pts[:, 1] - c[1])
         rm = float(r.mean())
         if HINGE_R[0] <= rm <= HINGE_R[1] and float(r.max() - r.min()) <= 0.05 * rm:
@@ -193,12 +227,40 @@ def _ends_on(scene: Scene, c) -> list[int]:
     return [int(i) for i in np.flatnonzero(on)]
 
 
-def _far_end(scene: Scene, i: int, c) -> tuple[np.ndarray, np.ndarray]:
-    """The far end of line ``i`` from circle ``c``, followed on through the pieces it is
-    split into (a collinear piece starting where it stops), and its direction."""
+def _through(scene: Scene, c) -> list[int]:
+    """Indices of the lines that pass through circle ``c``'s centre (within its radius)
+    with both ends off it: the crank of a two-pin crankshaft (``A–O–D``) drawn as one line."""
+    _ends_on(scene, (0.0, 0.0, 0.0))  # the lines' ends, once
+    e = scene._pp_ends  # type: ignore[attr-defined]
+    x, y, r = c
+    d = e[:, 2:4] - e[:, 0:2]
+    L = np.maximum(e[:, 4], 1e-9)
+    w = np.stack([x - e[:, 0], y - e[:, 1]], axis=1)
+    t = (w[:, 0] * d[:, 0] + w[:, 1] * d[:, 1]) / L
+    perp = np.abs(w[:, 0] * d[:, 1] - w[:, 1] * d[:, 0]) / L
+    on = (perp <= 0.3) & (t > r + 0.6) & (t < L - r - 0.6) & (e[:, 4] >= 2.0)
+    return [int(i) for i in np.flatnonzero(on)]
+
+
+def _from_centre(scene: Scene, c) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The far ends (and directions) of every line leaving circle ``c``: those ending on
+    it, and both halves of those passing through its centre."""
+    out = [_far_end(scene, i, c) for i in _ends_on(scene, c)]
+    for i in _through(scene, c):
+        out += [_far_end(scene, i, c, end) for end in (0, 1)]
+    return out
+
+
+def _far_end(scene: Scene, i: int, c, end: int | None = None
+             ) -> tuple[np.ndarray, np.ndarray]:
+    """The far end of line ``i`` from circle ``c`` (or its end ``end``: 0 the first, 1 the
+    second), followed on through the pieces it is split into (a collinear piece starting
+    where it stops), and its direction."""
     s = scene.segments[i]
     a, b = np.array([s.x1, s.y1]), np.array([s.x2, s.y2])
-    if np.hypot(*(a - c[:2])) > np.hypot(*(b - c[:2])):
+    if end is not None:
+        a, b = (np.array(c[:2], float), b) if end == 1 else (np.array(c[:2], float), a)
+    elif np.hypot(*(a - c[:2])) > np.hypot(*(b - c[:2])):
         a, b = b, a
     u = (b - a) / max(float(np.hypot(*(b - a))), 1e-9)
     seen = {i}
@@ -340,6 +402,26 @@ def _hungarian(C: np.ndarray) -> list[int]:
     return cols
 
 
+def _crank_pins(scene: Scene, hinges: np.ndarray, pc) -> tuple[list[int], float]:
+    """The hinges at the far ends of the lines from ``pc`` that lie on one circle about it
+    (within 5 % + 0,5 mm of the median distance), and that circle's radius, mm."""
+    o = pc[:2]
+    pins_i: set[int] = set()
+    for e, u in _from_centre(scene, pc):
+        j = _hinge_at_end(hinges, e, u, skip=o)
+        if j is not None:
+            pins_i |= {int(i) for i in np.flatnonzero(
+                np.hypot(hinges[:, 0] - hinges[j, 0], hinges[:, 1] - hinges[j, 1]) < 0.3)}
+    if len(pins_i) < 3:
+        return [], 0.0
+    dist = {i: float(np.hypot(*(hinges[i, :2] - o))) for i in pins_i}
+    r = float(np.median(list(dist.values())))
+    pins = [i for i in pins_i if abs(dist[i] - r) <= 0.05 * r + 0.5]
+    if len(pins) < 3:
+        return [], 0.0
+    return pins, float(np.median([dist[i] for i in pins]))
+
+
 def find_position_plans(scene: Scene, ref) -> list[PositionPlan]:
     """The plans of all positions of a drawing (module docstring)."""
     mech = ref.mech
@@ -360,15 +442,20 @@ def find_position_plans(scene: Scene, ref) -> list[PositionPlan]:
         near = [t for t in letters if math.hypot(t.x - cap.x, t.y - cap.y) <= 400.0]
         if not near:
             continue
-        # the pivot: of the hinges within 60 mm of its letter, the one most lines end on
-        # (the crank of every position), the nearer first among equals
+        # the pivot: of the hinges within 60 mm of its letter, the one whose lines lead to
+        # the most joints on one circle (the crank of every position: a pin, where many
+        # positions' rods meet, leads to few), the nearer first among equals
         best = None
+        seen: set[int] = set()
         for t in near:
             d = np.hypot(hinges[:, 0] - t.x, hinges[:, 1] - t.y)
             for i in np.flatnonzero(d <= 60.0):
-                if int(i) in used:
+                if int(i) in used or int(i) in seen:
                     continue
-                n = len(_ends_on(scene, hinges[i]))
+                seen.add(int(i))
+                if len(_ends_on(scene, hinges[i])) + len(_through(scene, hinges[i])) < 3:
+                    continue
+                n = len(_crank_pins(scene, hinges, hinges[i])[0])
                 key = (n, -float(d[i]))
                 if best is None or key > best[0]:
                     best = (key, int(i))
@@ -385,21 +472,9 @@ def find_position_plans(scene: Scene, ref) -> list[PositionPlan]:
 def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
     o = pc[:2]
     # 2. the crank pins: hinges at the far ends of the lines from the pivot
-    ends = [_far_end(scene, i, pc) for i in _ends_on(scene, pc)]
-    pins_i: set[int] = set()
-    for e, u in ends:
-        j = _hinge_at_end(hinges, e, u, skip=o)
-        if j is not None:
-            pins_i |= {int(i) for i in np.flatnonzero(
-                np.hypot(hinges[:, 0] - hinges[j, 0], hinges[:, 1] - hinges[j, 1]) < 0.3)}
-    if len(pins_i) < 3:
-        return None
-    dist = {i: float(np.hypot(*(hinges[i, :2] - o))) for i in pins_i}
-    r = float(np.median(list(dist.values())))
-    pins = [i for i in pins_i if abs(dist[i] - r) <= 0.05 * r + 0.5]
+    pins, r = _crank_pins(scene, hinges, pc)
     if len(pins) < 3:
         return None
-    r = float(np.median([dist[i] for i in pins]))
     # a pin whose crank line is broken (by a slide block drawn over it) is on the circle too
     dh = np.hypot(hinges[:, 0] - o[0], hinges[:, 1] - o[1])
     pins = sorted(set(pins) | {int(i) for i in np.flatnonzero(np.abs(dh - r) <= 0.02 * r + 0.3)})
@@ -424,15 +499,19 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
         if not labs:
             continue
         dt = math.hypot(t.x - o[0], t.y - o[1])
-        if not (0.4 * r - 10.0 <= dt <= r + 30.0):
+        if not (0.4 * r - 10.0 <= dt <= r + 60.0):
             continue
+        leads = _leader_ends(scene, t)
+        if dt > r + 30.0 and not any(
+                np.min(np.hypot(hinges[pins, 0] - q[0], hinges[pins, 1] - q[1]) -
+                       hinges[pins, 2]) <= 1.6 for q in leads):
+            continue  # far out only on a leader to a pin
         L = by_text.get(id(t))
         lead = None
         if L is not None and L.node is not None:
             nd = scene.nodes[L.node]
             lead = (nd.x, nd.y)
         at = math.atan2(t.y - o[1], t.x - o[0])
-        leads = _leader_ends(scene, t)
         for i in pins:
             c = hinges[i]
             # the text's distance from the pin, and how far round the crank circle it is
@@ -574,7 +653,7 @@ def lay_joints(plan: PositionPlan, scene: Scene, ref, kl: float, laid_at: dict[s
     pins = np.array([*list(plan.pins.values()), plan.pivot])
     free = [i for i in range(len(hinges))
             if np.min(np.hypot(pins[:, 0] - hinges[i, 0], pins[:, 1] - hinges[i, 1])) > 0.3]
-    keys = [k for k in plan.expected if k not in plan.joints]
+    keys = [k for k in plan.expected if k not in plan.joints and k[1] != mech.crank.pin]
     E = np.array([plan.expected[k] for k in keys]).reshape(-1, 2)
     H = hinges[free, :2] if free else np.zeros((0, 2))
     if len(H) and len(E):
@@ -606,6 +685,15 @@ def lay_joints(plan: PositionPlan, scene: Scene, ref, kl: float, laid_at: dict[s
                 if hi in claimed and float(np.hypot(*(claimed[hi] - E[ei]))) <= 0.5:
                     plan.joints[key] = (float(H[hi, 0]), float(H[hi, 1]))
                     break
+    # (c) a second pin of the crank (a throw at 180°: A2 opposite A) is drawn where
+    # another position's pin is: the nearest hinge, pins included
+    on_crank = set(mech.points_of(mech.crank.link)) - {mech.crank.pin, piv}
+    for key in [k for k in plan.expected if k not in plan.joints and k[1] in on_crank]:
+        e = np.asarray(plan.expected[key])
+        d = np.hypot(hinges[:, 0] - e[0], hinges[:, 1] - e[1])
+        if float(d.min()) <= GATE:
+            plan.joints[key] = (float(hinges[int(d.argmin()), 0]),
+                                float(hinges[int(d.argmin()), 1]))
     # each link with both ends found (the crank from the pivot)
     for lab in labs:
         at = {n: plan.joints[(lab, n)] for n in names if (lab, n) in plan.joints}
@@ -794,6 +882,25 @@ def judge_position_plan(plan: PositionPlan, scene: Scene, ref, tol, lang: str):
             for n in mine:
                 plan.expected[(lab, n)] = at[n]
     follows = (scale_cause,) if scale_cause else ()
+    # a position the plan does not draw (no number at the crank circle)
+    for lab in labels:
+        if lab in plan.pins:
+            continue
+        at_deg = math.degrees(phi[lab]) % 360
+        if any(abs(_wrap(phi[lab] - dd)) < 1e-6 for dd in dead):
+            en = (f"the extreme position {lab} is not drawn: no number {lab} at the crank "
+                  f"circle (the dead centre at φ = {num(at_deg, 'en', 4)}°).")
+            ru = (f"крайнее положение {lab} не построено: у окружности кривошипа нет номера "
+                  f"{lab} (мёртвое положение при φ = {num(at_deg, 'ru', 4)}°).")
+            kind = "extreme"
+        else:
+            en = (f"position {lab} is not drawn: no number {lab} at the crank circle "
+                  f"(φ = {num(at_deg, 'en', 4)}°).")
+            ru = (f"положение {lab} не построено: у окружности кривошипа нет номера {lab} "
+                  f"(φ = {num(at_deg, 'ru', 4)}°).")
+            kind = "missing"
+        j.findings.append(finding(lab, f"φ{lab}", kind, None, at_deg, "°", en, ru, "wrong"))
+    _judge_paths(plan, scene, ref, kl, tol, j, finding, follows)
     bad_point: dict[tuple[str, str], str] = {}
     for (lab, name), xy in sorted(plan.joints.items()):
         e = np.asarray(plan.expected[(lab, name)])
@@ -838,6 +945,33 @@ def judge_position_plan(plan: PositionPlan, scene: Scene, ref, tol, lang: str):
             f"l_{name}/Kl = {num(le, 'ru', 4)} мм.", v,
             (cause,) if cause else follows))
     return j
+
+
+def _judge_paths(plan: PositionPlan, scene: Scene, ref, kl: float, tol, j, finding,
+                 follows) -> None:
+    """The trajectories drawn on the plan against the exact paths
+    (:mod:`.trajectories`): each point's curves together, their 95th-percentile distance
+    from its path."""
+    from ..words import num
+    from .trajectories import path_verdict, read_paths, sheet_paths
+
+    plan.exact_paths = sheet_paths(ref, plan.pivot, kl)
+    plan.paths = read_paths(scene.drawing.segments, plan.exact_paths,
+                            plan.pivot, tol.reading_mm)
+    by_point: dict[str, list] = {}
+    for p in plan.paths:
+        by_point.setdefault(p.point, []).append(p)
+    for name, ps in sorted(by_point.items()):
+        worst = max(p.worst for p in ps)
+        v = path_verdict(worst, tol.reading_mm)
+        if v == "ok":
+            continue
+        j.findings.append(finding(
+            None, f"⌒{name}", "point", worst, 0.0, "mm",
+            f"the trajectory of {name} is drawn up to {num(worst, 'en', 3)} mm off the exact "
+            f"path of {name} at Kl = {num(kl, 'en', 4)}.",
+            f"траектория точки {name} проведена до {num(worst, 'ru', 3)} мм от точной "
+            f"траектории {name} при Kl = {num(kl, 'ru', 4)}.", v, follows))
 
 
 __all__ = ["PositionPlan", "find_position_plans", "judge_position_plan", "lay_joints",

@@ -5,14 +5,15 @@ the drawing checker (:mod:`.position_plan`).
 code, but as a CAD user does: each link a line from hinge to hinge, some split in two
 pieces, some polylines through three points; every hinge an INSERT of a block holding a
 circle; the crank pins numbered with MTEXT set outwards (``3`` or ``A3``); the letters of
-the first position; the slider guides and a trajectory drawn as a polyline; ``р.х.`` and
-``х.х.`` by the strokes' arcs; the caption ``План положений, μl = 0,002 м/мм`` with a
-decimal comma; the whole far from the origin and, optionally, in inches.
+the first position; the slider guides; the trajectories: the crank pin's as a CIRCLE, a
+centre of mass' as a SPLINE through 90 of its points over the turn; ``р.х.`` and ``х.х.``
+by the strokes' arcs; the caption ``План положений, μl = 0,002 м/мм`` with a decimal
+comma; the whole far from the origin and, optionally, in inches.
 
 :class:`PositionPlant` puts one error of a student into it: a joint of one position moved
 (its links with it), the scale written wrong, the positions numbered from another start
-(each number at the next position's pin), or an extreme position drawn at a wrong crank
-angle.
+(each number at the next position's pin), an extreme position drawn at a wrong crank
+angle or left out, or a trajectory drawn off its path.
 """
 
 from __future__ import annotations
@@ -34,7 +35,9 @@ class PositionPlant:
     ``kind``: ``moved`` (the joint ``point`` of position ``position`` moved by ``offset``
     mm), ``scale`` (Kl written ``factor`` times the one drawn), ``numbering`` (each number
     of the equally spaced positions written at the next one's pin), ``extreme`` (the dead
-    centre position ``position`` drawn with the crank turned ``turn`` degrees on).
+    centre position ``position`` drawn with the crank turned ``turn`` degrees on),
+    ``missing`` (position ``position`` not drawn: its links, joints and number left out),
+    ``path`` (the trajectory of ``point`` drawn moved by ``offset`` mm).
     """
 
     kind: str
@@ -47,8 +50,10 @@ class PositionPlant:
 
 def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = None,
                     inches: bool = False, letter_numbers: bool = False,
-                    origin: tuple[float, float] = (3150.0, -1720.0)) -> Path:
-    """Write the plan of all positions of ``variant`` as a DXF (module docstring)."""
+                    origin: tuple[float, float] = (3150.0, -1720.0),
+                    hinge_r: float = 1.2) -> Path:
+    """Write the plan of all positions of ``variant`` as a DXF (module docstring); the
+    joints' circles of radius ``hinge_r`` mm, each centre of mass a filled dot of 0,8 mm."""
     import ezdxf
 
     from ...kinematics import solve_positions
@@ -80,7 +85,11 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     doc = ezdxf.new("R2013")
     doc.header["$INSUNITS"] = 1 if inches else 4
     blk = doc.blocks.new("ШАРНИР")
-    blk.add_circle((0, 0), 1.2 * u)
+    blk.add_circle((0, 0), hinge_r * u)
+    dot = doc.blocks.new("ЦЕНТР_МАСС")
+    dot.add_circle((0, 0), 0.8 * u)
+    hatch = dot.add_hatch(color=7)
+    hatch.paths.add_edge_path().add_arc((0, 0), 0.8 * u, 0, 360)
     doc.layers.add("МЕХАНИЗМ", color=7)
     doc.layers.add("ОСИ", color=1, linetype="DASHDOT" if "DASHDOT" in doc.linetypes else
                    "CONTINUOUS")
@@ -93,6 +102,8 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     frames = [f for f in mech.frame_points]
     n_line = 0
     for k in range(len(labels)):
+        if plant is not None and plant.kind == "missing" and labels[k] == plant.position:
+            continue
         pts = {n: at(n, k) for n in P if not n.startswith("S")}
         for f in frames:
             pts[f] = org + (np.asarray(mech.frame_points[f]) - o) / kl
@@ -105,7 +116,7 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
                 if L < 2.6:
                     continue
                 e = (B - A) / L
-                A1, B1 = (A + 1.2 * e, B - 1.2 * e) if n_line % 2 else (A, B)  # rim or centre
+                A1, B1 = (A + hinge_r * e, B - hinge_r * e) if n_line % 2 else (A, B)  # rim
                 if n_line % 3 == 0:
                     M = A1 + 0.45 * (B1 - A1)
                     msp.add_line(X(A1), X(M), dxfattribs={"layer": "МЕХАНИЗМ"})
@@ -119,6 +130,9 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
         for n in hinges:
             if n in pts:
                 msp.add_blockref("ШАРНИР", X(pts[n]), dxfattribs={"layer": "МЕХАНИЗМ"})
+        for n in P:
+            if n.startswith("S") and n not in frames:
+                msp.add_blockref("ЦЕНТР_МАСС", X(at(n, k)), dxfattribs={"layer": "МЕХАНИЗМ"})
     for f in frames:
         c = org + (np.asarray(mech.frame_points[f]) - o) / kl
         msp.add_blockref("ШАРНИР", X(c), dxfattribs={"layer": "МЕХАНИЗМ"})
@@ -139,10 +153,15 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
             a = org + (base + (min(s) - 15 * kl) * d - o) / kl
             b = org + (base + (max(e_) + 15 * kl) * d - o) / kl
             msp.add_line(X(a), X(b), dxfattribs={"layer": "ОСИ"})
-    centres = sorted(n for n in P if n.startswith("S"))
+    # the trajectories: the crank pin's circle, a centre of mass' closed curve
+    turn = ref.analysis.one_turn.pos.points
+    msp.add_circle(X(org), mech.crank.length / kl * u, dxfattribs={"layer": "ОСИ"})
+    centres = sorted(n for n in turn if n.startswith("S") and n not in mech.frame_points)
     if centres:
-        path_pts = [X(at(centres[0], k)) for k in range(len(labels))]
-        msp.add_lwpolyline(path_pts, close=True, dxfattribs={"layer": "ОСИ"})
+        traced = plant.point if plant is not None and plant.kind == "path" else centres[0]
+        shift = np.asarray(plant.offset) if plant is not None and plant.kind == "path" else 0.0
+        fit = [X(org + (np.asarray(q) - o) / kl + shift) for q in turn[traced][:-1:4]]
+        msp.add_spline(fit_points=[*fit, fit[0]], dxfattribs={"layer": "ОСИ"})
     # the numbers at the crank pins (outwards), the letters of the first position
     r = mech.crank.length / kl
     pin = mech.crank.pin
@@ -154,6 +173,8 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
         nxt = {even[i]: even[(i + 1) % len(even)] for i in range(len(even))}
         order = [nxt.get(k, k) for k in order]
     for k, lab in enumerate(labels):
+        if plant is not None and plant.kind == "missing" and lab == plant.position:
+            continue
         q = at(pin, order[k])
         out = (q - org) / max(float(np.hypot(*(q - org))), 1e-9)
         text = f"{pin}{lab}" if letter_numbers else lab
