@@ -20,7 +20,7 @@ import re
 from dataclasses import dataclass, field
 
 from ..units import fold
-from .plans import caption_kind, caption_position, stated_scales
+from .plans import Boxed, caption_kind, caption_position, stated_scales
 from .scene import Scene, point_segment, split_names
 
 _FORCE = re.compile(r"^(?:R[τtnⁿ]?\d\d|G\d{1,2}|(?:Pи|Pu|Фи|Ф|Fи|Pin)\d{1,2}|Q\d{0,2}|"
@@ -79,7 +79,7 @@ class DrawnForce:
 
 
 @dataclass(slots=True)
-class FoundForcePlan:
+class FoundForcePlan(Boxed):
     """A force plan found on the drawing."""
 
     group: int
@@ -92,16 +92,6 @@ class FoundForcePlan:
     closure_mm: float | None = None
     notes: list[str] = field(default_factory=list)
     unnamed: list[DrawnForce] = field(default_factory=list)  # arrows drawn, no name read
-
-    @property
-    def where(self) -> str:
-        x0, y0, x1, y1 = self.bbox
-        return f"at x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} mm"
-
-    @property
-    def where_ru(self) -> str:
-        x0, y0, x1, y1 = self.bbox
-        return f"x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} мм"
 
 
 def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:

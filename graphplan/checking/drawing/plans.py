@@ -49,8 +49,26 @@ class StatedScale:
     text: Text
 
 
+class Boxed:
+    """A figure found on a sheet by its box ``bbox`` (x0, y0, x1, y1, mm): where it is, as
+    the findings say it (the box's centre)."""
+
+    __slots__ = ()
+    bbox: tuple[float, float, float, float]
+
+    @property
+    def where(self) -> str:
+        x0, y0, x1, y1 = self.bbox
+        return f"at x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} mm"
+
+    @property
+    def where_ru(self) -> str:
+        x0, y0, x1, y1 = self.bbox
+        return f"x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} мм"
+
+
 @dataclass(slots=True)
-class FoundPlan:
+class FoundPlan(Boxed):
     """A plan found on the drawing.
 
     ``points`` maps each name as the student wrote it to the node's place (mm of the
@@ -69,16 +87,6 @@ class FoundPlan:
     scale: StatedScale | None = None
     segments: list[int] = field(default_factory=list)
     options: dict[str, list[tuple[float, float]]] = field(default_factory=dict)
-
-    @property
-    def where(self) -> str:
-        x0, y0, x1, y1 = self.bbox
-        return f"at x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} mm"
-
-    @property
-    def where_ru(self) -> str:
-        x0, y0, x1, y1 = self.bbox
-        return f"x = {(x0 + x1) / 2:.0f}, y = {(y0 + y1) / 2:.0f} мм"
 
 
 def pole_kind(name: str) -> str | None:
