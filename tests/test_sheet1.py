@@ -455,3 +455,59 @@ def test_a_720_degree_cycle_numbers_the_diagrams_nodes_by_the_positions_of_one_t
     d = fit_sheet_diagrams(a, a.sheet1)
     assert d.intervals == 24
     assert d.node_labels == (*(str(i // 2) if i % 2 == 0 else "" for i in range(24)), "0")
+
+
+@pytest.mark.parametrize("name", ["compressor", "engine", "pump", "slotter", "crusher"])
+def test_a_force_analysis_of_one_position_gets_a_second_acceleration_plan(built, name):
+    """Students draw at least two acceleration plans (issue 18: 'by default the working
+    and one idle position'): where kinetostatics.positions names one, sheet 1 draws it and
+    a position of the other stroke, each with its cell and its ω/ε scheme, every plan
+    readable (longest ≥ 40 mm)."""
+    from graphplan.kinematics import in_working_stroke
+
+    a, sheet, _ = built(name)
+    sc = a.sheet1
+    given = [a.kin.labels.index(x) for x in a.mech.settings["kinetostatics"]["positions"]]
+    assert len(given) == 1 and sc.acc_plans[0] == given[0] and len(sc.acc_plans) == 2
+    working = in_working_stroke(a.mech, a.cycle, a.kin.phi)
+    assert working[sc.acc_plans[0]] != working[sc.acc_plans[1]]
+    assert len(sc.layout.a_cells) == len(sc.layout.schemes) == 2
+    ids = {it.id for it in iter_leaves(sheet.all_items())}
+    for k in sc.acc_plans:
+        assert f"sch{k}-caption" in ids and any((i or "").startswith(f"ap{k}-") for i in ids)
+
+
+#: GOST 2.302's scales as m/mm (1:1 = 0.001): 2:1, 1:1, 1:2, 1:2.5, 1:4, 1:5, 1:10, 1:15, 1:20,
+#: 1:25, 1:40, 1:50, 1:75, 1:100, 1:200, 1:400, 1:500 — written out here, not taken from the
+#: code under test
+GOST_2_302 = {"0.0005", "0.001", "0.002", "0.0025", "0.004", "0.005", "0.01", "0.015", "0.02",
+              "0.025", "0.04", "0.05", "0.075", "0.1", "0.2", "0.4", "0.5"}
+
+
+@pytest.mark.parametrize("name", [*EXAMPLES, "compressor", "engine", "pump", "slotter",
+                                  "crusher"])
+def test_the_schemes_are_drawn_at_gost_scales(built, name):
+    """The ω/ε schemes and the structural scheme give their Kl under their captions; each is
+    one of GOST 2.302's scales (1:7.5 = 0.0075 m/mm and 1:1.5 are not)."""
+    _, sheet, _ = built(name)
+    scales = [it.text for it in iter_leaves(sheet.all_items())
+              if isinstance(it, Text) and re.fullmatch(r"(sch.+|groups)-scale", it.id or "")]
+    assert scales
+    for text in scales:
+        value = re.search(r"Kl = ([0-9.,]+)", text)[1].replace(",", ".")
+        assert value in GOST_2_302, text
+
+
+def test_the_structural_scheme_lists_the_kinematic_pairs_of_the_shaper(built):
+    """The shaper (method B.2.1: crank, block, rocker, rod, ram; n = 5, p5 = 7, W = 1):
+    the table of the kinematic pairs beside the structural scheme has the 7 lower pairs —
+    5 revolute (O1, A, O3, B, C) and 2 prismatic (block 2 in rocker 3, ram 5 on the frame
+    6) — each of class 5, and 3·5 − 2·7 = 1 is the W the structural analysis writes."""
+    _, sheet, _ = built("shaper")
+    cells = _table_cells(sheet, "groups-pairs")
+    rows = [[cells[i, j] for j in range(1, 5)] for i in range(1, 1 + max(i for i, _ in cells))]
+    assert len(rows) == 7
+    assert sorted(r[0] for r in rows if r[2] == "вращ.") == ["A", "B", "C", "O1", "O3"]
+    assert sorted(r[1] for r in rows if r[2] == "поступ.") == ["2–3", "5–6"]
+    assert {r[3] for r in rows} == {"5"}
+    assert 3 * 5 - 2 * len(rows) == 1

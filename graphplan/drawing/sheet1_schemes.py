@@ -47,6 +47,7 @@ from .sheet import (
     iter_leaves,
     text_at_centre,
     text_box,
+    text_width,
 )
 
 L = "position_plan"
@@ -54,9 +55,21 @@ MARGIN = 12.0  #: room around a scheme for its arrows and letters, mm
 CAPTION_GAP = 9.0  #: from the foot of a scheme's caption (its scale) to the scheme's top, mm
 OMEGA_R, EPS_R = 5.0, 8.5  #: radii of the arrows of ω and ε, mm
 TURNING = 1e-9  #: |ω|, |ε| below this: the link does not turn (rad/s, rad/s²)
-#: Mantissas of the schemes' length scales: the reductions of GOST 2.302 (1:1, 1:1.5 … 1:7.5,
-#: times a power of ten, as m/mm: 1:15 is 0.015 m/mm)
-SCHEME_SERIES = (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5)
+#: The schemes' length scales, m/mm: GOST 2.302's scales — enlargements 100:1 … 2:1, natural
+#: 1:1, reductions 1:2 … 1:1000 (1:15 is 0.015 m/mm; 1:1.5 and 1:7.5 are not among them)
+GOST_SCALES = tuple(0.001 * r for r in (
+    0.01, 0.02, 0.025, 0.05, 0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0,
+    20.0, 25.0, 40.0, 50.0, 75.0, 100.0, 200.0, 400.0, 500.0, 800.0, 1000.0))
+
+
+def gost_scale(need: float) -> float:
+    """The finest scale of GOST 2.302 (m/mm) at least ``need``: a drawing ``need`` m/mm
+    fits drawn at it (beyond 1:1000, ``need`` rounded up to the 1, 2, 5 series)."""
+    for kl in GOST_SCALES:
+        if kl >= need * (1 - 1e-9):
+            return kl
+    return nice_ceil(need, (1.0, 2.0, 5.0))
+
 
 WORDS = {
     "ru": {"scheme": "ω и ε звеньев, пол. {k}", "groups": "Структурная схема: группы Ассура",
@@ -70,7 +83,7 @@ def _fit(points: np.ndarray, room_w: float, room_h: float) -> float:
     """Length scale (m/mm) from the usual series that fits ``points`` into the room."""
     w, h = np.ptp(points, axis=0)
     need = max(float(w) / max(room_w, 1.0), float(h) / max(room_h, 1.0), 1e-12)
-    return nice_ceil(need, SCHEME_SERIES)
+    return gost_scale(need)
 
 
 def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
@@ -97,7 +110,7 @@ def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
             # blobs (a rotating кулиса's scheme went to Kl 0.15 m/mm, the press's groups 0.01)
             return best[1], best[2], draw(best[2])
         best = (over, kl, P)
-        kl = nice_ceil(kl * 1.01, SCHEME_SERIES)
+        kl = gost_scale(kl * 1.01)
     return kl, P, draw(P)
 
 
@@ -218,15 +231,23 @@ def groups_items(analysis, slots, cell: Rect, lang: str, ident: str = "groups") 
     pieces = [(f"I({st.initial[0]},{st.initial[1]})", {mech.crank.link})]
     pieces += [(g.formula, set(g.links)) for g in st.groups]
     n = len(pieces)
-    slot_w = (cell.width - 4.0) / n
+    table, table_w = pairs_table(st, cell, n, lang, ident)
+    # the pieces side by side, or in rows where the cell is too narrow for them in one
+    avail = cell.width - 4.0 - table_w
+    cols = max(1, min(n, int(avail // PIECE_MIN_W)))
+    row_h = (cell.height - CAPTION) / math.ceil(n / cols)
+    if row_h < ROW_MIN:  # too low for rows: side by side, however narrow
+        cols, row_h = n, cell.height - CAPTION
+    slot_w = avail / cols
 
     def points_of(links):
         names = {p for lk in links for p in mech.points_of(lk)}
         return np.array([kin.pos.points[p][k] for p in names if p in kin.pos.points])
 
-    boxes = [Rect(cell.x0 + 2.0 + i * slot_w + MARGIN, cell.y0 + CAPTION + MARGIN,
-                  cell.x0 + 2.0 + (i + 1) * slot_w - MARGIN, cell.y1 - MARGIN - 5.0)
-             for i in range(n)]
+    boxes = [Rect(cell.x0 + 2.0 + c * slot_w + MARGIN, cell.y0 + CAPTION + r * row_h + MARGIN,
+                  cell.x0 + 2.0 + (c + 1) * slot_w - MARGIN,
+                  cell.y0 + CAPTION + (r + 1) * row_h - MARGIN - 5.0)
+             for r, c in (divmod(i, cols) for i in range(n))]
 
     def draw(i, links):
         return lambda P: _mechanism(mech, kin, k, P, links, slots, f"{ident}-{i}")
@@ -242,14 +263,51 @@ def groups_items(analysis, slots, cell: Rect, lang: str, ident: str = "groups") 
         items += drawn
         geoms = [g for it in iter_leaves(drawn) if (g := item_geometry(it)) is not None]
         under = shapely.union_all(geoms).bounds[3] + 7.0 if geoms else cell.y1 - 4.0
-        items.append(text_at_centre(((box.x0 + box.x1) / 2, min(under, cell.y1 - 4.0)),
+        items.append(text_at_centre(((box.x0 + box.x1) / 2, min(under, box.y1 + MARGIN + 1.0)),
                                     formula, 3.5, layer="text", id=f"{ident}-{i}-formula"))
         own = {p for lk in links for p in mech.points_of(lk)}
         for p in sorted(own):
             if p in kin.pos.points and (p in mech.frame_points or p in _joints(mech)
                                         or any(p in d.joints for d in mech.dyads)):
                 labels.append(LabelRequest(P(kin.pos.points[p][k]), p, 3.5, group=f"{ident}-{i}"))
-    return _lettered(items, labels, cell, w["groups"], w["scale"].format(v=plain(kl)), ident)
+    return [*_lettered(items, labels, cell, w["groups"], w["scale"].format(v=plain(kl)), ident),
+            *table]
+
+
+PAIRS_ROW = 5.0  #: row height of the table of the kinematic pairs (2.5 mm lettering), mm
+PIECE_MIN_W = 60.0  #: the least width of a piece of the structural scheme beside the table, mm
+ROW_MIN = 2 * MARGIN + 35.0  #: the least height of a row of the structural scheme's pieces, mm
+PAIR_WORDS = {
+    "ru": {"title": "Кинематические пары", "R": "вращ.", "P": "поступ."},
+    "en": {"title": "Kinematic pairs", "R": "revolute", "P": "prismatic"},
+}
+PAIR_HEADER = {"ru": ["Пара", "Звенья", "Вид", "Класс"], "en": ["Pair", "Links", "Kind", "Class"]}
+
+
+def pairs_table(structure, cell: Rect, n_pieces: int, lang: str, ident: str
+                ) -> tuple[list[Item], float]:
+    """The table of the kinematic pairs the structural analysis counts (W = 3n − 2p5 − p4:
+    each pair, the links it joins, revolute or prismatic, its class), in the right of the
+    structural scheme's cell when the cell holds it beside ``n_pieces`` pieces at least
+    PIECE_MIN_W wide: ``(items, width taken)``, or ``([], 0)``."""
+    from .sheet import Text, table_items
+
+    w = PAIR_WORDS[lang]
+    rows = [[p.joint or "—", "–".join(p.links), w[p.kind], "5"] for p in structure.pairs]
+    widths = [max(text_width(Text((0, 0), str(c), 2.5, layer="tables")) for c in col) + 3.0
+              for col in zip(PAIR_HEADER[lang], *rows, strict=False)]
+    table_w = sum(widths)
+    height = CAPTION + 4.0 + PAIRS_ROW * (len(rows) + 1)
+    if (cell.width - 4.0 - table_w - 6.0 < n_pieces * PIECE_MIN_W
+            or cell.height - CAPTION < height):
+        return [], 0.0
+    x0 = cell.x1 - table_w - 2.0
+    y0 = cell.y0 + CAPTION + 4.0
+    out: list[Item] = [Text((x0, y0 + 3.5), w["title"], 3.5, layer="text",
+                            id=f"{ident}-pairs-title")]
+    out += table_items((x0, y0 + 5.0), widths, rows, PAIR_HEADER[lang], 2.5, row_height=PAIRS_ROW,
+                       id=f"{ident}-pairs")
+    return out, table_w + 6.0
 
 
 def _lettered(items: list[Item], labels: list[LabelRequest], cell: Rect, caption: str,

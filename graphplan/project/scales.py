@@ -231,6 +231,12 @@ def acceleration_positions(mech: Mechanism, kin, cycle=None, forces=None) -> tup
     # (the default's of the largest |Mур| there) beside it, as students draw two
     working = in_working_stroke(mech, cycle, kin.phi)
     other = [k for k in default if k not in given and working[k] != working[given[0]]]
+    if not other:  # the default's are of the same stroke: the other's largest |Mур|
+        dead = {ex.label for ex in mech.positions.extra
+                if ex.from_dead_centre is not None and ex.turn == 0.0}
+        m = np.abs(forces.M_bal)
+        other = sorted((k for k in range(kin.n) if working[k] != working[given[0]]
+                        and kin.labels[k] not in dead), key=lambda k: -m[k])
     rest = other or [k for k in default if k not in given]
     return (*given, *rest[:1])
 
