@@ -49,7 +49,7 @@ EXAMPLES = sorted(p.stem for p in EXAMPLES_DIR.glob("*.toml"))
 #: increment removes what it fixes (strict xfail: a case that starts passing fails here
 #: until it is removed from this list).
 TODO = {
-    *((n, 2, "filled") for n in EXAMPLES if n != "sixbar_press"),
+    *((n, 2, "filled") for n in EXAMPLES if n not in ("sixbar_press", "shaper", "shaper_prp")),
     *((n, 1, "filled") for n in EXAMPLES if n != "sixbar_press"),
 }
 

@@ -36,12 +36,14 @@ from ..model import russian_kind
 from ..numbers import fmt
 from ..project import (
     CAPTION,
+    FORCE_TABLE_W,
     GROUP_EQ_ROOM,
     group_links,
+    path_sides,
     sheet2_positions,
     sheet2_table_header,
 )
-from ..units import Scale
+from ..units import Scale, nice_ceil
 from .labels import LabelRequest, place_labels
 from .sheet import (
     MAIN,
@@ -59,6 +61,7 @@ from .sheet import (
     Text,
     arc_point,
     item_geometry,
+    table_items,
     text_at_centre,
     text_box,
     text_width,
@@ -66,9 +69,11 @@ from .sheet import (
 from .sheet1 import (
     JOINT_R,
     WHITE_FILL,
+    _joints,
     _pair_points,
     _Paper,
     _slider_block,
+    _support,
     _units,
     ill_mark_items,
     link_items,
@@ -85,6 +90,7 @@ SHORT_MM = 2.0  #: a force's vector on a plan shorter than this is written with 
 
 WORDS = {
     "ru": {"group": "Схема звеньев", "link": "Схема звена", "pos": "пол.", "plan": "План сил",
+           "mechanism": "Механизм с нагрузками",
            "crank": "Кривошип", "lever": "Рычаг Жуковского", "lever_short": "Рычаг Ж.",
            "curve": "Уравновешивающий момент Mур(φ), все нагрузки",
            "qs": "Сила полезного сопротивления", "work": "р.х.", "idle": "х.х.",
@@ -97,6 +103,7 @@ WORDS = {
            "header": ("Группы Ассура и кривошип вычерчены отдельно, Kl = {kl}; стрелки сил на "
                       "схемах показывают направления, их величины — на планах сил")},
     "en": {"group": "Scheme of links", "link": "Scheme of link", "pos": "pos.",
+           "mechanism": "Mechanism with its loads",
            "plan": "Force plan", "crank": "Crank", "lever": "Zhukovsky's lever",
            "lever_short": "Lever",
            "curve": "Balancing moment Mур(φ), all loads",
@@ -150,15 +157,18 @@ def _segments(fp) -> dict[str, np.ndarray]:
 
 
 def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: float,
-                 ident: str, fig: str, slots, lang: str) -> list[Item]:
+                 ident: str, fig: str, slots, lang: str, whole: bool = False) -> list[Item]:
     """One Assur group (or the crank), freed from its neighbours, at position k: its links,
     its loads, the reactions of the links taken away (a revolute pair's in its components
-    Rτ and Rn as the plan found them), the crank's h21 and Mур."""
+    Rτ and Rn as the plan found them), the crank's h21 and Mур. With ``whole`` (``fp``
+    None) the whole mechanism in the position, on its supports, its points lettered, with
+    its loads and Mур but no reactions, and beside each slider's path the diagram of the
+    force on it (:func:`_path_diagrams`)."""
     mech, kin, loads, forces = analysis.mech, analysis.kin, analysis.loads, analysis.forces
     crank = links == (mech.crank.link,)
     names = [p for ln in links for p in mech.points_of(ln) if p in kin.pos.points]
     pivot = kin.pos.points[mech.crank.pivot][k]
-    eqs = _wrapped(moment_lines(fp, lang), cell.width - 4.0)
+    eqs = [] if whole else _wrapped(moment_lines(fp, lang), cell.width - 4.0)
     P = _figure_paper(kin, k, names, Rect(cell.x0, cell.y0, cell.x1,
                                           cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM)), kl,
                                           pivot)
@@ -183,20 +193,37 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
                 c = np.asarray(P(G[k] + np.dot(at - G[k], u[k]) * u[k]))
                 out.append(Line(tuple(c - 14 * d), tuple(c + 14 * d), Style(0.25, (15, 3, 1, 3)),
                                   layer=L, id=f"{pre}-guide-{slider}"))
+        if whole:
+            for fp_name, xy in mech.frame_points.items():
+                out += [it for it in _support(P(xy), f"{pre}-sup-{fp_name}")]
         return out
 
     # centred on what is drawn (a slot runs past the points over its block's travel)
     area = Rect(cell.x0, cell.y0 + CAPTION, cell.x1,
                 cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM))
+    beside = path_sides(mech, kin, k) if whole else []
+    if beside:  # the diagrams beside the sliders' paths take their side of the cell
+        sx = max(float(sd[0]) for _, sd in beside), min(float(sd[0]) for _, sd in beside)
+        sy = max(float(sd[1]) for _, sd in beside), min(float(sd[1]) for _, sd in beside)
+        area = Rect(area.x0 - PATH_ROOM * min(sx[1], 0.0), area.y0 + PATH_ROOM * max(sy[0], 0.0),
+                    area.x1 - PATH_ROOM * max(sx[0], 0.0), area.y1 + PATH_ROOM * min(sy[1], 0.0))
     geo = [g for it in drawn_links(P)
            if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     if geo:
         x0, y0, x1, y1 = shapely.union_all(geo).bounds
+        # every line of the moment equations under the figure: the figure stands higher,
+        # above all of them, where the cell leaves it the height (the equations were cut
+        # from the top where it stood centred over two lines' room)
+        full = cell.y1 - 2.0 - EQ_PITCH * len(eqs)
+        if eqs and full < area.y1 and y1 - y0 + 2 * ARROW_MM <= full - area.y0:
+            area = Rect(area.x0, area.y0, area.x1, full)
         dx = (area.x0 + area.x1) / 2 - (x0 + x1) / 2
         dy = (area.y0 + area.y1) / 2 - (y0 + y1) / 2
         P = _Paper((P.ox + dx, P.oy + dy), P.kl, P.pivot)
     items: list[Item] = drawn_links(P)
-    if crank:
+    if whole:
+        joints = set(_joints(mech))
+    elif crank:
         joints = {mech.crank.pivot, mech.crank.pin}
     else:
         dyad = next(dy for dy in mech.dyads if set(dy.links) == set(links))
@@ -215,8 +242,8 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
         for m in loads.moments.get(ln, ()):
             if m.moment[k]:
                 couples.append((m.name, ln, float(m.moment[k])))
-    seg = _segments(fp)
-    for r in forces.reactions.values():
+    seg = {} if whole else _segments(fp)
+    for r in () if whole else forces.reactions.values():
         vec, at = np.asarray(r.vector[k], float), np.asarray(r.at[k], float)
         if np.hypot(*vec) == 0:
             continue
@@ -257,18 +284,29 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
         a0 = 30.0 + 90.0 * n
         items += turning_arrow(mc, 7.0, a0, 120.0, m >= 0, 30.0, layer=L, ident=f"{pre}-m{n}")
         reqs.append(LabelRequest(arc_point(mc, 9.0, a0 + 60.0), name, 3.5, group=pre))
-    if crank:
-        items += _crank_marks(analysis, k, P, pre, ident, reqs)
+    if crank or whole:
+        items += _crank_marks(analysis, k, P, pre, ident, reqs, reaction=not whole)
+    if whole:
+        items += _path_diagrams(analysis, k, P, cell, beside, pre, lang, reqs)
+        # the moving points lettered; the frame's pivots (O …) by their supports only: the
+        # drawing checker takes a lettered pivot under a caption for a scheme it judges
+        for name in (n for n in names if n not in mech.frame_points):
+            at = np.asarray(P(kin.pos.points[name][k]), float)
+            reqs.append(LabelRequest((float(at[0]) + 1.5, float(at[1]) - 1.5), name, 3.5,
+                                     group=pre))
     w = WORDS[lang]
-    what = (f"{w['link']} {links[0]}" if crank else f"{w['group']} {'–'.join(links)}")
+    what = (w["mechanism"] if whole else f"{w['link']} {links[0]}" if crank
+            else f"{w['group']} {'–'.join(links)}")
     scale = _units(Scale("Kl", kl, "m/mm").basis, lang)
     pos = f"{w['pos']} {kin.labels[k]}"
-    caption = _caption(cell, (f"{what}, {pos}, {scale}", f"{what.split()[0]}, {pos}, {scale}",
-                              f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
+    short = what.split()[0] if whole else f"{what.split()[0]} {'–'.join(links)}"
+    caption = _caption(cell, (f"{what}, {pos}, {scale}", f"{what}, {pos}, Kl = {fmt(kl)}",
+                              f"{short}, {pos}, {scale}", f"{short}, {pos}, Kl = {fmt(kl)}"),
                        f"{pre}-caption" if not crank else f"{ident}-caption")
     obstacles = [g for it in items
                  if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
-    eq_items = _bottom_lines(eqs, cell, f"{pre}-eq", below=_lowest(obstacles))
+    eq_items = _equation_items(moment_lines(fp, lang) if not whole else [], eqs, cell,
+                               obstacles, f"{pre}-eq")
     # the letters stay inside the figure's cell, clear of its caption
     keep = [_outside(cell),
             text_box(caption).buffer(0.5), *(text_box(t).buffer(0.5) for t in eq_items)]
@@ -289,14 +327,16 @@ def _step_text(st, lang: str) -> str:
 
 def moment_lines(fp, lang: str) -> list[str]:
     """The moment equations of a group (of the crank) as written under its figure: the
-    equation with the arms read on it, the numbers, the result («→ Rτ12 = 86,9 Н»)."""
+    equation with the arms read on it, the numbers, the result («; Rτ12 = 86,9 Н»: the
+    arrow «→» of the steps' text is not in osifont, and one such character set the whole
+    line in upright DejaVu Sans beside the type-B lettering of the sheet)."""
     out = []
     for st in fp.steps:
         if not st.equation.startswith("ΣM"):
             continue
         text = _step_text(st, lang).split(" (")[0].rstrip(".")
         head, arrow, tail = text.partition(" → ")
-        text = head + arrow + tail.split("; ")[0]
+        text = head + ("; " if arrow else "") + tail.split("; ")[0]
         text = re.sub(r"\(link ([^)]*)\)", r"(\1)", text).replace("_", "")
         out.append(text)
     return out
@@ -361,9 +401,35 @@ def _bottom_lines(lines: list[str], cell: Rect, ident: str, below: float) -> lis
     return out
 
 
-def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
+def _equation_items(raw: list[str], eqs: list[str], cell: Rect, obstacles, ident: str
+                    ) -> list[Text]:
+    """The moment equations of a figure in its cell, never a line dropped: under the figure
+    when they fit there (``eqs``: ``raw`` wrapped to the cell's width); else as a block in a
+    corner of the cell the figure leaves empty (a slanting rod leaves two), wrapped to its
+    width; only when no corner holds them, the last lines under the figure."""
+    below = _lowest(obstacles)
+    room = len(eqs) if below == -math.inf else int((cell.y1 - 2.0 - (below + 1.5)) // EQ_PITCH)
+    if room >= len(eqs):
+        return _bottom_lines(eqs, cell, ident, below)
+    figure = shapely.union_all([g.buffer(1.5) for g in obstacles]) if obstacles else None
+    for share in (1.0, 0.6, 0.45):
+        lines = _wrapped(raw, share * cell.width - 4.0)
+        w = max(text_width(Text((0, 0), ln, EQ_H, layer="text")) for ln in lines)
+        h = EQ_PITCH * len(lines)
+        for x0 in (cell.x0 + 2.0, cell.x1 - 2.0 - w):
+            for y0 in (cell.y1 - 1.0 - h, cell.y0 + CAPTION + 1.0):
+                box = shapely.box(x0, y0, x0 + w, y0 + h)
+                if y0 < cell.y0 + CAPTION or (figure is not None and box.intersects(figure)):
+                    continue
+                return [Text((x0, y0 + EQ_PITCH * (n + 1) - 1.5), ln, EQ_H, layer="text",
+                             id=f"{ident}{n + 1}") for n, ln in enumerate(lines)]
+    return _bottom_lines(eqs, cell, ident, below)
+
+
+def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs, reaction: bool = True
+                 ) -> list[Item]:
     """The crank's line of R21 (dashed), the arm h21 from the pivot and the turning arrow
-    of Mур about the pivot."""
+    of Mур about the pivot (without ``reaction``: the turning arrow only)."""
     mech, kin, forces = analysis.mech, analysis.kin, analysis.forces
     items: list[Item] = []
     pts = {n: p[k] for n, p in kin.pos.points.items()}
@@ -372,7 +438,7 @@ def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
         r21 = np.asarray(forces.vector(f"R{mech.dyads[0].links[0]}{mech.crank.link}")[k])
     except KeyError:
         r21 = np.zeros(2)
-    if np.hypot(*r21) > 0:
+    if np.hypot(*r21) > 0 and reaction:
         a = np.asarray(P(pts[mech.crank.pin]))
         o = np.asarray(P(pivot))
         d = np.array([r21[0], -r21[1]]) / float(np.hypot(*r21))
@@ -388,9 +454,95 @@ def _crank_marks(analysis, k: int, P, pre: str, ident: str, reqs) -> list[Item]:
     c = P(pivot)
     a0 = math.degrees(float(kin.phi[k])) + 150.0
     items += turning_arrow(c, 9.0, a0, 60.0, float(forces.M_bal[k]) >= 0, 20.0,
-                           layer="force_plan", ident=f"{ident}-mbal")
+                           layer="force_plan", ident=f"{pre if not reaction else ident}-mbal")
     reqs.insert(0, LabelRequest(arc_point(c, 13.0, a0 + 30.0), "Mур", 3.5, group=pre))
     return items
+
+
+PATH_ROOM = 42.0  #: beside a slider's path, the room of the diagram of the force on it, mm
+PATH_OFF = 10.0  #: that diagram's axis stands this far from the path (clear of the block), mm
+PATH_DASH = (4.0, 1.5)  #: its idle stroke's dashes, mm
+
+
+def _path_diagrams(analysis, k: int, P, cell: Rect, beside, pre: str, lang: str,
+                   reqs: list[LabelRequest]) -> list[Item]:
+    """Beside the path of each slider a force of the variant acts on, the diagram of that
+    force over the slider's travel, drawn against the path at the mechanism's Kl (the
+    method's «F_пс(s) beside the slider path»): its axis parallel to the path PATH_OFF mm
+    off it, on the side away from the crank (``beside``: :func:`graphplan.project.path_sides`),
+    ordinates Q/Kq perpendicular to it — the working stroke solid, the idle one dashed —,
+    the thin ordinates of the sheet's positions, the analysed one's dotted and numbered.
+    Kq is the round value (1, 2, 2.5, 4, 5 × 10ⁿ) that keeps the largest ordinate within the
+    room left beside the path (at most PATH_ROOM − PATH_OFF − 6 mm)."""
+    from ..forces import resistance_loads
+
+    mech, kin = analysis.mech, analysis.kin
+    curves, _unit = q_curves(analysis)
+    fine = analysis.solve_on(q_grid(analysis))  # the grid of q_curves: solved once
+    on_fine = resistance_loads(mech, fine, analysis.cycle)
+    at_positions = resistance_loads(mech, kin, analysis.cycle)
+    w = WORDS[lang]
+    box = cell.polygon()
+    items: list[Item] = []
+    for i, side in beside:
+        name, _x, size, own, _ = curves[i]
+        n = np.array([side[0], -side[1]], float)  # paper, y down
+        path = np.array([P(p) for p in np.asarray(on_fine[i].at, float)])
+        across = path @ n
+        if np.ptp(across) > 0.5 or np.max(size) <= 0:  # not a straight path, or no load
+            continue
+        base = path + PATH_OFF * n
+        # the room to the cell's edge beside the path, letters kept inside
+        edge = min(_ray_to_edge(box, tuple(b), tuple(n)) for b in base[:: max(len(base) // 24, 1)])
+        room = min(PATH_ROOM - PATH_OFF - 6.0, edge - PATH_OFF - 6.0)
+        if room < 8.0:
+            continue
+        kq = nice_ceil(float(np.max(size)) / room)
+        top = base + (size / kq)[:, None] * n
+        inside = box.buffer(-2.0)
+        if not inside.contains(shapely.MultiPoint(np.vstack([base, top]))):
+            continue  # the path runs to the cell's edge: no room beside it
+        along = path @ np.array([-n[1], n[0]])
+        lo, hi = int(np.argmin(along)), int(np.argmax(along))
+        items.append(Line(tuple(base[lo]), tuple(base[hi]), THIN, layer="diagrams",
+                          id=f"{pre}-q{i}-axis"))
+        edges = np.flatnonzero(np.diff(own.astype(int))) + 1
+        for m, run in enumerate(np.split(np.arange(len(top)), edges)):
+            run = np.append(run, run[-1] + 1) if run[-1] + 1 < len(top) else run
+            if len(run) < 2:
+                continue
+            style = Style(0.5) if own[run[0]] else Style(0.3, PATH_DASH)
+            items.append(Polyline(tuple(map(tuple, top[run])), style, layer="diagrams",
+                                  id=f"{pre}-q{i}-curve{m}"))
+        ld = at_positions[i]
+        pts = np.asarray(ld.at, float)
+        vals = np.hypot(*np.asarray(ld.vector, float).T)
+        for j in range(len(kin.phi)):
+            b = np.asarray(P(pts[j])) + PATH_OFF * n
+            t = b + vals[j] / kq * n
+            if vals[j] / kq > 0.3:
+                items.append(Line(tuple(b), tuple(t), THIN, layer="diagrams",
+                                  id=f"{pre}-q{i}-ord{j}"))
+            if j == k:
+                items.append(Circle(tuple(t), 0.6, Style(0.25, fill="black"), layer="diagrams",
+                                    id=f"{pre}-q{i}-at"))
+                reqs.append(LabelRequest(tuple(t + 2.0 * n), kin.labels[k], 2.5, group=pre))
+        peak = int(np.argmax(size))
+        mm = "мм" if lang == "ru" else "mm"
+        reqs.append(LabelRequest(tuple(top[peak] + 2.5 * n),
+                                 f"{name}(s), Kq = {fmt(kq)} {w['N']}/{mm}", 2.5, group=pre))
+    return items
+
+
+def _ray_to_edge(box, at, d) -> float:
+    """How far from ``at`` along the unit vector ``d`` the polygon ``box``'s edge is, mm."""
+    from shapely.geometry import LineString
+
+    if not box.contains(Point(at)):
+        return 0.0
+    far = LineString([at, (at[0] + 1000.0 * d[0], at[1] + 1000.0 * d[1])])
+    cut = far.intersection(box)  # a convex cell: one segment from ``at`` to the edge
+    return float(cut.length) if not cut.is_empty else 0.0
 
 
 def _outside(cell: Rect):
@@ -398,17 +550,71 @@ def _outside(cell: Rect):
     return cell.polygon().buffer(400.0).difference(cell.polygon().buffer(-0.5))
 
 
-def _plan_items(plan, cell: Rect, captions, ident: str, rename, arms: bool = False
-                ) -> list[Item]:
+def _plan_items(plan, cell: Rect, captions, ident: str, rename, arms: bool = False,
+                avoid=()) -> list[Item]:
     """A plan in its cell (:func:`graphplan.drawing.sheet1.plan_items`, every force named;
     with ``arms`` the lever's arms h too), its caption the first of ``captions`` that fits
     the cell."""
     caption = _caption(cell, captions, f"{ident}-caption")
     items = plan_items(plan, cell, captions[0], ident, segment_labels=True, rename=rename,
                        leaders=LEADERS, keep_out=[_outside(cell),
-                                                  text_box(caption).buffer(0.5)],
+                                                  text_box(caption).buffer(0.5), *avoid],
                        arm_labels=arms)
     return [it for it in items if it.id != f"{ident}-caption"] + [caption]
+
+
+FORCE_ROW = 5.0  #: row of the table of a plan's forces (2.5 mm lettering), mm
+
+
+def _bounds(items) -> tuple[float, float, float, float]:
+    """The bounding box of some items (paper mm)."""
+    geo = [g for it in items if (g := item_geometry(it)) is not None]
+    return shapely.union_all(geo).bounds
+
+
+def _force_table(fp, cell: Rect, ident: str, lang: str, scheme: tuple[Rect, list] | None = None
+                 ) -> list[Item]:
+    """The table of a force plan's forces (method B.3: «a table of forces and reactions —
+    name, mm, N»): each force of the plan, its vector's length on the plan (mm) and its value
+    (N = mm · Kp), at 2.5 mm lettering. Beside the plan, at the right of its ``cell`` under
+    the caption, where the cell is wider than the plan and its letters need; else in a
+    corner of its group's cell that the group's drawing leaves empty (``scheme``: that
+    cell and its items); else left out (the values are in the reports' tables)."""
+    rows = [[q, f"{r.exact_mm:.1f}", f"{r.value:.0f}" if r.value >= 100 else fmt(r.value, 3)]
+            for q, r in fp.readings.items() if r.unit == "N"]
+    if not rows:
+        return []
+    header = ["Сила", "мм", "Н"] if lang == "ru" else ["Force", "mm", "N"]
+    widths = [max(text_width(Text((0, 0), str(c), 2.5, layer="tables")) for c in col) + 3.0
+              for col in zip(header, *rows, strict=False)]
+    tw, th = sum(widths), FORCE_ROW * (len(rows) + 1)
+    if tw > FORCE_TABLE_W:
+        return []
+    pts = np.array(list(fp.points.values()), float)
+    need = float(np.ptp(pts[:, 0])) + 40.0 if len(pts) else 0.0
+    at = None
+    if cell.width - need >= FORCE_TABLE_W and th <= cell.height - CAPTION - 4.0:
+        x0 = min(cell.x1 - FORCE_TABLE_W, (cell.x0 + cell.x1 - FORCE_TABLE_W) / 2 + need / 2)
+        at = (x0 + (FORCE_TABLE_W - tw) / 2, cell.y0 + CAPTION + 2.0)
+    elif scheme is not None:
+        at = _free_corner(scheme[0], scheme[1], tw, th)
+    if at is None:
+        return []
+    return list(table_items(at, widths, rows, header, 2.5, row_height=FORCE_ROW, id=ident))
+
+
+def _free_corner(cell: Rect, items, w: float, h: float) -> tuple[float, float] | None:
+    """The top-left corner of a ``w`` × ``h`` box in a corner of ``cell`` (under its
+    caption) clear by 3 mm of every line and text of ``items``, or None."""
+    geo = [text_box(it) if isinstance(it, Text) else item_geometry(it) for it in items
+           if not isinstance(it, Group)]
+    taken = shapely.union_all([g.buffer(2.5) for g in geo if g is not None and not g.is_empty])
+    for y0 in (cell.y1 - 2.0 - h, cell.y0 + CAPTION + 2.0):
+        for x0 in (cell.x0 + 2.0, cell.x1 - 2.0 - w):
+            box = shapely.box(x0, y0, x0 + w, y0 + h)
+            if y0 >= cell.y0 + CAPTION and not box.intersects(taken):
+                return x0, y0
+    return None
 
 
 def _short_notes(plan, lang: str) -> dict[str, str]:
@@ -459,23 +665,34 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     for k, cells in zip(s2.positions, s2.cells, strict=True):
         ident = f"s2p{k}"
         plans = analysis.force_plans(k, page)  # the crank's arms at kl_crank; the lessons' too
+        o = s2.first
+        if s2.kl_mechanism is not None:
+            items += _group_items(analysis, None, k, mech.moving_links, cells[0],
+                                  s2.kl_mechanism.per_mm, f"s2m{k}", "m", s2.slots, lang,
+                                  whole=True)
         for i, (fp, links) in enumerate(zip(plans, figures, strict=True)):
             fig_kl = kls[i]
-            items += _group_items(analysis, fp, k, links, cells[2 * i], fig_kl.per_mm, ident,
+            scheme = _group_items(analysis, fp, k, links, cells[2 * i + o], fig_kl.per_mm, ident,
                                   f"g{i}", s2.slots, lang)
+            items += scheme
             group = russian_kind(fp.group) if lang == "ru" else fp.group  # ВВП(2-3)
             title = (f"{w['plan']} {group}" if i < n_groups else w["crank"])
             cap = f"{title}, {_kp(fp.scale, lang)}"
-            cell = cells[2 * i + 1]
+            cell = cells[2 * i + 1 + o]
             notes = _note_items(_short_notes(fp, lang), cell, f"{ident}-fp{i}", lang)
             vec = _wrapped([vector_line(fp)], cell.width - 4.0)
             under = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - EQ_PITCH * len(notes))
             notes += _bottom_lines(vec, under, f"{ident}-fp{i}-eq", below=-math.inf)
-            # the plan above its equation and footnote
+            # the table of the plan's forces at the cell's right, under its caption
+            tab = _force_table(fp, cell, f"{ident}-fp{i}-forces", lang,
+                               (cells[2 * i + o], scheme))
+            items += tab
+            # the plan above its equation and footnote, its letters clear of its table
             room = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - EQ_PITCH * len(notes))
             items += _plan_items(fp, room, (cap, cap.split(", ")[0].split()[-1] + ", "
                                             + cap.split(", ")[-1]), f"{ident}-fp{i}",
-                                 {q: f"{q}*" for q in _short_notes(fp, lang)})
+                                 {q: f"{q}*" for q in _short_notes(fp, lang)},
+                                 avoid=[shapely.box(*_bounds(tab)).buffer(1.0)] if tab else [])
             items += notes
             items += ill_mark_items(fp, cell, f"{ident}-fp{i}", lang)
         lever = analysis.lever(k, page)
@@ -536,10 +753,8 @@ def q_curves(analysis, n: int = 361):
     mech, kin, cycle = analysis.mech, analysis.kin, analysis.cycle
     if not mech.resistances:
         return [], ""
-    sense = mech.crank.sense
-    m = max(n, int(n * cycle.period / (2 * math.pi)))
-    tau = np.linspace(0.0, cycle.period, m)
-    phi = kin.phi[0] + sense * tau
+    phi = q_grid(analysis, n)
+    tau = (phi - kin.phi[0]) * mech.crank.sense
     fine = analysis.solve_on(phi)  # solved once per grid (a fine turn of sheet 1's too)
     work = in_working_stroke(mech, cycle, np.mod(phi, 2 * math.pi))
     out = []
@@ -564,6 +779,13 @@ def q_curves(analysis, n: int = 361):
             own = stroke_index(res, mech, cycle, cycle_travel(mech, cycle, phi)) % 2 == 0
         out.append((load.name, x, size, own, kin.phi[0] + 0.0))
     return out, unit
+
+
+def q_grid(analysis, n: int = 361) -> np.ndarray:
+    """The crank angles (rad) over the cycle at which Q(s) is drawn: ``n`` per turn."""
+    cycle = analysis.cycle
+    m = max(n, int(n * cycle.period / (2 * math.pi)))
+    return analysis.kin.phi[0] + analysis.mech.crank.sense * np.linspace(0.0, cycle.period, m)
 
 
 def _common_abscissa(mech, cycle) -> str:

@@ -33,6 +33,7 @@ from .layout import (
 )
 from .plausibility import K_MARGIN, load_drives, machine_warnings
 from .scales import (
+    FORCE_TABLE_W,
     GROUP_EQ_ROOM,
     GROUP_ROOM,
     PLAN_MARGIN,
@@ -48,6 +49,7 @@ from .scales import (
     group_links,
     kinematic_twin,
     one_turn,
+    path_sides,
     plan_positions,
     position_extent,
     positions_by_label,
@@ -63,6 +65,7 @@ __all__ = [
     "CELL_MARGIN",
     "DIAGRAM_MAX_H",
     "DIAGRAM_MIN",
+    "FORCE_TABLE_W",
     "GAP",
     "GROUP_EQ_ROOM",
     "GROUP_ROOM",
@@ -101,6 +104,7 @@ __all__ = [
     "load_drives",
     "machine_warnings",
     "one_turn",
+    "path_sides",
     "plan_positions",
     "plan_room",
     "position_extent",

@@ -373,9 +373,11 @@ TABLE_PAD = 3.0 / 3.5  #: room round a column's widest entry per mm of lettering
 class Sheet2Layout:
     """Regions of sheet 2 (mm on paper, y down).
 
-    ``rows``: per analysed position, its cells in the order the force plans are built —
-    for every Assur group from the last attached to the first, the group drawn separately
-    and its force plan; then the crank and its force plan; then Zhukovsky's lever.
+    ``rows``: per analysed position, its cells: the mechanism in the position with its
+    loads (and the diagram of the force on its slider beside the slider's path), then in
+    the order the force plans are built — for every Assur group from the last attached to
+    the first, the group drawn separately and its force plan; then the crank and its force
+    plan; then Zhukovsky's lever.
     ``header`` the band at the top (the scales), ``qs`` the chart of the technological
     force Q(s), ``curve`` the chart Mур(φ), ``table`` the box of the table of the force
     analysis (split into parts, its header repeated, when it is wider than the box).
@@ -387,6 +389,7 @@ class Sheet2Layout:
     qs: Rect
     curve: Rect
     table: Rect
+    mechanism: bool = True  #: rows begin with the mechanism's cell (left out on a small page)
 
 
 #: The words of sheet 2's table: its leading and trailing columns, and the unit of a reaction.
@@ -549,7 +552,8 @@ STRIP_MAX = 0.42  #: sheet 2's strip of the charts grows to this share of the fr
 
 
 def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
-                  shapes=None, table_width: float | None = None) -> Sheet2Layout:
+                  shapes=None, table_width: float | None = None,
+                  mechanism: bool = True) -> Sheet2Layout:
     """Cut ``page`` for sheet 2: as many of the ``n_wanted`` positions as give cells of at
     least :func:`sheet2_cell_min` (at least one), the strip of the charts and the table.
 
@@ -576,7 +580,7 @@ def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
     strip = max(SHEET2_STRIP * k, t_h + GAP + tb_h + 2.0)
     header = Rect(f.x0 + GRAPH26_SIZE[0] + GAP, f.y0 + 1.0, x1, f.y0 + GRAPH26_SIZE[1] - 1.0)
     y0 = f.y0 + GRAPH26_SIZE[1] + 3.0
-    per_pos = 2 * n_groups + 3
+    per_pos = 2 * n_groups + 3 + mechanism
     least = sheet2_cell_min(page)
     H = f.y1 - strip - GAP - y0
     side_min = SIDE_W * kw
@@ -611,7 +615,7 @@ def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
         top = y0 + t_h2 + GAP
         hm = (cy1 - top - GAP) * 0.55
         return Sheet2Layout(page, rows, header, Rect(cx0, top + hm + GAP, x1, cy1),
-                            Rect(cx0, top, x1, top + hm), table)
+                            Rect(cx0, top, x1, top + hm), table, mechanism)
     if side < 0.75 * least:
         raise LayoutError(f"sheet 2 leaves cells of {side:.0f} mm on {page.format}: "
                           "choose a larger format")
@@ -627,11 +631,12 @@ def sheet2_layout(page: Page, n_groups: int, n_wanted: int, table_height,
     under = Rect(tx0, sy0 + t_h + GAP, x1, f.y1 - tb_h - GAP)
     if under.height >= 0.6 * CHART_MIN_H * k:
         # a tall strip: Q(s) under the table, above the title block; Mур(φ) the rest
-        return Sheet2Layout(page, rows, header, under, Rect(x0, sy0, tx0 - GAP, sy1), table)
+        return Sheet2Layout(page, rows, header, under, Rect(x0, sy0, tx0 - GAP, sy1), table,
+                            mechanism)
     wc = tx0 - GAP - x0 - GAP
     wq = wc * CHART_W[0] / (CHART_W[0] + CHART_W[1])
     return Sheet2Layout(page, rows, header, Rect(x0, sy0, x0 + wq, sy1),
-                        Rect(x0 + wq + GAP, sy0, tx0 - GAP, sy1), table)
+                        Rect(x0 + wq + GAP, sy0, tx0 - GAP, sy1), table, mechanism)
 
 def plan_room(cell: Rect) -> float:
     """The largest extent (diameter) of a plan that fits ``cell`` with its letters, mm."""

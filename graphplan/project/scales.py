@@ -421,6 +421,7 @@ class Sheet2Scales:
     slots: dict[str, tuple[float, float]] | None = None
     wanted: tuple[int, ...] = ()
     kls: tuple[Scale, ...] = ()  #: Kl of each figure: the groups, then the crank
+    kl_mechanism: Scale | None = None  #: of the mechanism in the analysed position (cells[0])
 
     def lever_kv(self, kin, k: int) -> Scale:
         """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
@@ -437,12 +438,17 @@ class Sheet2Scales:
         room = min(room, LEVER_CAP)
         return Scale("Kv", nice_ceil(max(w, h, 1e-12) / room, PLAN_SERIES), "(m/s)/mm")
 
+    @property
+    def first(self) -> int:
+        """Index of the first group's cell in a row: 1 after the mechanism's cell, else 0."""
+        return 1 if self.layout is None or self.layout.mechanism else 0
+
     def figure_kl(self, i: int) -> Scale:
         """Kl of the i-th figure (the groups from the last attached, then the crank)."""
         if self.kls and i < len(self.kls):
             return self.kls[i]
         assert self.kl is not None and self.kl_crank is not None
-        return self.kl_crank if i == len(self.cells[0]) // 2 - 1 else self.kl
+        return self.kl_crank if i == (len(self.cells[0]) - 1 - self.first) // 2 - 1 else self.kl
 
 
 LEVER_PAD = 60.0  #: kept around Zhukovsky's lever in its cell for the loads' arrows, mm
@@ -453,6 +459,7 @@ CRANK_CAP = 140.0  #: the longest side of the crank drawn separately at most, mm
 PLAN_CELL_W = 90.0  #: least width of a force plan's cell (its letters crowd a thin plan), mm
 
 
+FORCE_TABLE_W = 48.0  #: width kept in a force plan's cell for the table of its forces, mm
 GROUP_ROOM = 18.0  #: kept on each side of a group drawn on sheet 2 for its loads' arrows, mm
 GROUP_EQ_ROOM = 9.0  #: kept under a group for its moment equations (two lines), mm
 
@@ -469,14 +476,14 @@ def _points_of(mech, kin, links, k):
                      if p in kin.pos.points])
 
 
-def _group_kl(mech: Mechanism, kin, positions, rows, fig: int) -> Scale:
+def _group_kl(mech: Mechanism, kin, positions, rows, fig: int, first: int = 1) -> Scale:
     """Kl of figure ``fig`` (a group drawn separately, or the crank): the usual series
     value (1, 2, 2.5, 4, 5 × 10^k) at which it fits its cell, with its arrows and
     equations, in every position."""
     need = 0.0
     links = group_links(mech)[fig]
     for k, cells in zip(positions, rows, strict=False):
-        cell = cells[2 * fig]
+        cell = cells[first + 2 * fig]
         pts = _points_of(mech, kin, links, k)
         if len(pts) < 2:
             continue
@@ -487,11 +494,69 @@ def _group_kl(mech: Mechanism, kin, positions, rows, fig: int) -> Scale:
     return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
 
 
-def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page):
+def mechanism_points(mech: Mechanism, kin, k: int, slots=None) -> np.ndarray:
+    """The points of the whole mechanism at position k: every moving link's, the frame's and
+    the ends of the slots on moving links (``slots``: :func:`slot_ranges`)."""
+    ends = []
+    for key, (lo, hi) in (slots or {}).items():
+        G, u = kin.pos.guides[key]
+        ends += [np.asarray(G[k], float) + t * np.asarray(u[k], float) for t in (lo, hi)]
+    return np.array([*_points_of(mech, kin, mech.moving_links, k),
+                     *(np.asarray(v, float) for v in mech.frame_points.values()), *ends])
+
+
+def path_sides(mech: Mechanism, kin, k: int) -> list[tuple[int, np.ndarray]]:
+    """The variant's loads that sheet 2 draws as a diagram beside their slider's path: per
+    force on a slider moving along a frame guide, its index among ``mech.resistances`` and
+    the unit vector (model, y up) from the path to the side the diagram stands on (away
+    from the crank's pivot)."""
+    out = []
+    o = np.asarray(kin.pos.points[mech.crank.pivot][k], float)
+    for i, res in enumerate(mech.resistances):
+        if res.kind != "force":
+            continue
+        for key, (G, u) in kin.pos.guides.items():
+            slider, carrier = key.split("/")
+            if slider == res.link and carrier == mech.frame_link:
+                n = np.array([-u[k][1], u[k][0]], float)
+                out.append((i, n if float(np.dot(np.asarray(G[k], float) - o, n)) >= 0 else -n))
+                break
+    return out
+
+
+MECHANISM_CAP = 200.0  #: the longest side of the mechanism in the analysed position at most, mm
+PATH_DIAGRAM = 42.0  #: room beside the slider's path for the diagram of its force, mm
+
+
+def _mechanism_pad(mech: Mechanism, kin, k: int) -> tuple[float, float]:
+    """Room (width, height) a cell keeps round the mechanism in position k: its loads'
+    arrows and letters, and beside the slider's path the diagram of the force on it."""
+    pw, ph = 2 * GROUP_ROOM, CAPTION + 2 * GROUP_ROOM
+    sides = [side for _, side in path_sides(mech, kin, k)]
+    if sides:
+        pw += PATH_DIAGRAM * max(abs(float(side[0])) for side in sides)
+        ph += PATH_DIAGRAM * max(abs(float(side[1])) for side in sides)
+    return pw, ph
+
+
+def _mechanism_kl(mech: Mechanism, kin, positions, rows, slots=None) -> Scale:
+    """Kl of the mechanism drawn in the analysed positions (cells[0]): the usual series
+    value at which it fits its cell with its loads in every position."""
+    need = 0.0
+    for k, cells in zip(positions, rows, strict=False):
+        w, h = np.ptp(mechanism_points(mech, kin, k, slots), axis=0)
+        pw, ph = _mechanism_pad(mech, kin, k)
+        need = max(need, float(w) / max(cells[0].width - pw, 10.0),
+                   float(h) / max(cells[0].height - ph, 10.0))
+    return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
+
+
+def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page, slots=None):
     """The :class:`FigureShape` of each figure sheet 2 draws for position k, in the order
-    of its cells: per group (from the last attached) its scheme and its force plan, the
-    crank and its plan, Zhukovsky's lever. Shapes from the kinematics (the schemes, the
-    lever's velocity plan) and from the force plans' ``units`` (:func:`plan_units`)."""
+    of its cells: the mechanism in the position with its loads, then per group (from the
+    last attached) its scheme and its force plan, the crank and its plan, Zhukovsky's
+    lever. Shapes from the kinematics (the schemes, the lever's velocity plan) and from the
+    force plans' ``units`` (:func:`plan_units`)."""
     from .layout import FigureShape
 
     s = min(1.0, page.frame.height / 584.0)
@@ -500,9 +565,12 @@ def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page):
     def aspect(w: float, h: float) -> float:
         return float(np.clip(w / max(h, 1e-12), 0.08, 8.0)) if max(w, h) > 0 else 1.0
 
-    out = []
+    mw, mh = (float(x) for x in np.ptp(mechanism_points(mech, kin, k, slots), axis=0))
+    out = [FigureShape(aspect(mw, mh), MECHANISM_CAP * s, *_mechanism_pad(mech, kin, k),
+                       max(least, 90.0 * s))]
     pad_g = (2 * GROUP_ROOM, CAPTION + 2 * GROUP_ROOM + GROUP_EQ_ROOM)
-    pad_p = (2 * LABEL_ROOM + 16.0, CAPTION + 2 * LABEL_ROOM + 9.0)  # the letters at the sides
+    # the letters at the sides (the table of the plan's forces where the cell has room)
+    pad_p = (2 * LABEL_ROOM + 16.0, CAPTION + 2 * LABEL_ROOM + 9.0)
     for n, (links, (uw, uh)) in enumerate(zip(group_links(mech), units, strict=True)):
         w, h = (float(x) for x in np.ptp(_points_of(mech, kin, links, k), axis=0))
         crank = n == len(units) - 1
@@ -533,6 +601,23 @@ def plan_units(mech: Mechanism, kin, forces, loads, k: int, kl: Scale
     return out
 
 
+#: the mechanism's cell is kept while the force plans keep this share of their room
+MECHANISM_KEEP = 0.8
+
+
+def _plans_room(lay, shapes, units, wanted, mechanism: bool) -> float:
+    """The smallest room (mm of extent, PLAN_CAP at most) a force plan of ``lay`` gets in
+    any position."""
+    o = 1 if mechanism else 0
+    room = PLAN_CAP * min(1.0, lay.page.frame.height / 584.0)
+    for k, cells, sh in zip(wanted, lay.rows, shapes, strict=False):
+        for i, (uw, uh) in enumerate(units[k]):
+            cell, fs = cells[2 * i + 1 + o], sh[2 * i + 2]
+            room = min(room, (cell.width - fs.pad_w) / max(uw, 1e-9),
+                       (cell.height - fs.pad_h) / max(uh, 1e-9))
+    return room
+
+
 def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
                   loads=None, fine=None) -> Sheet2Scales:
     """Positions, cells, plan room and Kl of sheet 2 (see :mod:`graphplan.drawing.sheet2`);
@@ -556,12 +641,36 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
     loads = compute_loads(mech, kin, cycle) if loads is None else loads
     trial = Scale("Kl", 0.001, "m/mm")
     units = {k: plan_units(mech, kin, forces, loads, k, trial) for k in wanted}
-    shapes = [figure_shapes(mech, kin, units[k], k, page) for k in wanted]
-    lay = sheet2_layout(page, len(mech.dyads), len(wanted), table_height, shapes,
-                        sum(_column_widths(header, sample)) / 0.9)
+    slots = slot_ranges(mech, one_turn(mech, kin) if fine is None else fine) if any(
+        key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
+    shapes = [figure_shapes(mech, kin, units[k], k, page, slots) for k in wanted]
+    def lay_out(mechanism: bool) -> Sheet2Layout | None:
+        try:
+            return sheet2_layout(page, len(mech.dyads), len(wanted), table_height,
+                                 shapes if mechanism else [sh[1:] for sh in shapes],
+                                 sum(_column_widths(header, sample)) / 0.9, mechanism)
+        except LayoutError:
+            if mechanism:
+                return None
+            raise
+
+    # the mechanism in the analysed position first; on a page too small for it and the
+    # positions wanted, the groups, their plans and the levers of more positions instead
+    # — and where it would take from the force plans' room (the plans are what the sheet
+    # reads: drawn smaller, the reactions read off them drift past the reading accuracy)
+    lay = lay_out(True)
+    alt = lay_out(False)
+    if lay is None or (alt is not None and (
+            len(alt.rows) > len(lay.rows)
+            or _plans_room(lay, shapes, units, wanted, True)
+            < MECHANISM_KEEP * _plans_room(alt, shapes, units, wanted, False))):
+        lay = alt
+    assert lay is not None
+    o = 1 if lay.mechanism else 0
     positions = wanted[:len(lay.rows)]
     n_fig = len(mech.dyads) + 1
-    kls = tuple(_group_kl(mech, kin, positions, lay.rows, i) for i in range(n_fig))
+    kls = tuple(_group_kl(mech, kin, positions, lay.rows, i, o) for i in range(n_fig))
+    kl_mech = _mechanism_kl(mech, kin, positions, lay.rows, slots) if lay.mechanism else None
     # the crank drawn larger than the groups (a short crank), at most 4x: at 8-10x their
     # Kl it was a 250 mm diagonal beside them (the engines)
     least = nice_ceil(min(kl.per_mm for kl in kls[:-1]) / 4.0)
@@ -573,11 +682,9 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
     for i in range(n_fig):
         room = PLAN_CAP * s
         for k, cells, sh in zip(positions, lay.rows, shapes, strict=False):
-            cell, (uw, uh), fs = cells[2 * i + 1], units[k][i], sh[2 * i + 1]
+            cell, (uw, uh), fs = cells[2 * i + 1 + o], units[k][i], sh[2 * i + 2]
             room = min(room, (cell.width - fs.pad_w) / max(uw, 1e-9),
                        (cell.height - fs.pad_h) / max(uh, 1e-9))
         rooms.append(max(room, 20.0))
-    slots = slot_ranges(mech, one_turn(mech, kin) if fine is None else fine) if any(
-        key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
     return Sheet2Scales(positions, lay.rows, tuple(rooms), kls[0], kls[-1], lay, slots, wanted,
-                        kls)
+                        kls, kl_mech)
