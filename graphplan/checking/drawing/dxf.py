@@ -2,7 +2,8 @@
 
 What is read, from model space (or, when model space is empty, from the paper-space
 layouts): LINE; LWPOLYLINE and POLYLINE (bulges as arcs); ARC, CIRCLE, ELLIPSE, SPLINE
-(as chains of short pieces); TEXT and MTEXT (plain text, the centre of the text's box);
+(as chains of short pieces); TEXT (its width factor narrowing the box; an oblique angle
+leaves the centre) and MTEXT (plain text, the centre of the text's box);
 SOLID, TRACE and HATCH (as fills: arrowheads); INSERT of blocks exploded with their
 transformation (nested blocks too, :data:`~.primitives.MAX_DEPTH` deep), with their
 attributes; DIMENSION as the block it is drawn with. Colours are the entities' own (true
@@ -181,7 +182,10 @@ class _Reader:
             p = (p + q) / 2
             ha = 1
         vf = 0.5 if ha == 4 else _V_FRAC.get(va, 0.0)
-        x, y = text_centre(p.x * k, p.y * k, h, rot, len(text), _H_FRAC.get(ha, 0.0), vf)
+        # a width factor (КОМПАС's narrow lettering, 0,8 or so) narrows the text's box
+        wide = float(e.dxf.get("width", 1.0) or 1.0)
+        x, y = text_centre(p.x * k, p.y * k, h, rot, len(text) * min(max(wide, 0.2), 5.0),
+                           _H_FRAC.get(ha, 0.0), vf)
         self.col.text(text, x, y, h, rot, self.colour(e), layer)
 
     def _mtext(self, e, layer: str) -> None:

@@ -13,7 +13,8 @@ text object), leave out the spaces between words, and show a subscript as a smal
 lower down — ``R`` then ``12`` is the text ``R12``. A page whose fonts this reader cannot
 decode is read by pypdf's own text extraction instead.
 
-Points (1/72 in) become mm; the page's y already points up. Only the first
+Points (1/72 in) become mm; the page's y already points up; a page turned by ``/Rotate``
+(a landscape sheet plotted on a portrait page) is read as it is shown. Only the first
 :data:`MAX_PAGES` pages are read.
 """
 
@@ -98,11 +99,25 @@ def read_pdf(path: Path) -> Drawing:
     for n, page in enumerate(pages[:MAX_PAGES]):
         box = page.mediabox
         x0, y0 = float(box.left), float(box.bottom)
-        h = float(box.height)
+        w, h = float(box.width), float(box.height)
+        try:
+            turn = int(page.get("/Rotate", 0) or 0) % 360
+        except (TypeError, ValueError):
+            turn = 0
+        # the page as it is shown: /Rotate turns it clockwise (a landscape sheet plotted
+        # on a portrait page and turned back), (x, y) → (a·x + c·y + e, b·x + d·y + f) pt
+        a, b, c, d, e, f = {
+            90: (0.0, -1.0, 1.0, 0.0, -y0, w + x0),
+            180: (-1.0, 0.0, 0.0, -1.0, w + x0, h + y0),
+            270: (0.0, 1.0, -1.0, 0.0, h + y0, -x0),
+        }.get(turn, (1.0, 0.0, 0.0, 1.0, -x0, -y0))
+        if turn in (90, 270):
+            w, h = h, w
         # pages are stacked downwards, each in its own place
-        base = (PT_MM, 0.0, 0.0, PT_MM, -x0 * PT_MM, (-y0 - (y_off if n else 0.0)) * PT_MM)
+        base = (a * PT_MM, b * PT_MM, c * PT_MM, d * PT_MM, e * PT_MM,
+                (f - (y_off if n else 0.0)) * PT_MM)
         if n == 0:
-            size = (0.0, 0.0, float(box.width) * PT_MM, h * PT_MM)
+            size = (0.0, 0.0, w * PT_MM, h * PT_MM)
         try:
             walker = _Page(reader, col, base)
             walker.run(page, page.get("/Resources"), 0)

@@ -167,7 +167,7 @@ class Collector:
                        tuple(self.circles), tuple(self.texts), tuple(self.notes), size)
 
 
-def text_centre(x: float, y: float, height: float, angle: float, n_chars: int,
+def text_centre(x: float, y: float, height: float, angle: float, n_chars: float,
                 h_frac: float, v_frac: float) -> tuple[float, float]:
     """Centre of a text's box from its anchor: ``h_frac`` is where along the width the
     anchor is (0 start, 0.5 middle, 1 end), ``v_frac`` where up the capital height (0 the

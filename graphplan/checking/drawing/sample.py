@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -367,4 +368,63 @@ def _pdf(plans, path: Path) -> None:
         plt.close(fig)
 
 
-__all__ = ["Plant", "mpl_page", "student_sheet"]
+def kompas_like(src: str | Path, dst: str | Path, units: str = "mm") -> Path:
+    """The DXF ``src`` (:func:`student_sheet`'s) written again as КОМПАС-3D and older
+    AutoCAD write one: ``units="mm"`` gives an R12 file (no ``$INSUNITS``: the header of
+    R12 has none) with every polyline a POLYLINE, every MTEXT a TEXT of width factor 0,8
+    and oblique angle 15° (ГОСТ 2.304 lettering) aligned as the MTEXT was attached; the
+    blocks (the arrowheads' SOLIDs) kept as INSERTs. ``units="cm"``: the same in an R2000
+    file whose ``$INSUNITS`` is 5 (centimetres), every coordinate and height in cm."""
+    import ezdxf
+    from ezdxf.enums import TextEntityAlignment as TA
+
+    old = ezdxf.readfile(str(src))
+    # to the new file's units, from the old's (mm, or inches)
+    k = (0.1 if units == "cm" else 1.0) * (25.4 if old.header.get("$INSUNITS") == 1 else 1.0)
+    doc = ezdxf.new("R2000" if units == "cm" else "R12")
+    if units == "cm":
+        doc.header["$INSUNITS"] = 5
+    for layer in old.layers:
+        if layer.dxf.name not in doc.layers:
+            doc.layers.add(layer.dxf.name, color=layer.color)
+    for blk in old.blocks:
+        if blk.name.startswith("*") or blk.name in doc.blocks:
+            continue
+        new = doc.blocks.new(blk.name)
+        for part in blk:
+            if part.dxftype() == "SOLID":
+                new.add_solid([(v.x * k, v.y * k) for v in
+                               (part.dxf.vtx0, part.dxf.vtx1, part.dxf.vtx2, part.dxf.vtx3)])
+    align = {1: TA.TOP_LEFT, 2: TA.TOP_CENTER, 3: TA.TOP_RIGHT, 4: TA.MIDDLE_LEFT,
+             5: TA.MIDDLE_CENTER, 6: TA.MIDDLE_RIGHT, 7: TA.BOTTOM_LEFT,
+             8: TA.BOTTOM_CENTER, 9: TA.BOTTOM_RIGHT}
+    msp = doc.modelspace()
+    for ent in old.modelspace():
+        e: Any = ent
+        t = e.dxftype()
+        at = {"layer": e.dxf.get("layer", "0")}
+        if e.dxf.hasattr("color"):
+            at["color"] = e.dxf.color
+        if t == "LINE":
+            msp.add_line((e.dxf.start.x * k, e.dxf.start.y * k),
+                         (e.dxf.end.x * k, e.dxf.end.y * k), dxfattribs=at)
+        elif t == "LWPOLYLINE":
+            msp.add_polyline2d([(x * k, y * k) for x, y, *_ in e.get_points()],
+                               close=e.closed, dxfattribs=at)
+        elif t == "INSERT":
+            msp.add_blockref(e.dxf.name, (e.dxf.insert.x * k, e.dxf.insert.y * k),
+                             dxfattribs={**at, "rotation": e.dxf.get("rotation", 0.0)})
+        elif t in ("MTEXT", "TEXT"):
+            text = e.plain_text() if t == "MTEXT" else e.dxf.text
+            h = (e.dxf.char_height if t == "MTEXT" else e.dxf.height) * k
+            how = align.get(e.dxf.get("attachment_point", 1), TA.TOP_LEFT) if t == "MTEXT" \
+                else TA.LEFT
+            msp.add_text(text, dxfattribs={**at, "height": h, "width": 0.8,
+                                           "oblique": 15.0}).set_placement(
+                (e.dxf.insert.x * k, e.dxf.insert.y * k), align=how)
+    dst = Path(dst)
+    doc.saveas(dst)
+    return dst
+
+
+__all__ = ["Plant", "kompas_like", "mpl_page", "student_sheet"]
