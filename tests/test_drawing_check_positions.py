@@ -120,7 +120,7 @@ def test_planted_in_graphplans_own_plan_of_positions(tmp_path, ex):
     # of the position before it now names the next one
     doc = ezdxf.readfile(clean)
     series = [ref.labels[k] for k in _equally_spaced(
-        [float(p) for p in ref.kin.phi], ref.mech.crank.omega, ref.analysis.cycle.period)]
+        [float(p) for p in ref.kin.phi], ref.mech.crank.sense, ref.analysis.cycle.period)]
     nxt = dict(zip(series, series[1:] + series[:1], strict=True))
     pins = j.found.pins
     changed = 0
