@@ -1,7 +1,9 @@
 """Sheet 2 (force analysis): laid out by the standards, and its figures are the constructions'."""
 
 import math
+from pathlib import Path
 
+import numpy as np
 import pytest
 
 from graphplan.drawing import Text, check_layout, iter_leaves
@@ -138,7 +140,6 @@ def test_moment_curve_is_embedded_and_unknown_positions_are_errors(built, tmp_pa
 # ------------------------------------------- the groups, Q(s), short forces, formats
 
 import re  # noqa: E402
-from pathlib import Path  # noqa: E402
 
 from graphplan.drawing import Page  # noqa: E402
 from graphplan.drawing.sheet2 import q_curves, table_header  # noqa: E402
@@ -375,3 +376,110 @@ def test_slider_blocks_and_centres_of_mass_sit_where_the_kinematics_puts_them(so
                         assert math.dist(c, P(kin.pos.points[lp.centre][k])) < 0.05
                     checked += 1
     assert checked > 0
+
+
+ALL_EXAMPLES = sorted(p.stem for p in (Path(__file__).resolve().parent.parent / "examples")
+                      .glob("*.toml"))
+VARIANTS = Path(__file__).resolve().parent / "data" / "variants"
+
+
+#: Sheets whose narrow scheme cells still cut their equations' first lines (no corner of
+#: the cell holds the block, the figure fills its height): the press's (2) and 2, the
+#: shapers' group 4–5. Strict: remove a case when it passes.
+CUT_TODO = {"press", "shaper", "shaper_prp"}
+
+
+@pytest.mark.parametrize("name", [*ALL_EXAMPLES, str(VARIANTS / "v_two_stage_compressor.toml")])
+def test_the_moment_equations_are_never_cut(request, solved, drawn, name):
+    """Every moment equation of every group and crank is written under (or beside) its
+    figure, from its first line «ΣM…» to its result: the two-stage compressor's group 4–5
+    and the compressor's group 2–3 lost their first lines (cut from the top) where the
+    figure left room for two."""
+    from graphplan.drawing.sheet2 import _wrapped, moment_lines
+
+    if name in CUT_TODO:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=(
+            "issue 18: a narrow scheme cell still cuts the first lines of its equations")))
+    a, sheet = solved(name), drawn(name, 2)
+    texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
+    for k in a.sheet2.positions:
+        for i, fp in enumerate(a.force_plans(k)):
+            written = [texts[f"s2p{k}-g{i}-eq{n}"] for n in range(1, 40)
+                       if f"s2p{k}-g{i}-eq{n}" in texts]
+            raw = moment_lines(fp, "ru")
+            # the same words in the same order, however the lines were wrapped
+            assert " ".join(" ".join(written).split()) == " ".join(" ".join(raw).split()), (k, i)
+            assert sum(t.startswith("ΣM") for t in written) == len(raw) > 0
+            # one lettering: no arrow osifont lacks (it set the whole line in DejaVu Sans)
+            assert all("→" not in t for t in written)
+    assert _wrapped(["ΣMO(1): Mур = 119,109 Н·м"], 40.0)[-1].endswith("Н·м")
+
+
+@pytest.mark.parametrize("name", ["press", "compressor", "engine", "offset_slider"])
+def test_the_mechanism_is_drawn_with_its_loads_and_the_force_beside_its_path(solved, drawn,
+                                                                              name):
+    """Method B.3: the mechanism in the analysed position with its loads and the diagram
+    of the technological force beside the slider's path. Each analysed position's
+    mechanism draws every moving link; a load on a slider of a frame guide has its diagram
+    (axis, curve) in the mechanism's cell, its largest ordinate Q_max/Kq mm from the axis,
+    Kq a round value; the analysed position's ordinate ends at Q_k/Kq."""
+    from graphplan.drawing import item_geometry
+    from graphplan.forces import resistance_loads
+    from graphplan.project import path_sides
+    from graphplan.units import nice_ceil
+
+    a, sheet = solved(name), drawn(name, 2)
+    leaves = {it.id: it for it in iter_leaves(sheet.items) if getattr(it, "id", None)}
+    s2 = a.sheet2
+    assert s2.kl_mechanism is not None
+    for k, cells in zip(s2.positions, s2.cells, strict=True):
+        ids = [i for i in leaves
+               if i.startswith(f"s2m{k}-link-") or i.startswith(f"s2m{k}-slider-")]
+        drawn_links = {i.split("-")[2] for i in ids}
+        assert set(a.mech.moving_links) <= drawn_links, (k, drawn_links)
+        sides = path_sides(a.mech, a.kin, k)
+        assert sides, name  # every one of these has a force on a slider of a frame guide
+        for i, _side in sides:
+            axis = leaves[f"s2m{k}-m-q{i}-axis"]
+            cell = cells[0].polygon().buffer(0.01)
+            curves = [it for n, it in leaves.items() if n.startswith(f"s2m{k}-m-q{i}-curve")]
+            assert curves and all(cell.contains(item_geometry(c)) for c in curves)
+            assert cell.contains(item_geometry(axis))
+            name_i = resistance_loads(a.mech, a.kin)[i].name
+            label = next(t.text for t in leaves.values() if isinstance(t, Text)
+                         and t.text.startswith(f"{name_i}(s), Kq ="))
+            kq = float(label.split("Kq = ")[1].split()[0].replace(",", "."))
+            assert kq == nice_ceil(kq)  # 1, 2, 2.5, 4, 5 × 10ⁿ
+            ld = resistance_loads(a.mech, a.kin, a.cycle)[i]
+            q = float(np.hypot(*np.asarray(ld.vector[k], float)))
+            if q / kq > 0.3:  # the analysed position's ordinate: Q_k / Kq mm
+                o = leaves[f"s2m{k}-m-q{i}-ord{k}"]
+                assert math.dist(o.p0, o.p1) == pytest.approx(q / kq, rel=1e-6)
+
+
+@pytest.mark.parametrize("name", ["press", "compressor", "crusher"])
+def test_the_force_tables_give_each_plans_forces(solved, drawn, name):
+    """The table beside a force plan (method B.3: name, mm, N): every row is a force of
+    that plan, its mm the vector's length drawn on the plan and its N = mm · Kp."""
+    a, sheet = solved(name), drawn(name, 2)
+    texts = {t.id: t.text for t in iter_leaves(sheet.items) if isinstance(t, Text) and t.id}
+    tables = 0
+    for k in a.sheet2.positions:
+        for i, fp in enumerate(a.force_plans(k)):
+            pre = f"s2p{k}-fp{i}-forces"
+            if f"{pre}-r1c1" not in texts:
+                continue
+            tables += 1
+            n = 1
+            while f"{pre}-r{n}c1" in texts:
+                q = texts[f"{pre}-r{n}c1"]
+                mm = float(texts[f"{pre}-r{n}c2"].replace(",", "."))
+                newton = float(texts[f"{pre}-r{n}c3"].replace(",", "."))
+                seg = [e for s in fp.steps for e in s.elements
+                       if e.kind == "segment" and e.name == q]
+                drawn_mm = math.dist(seg[0].start, seg[0].end)
+                assert mm == pytest.approx(drawn_mm, abs=0.051), (k, q)
+                assert newton == pytest.approx(drawn_mm * fp.scale.per_mm, rel=5e-3, abs=0.01)
+                n += 1
+            assert n - 1 == sum(r.unit == "N" for r in fp.readings.values())
+    assert tables > 0

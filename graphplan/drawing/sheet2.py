@@ -119,15 +119,20 @@ WORDS = {
 }
 
 
-def _caption(cell: Rect, text, ident: str) -> Text:
+def _caption(cell: Rect, text, ident: str, form_first: bool = False) -> Text:
     """A cell's caption: the first of ``text`` (a string or the longest form first) that
-    fits the cell at 3.5 mm lettering, else at 2.5, else the last form at 1.8."""
+    fits the cell at 3.5 mm lettering, else at 2.5, else the last form at 1.8 (with
+    ``form_first``: the first form that fits at 3.5 or 2.5 — a scheme's caption names its
+    links at 2.5 mm rather than leave them out at 3.5)."""
     forms = [text] if isinstance(text, str) else list(text)
     pick = (forms[-1], 1.8)
-    for h in (3.5, 2.5):
-        fit = [f for f in forms if text_width(Text((0, 0), f, h, layer="text")) <= cell.width - 2.0]
-        if fit:
-            pick = (fit[0], h)
+    trials = [(f, h) for h in (3.5, 2.5) for f in forms]
+    if form_first:  # every form but the last (which names no link) before the last
+        trials = ([(f, h) for h in (3.5, 2.5) for f in forms[:-1]]
+                  + [(forms[-1], h) for h in (3.5, 2.5)])
+    for f, h in trials:
+        if text_width(Text((0, 0), f, h, layer="text")) <= cell.width - 2.0:
+            pick = (f, h)
             break
     return text_at_centre(((cell.x0 + cell.x1) / 2, cell.y0 + CAPTION / 2), pick[0], pick[1],
                           layer="text", id=ident)
@@ -301,8 +306,9 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     pos = f"{w['pos']} {kin.labels[k]}"
     short = what.split()[0] if whole else f"{what.split()[0]} {'–'.join(links)}"
     caption = _caption(cell, (f"{what}, {pos}, {scale}", f"{what}, {pos}, Kl = {fmt(kl)}",
-                              f"{short}, {pos}, {scale}", f"{short}, {pos}, Kl = {fmt(kl)}"),
-                       f"{pre}-caption" if not crank else f"{ident}-caption")
+                              f"{short}, {pos}, {scale}", f"{short}, {pos}, Kl = {fmt(kl)}",
+                              f"{what.split()[0]}, {pos}, Kl = {fmt(kl)}"),
+                       f"{pre}-caption" if not crank else f"{ident}-caption", form_first=True)
     obstacles = [g for it in items
                  if not isinstance(it, Group) and (g := item_geometry(it)) is not None]
     eq_items = _equation_items(moment_lines(fp, lang) if not whole else [], eqs, cell,
