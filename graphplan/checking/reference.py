@@ -286,8 +286,13 @@ class Reference:
                      ln != self.mech.crank.link), None)
         if link is None or r.pair != "R":
             return None
-        centres = {lp.centre for lp in self.mech.links.values()}
-        others = [p for p in self.mech.points_of(link) if p != r.point and p not in centres]
+        # the link's other joint: a point it shares with another link (a mass centre may
+        # stand at a joint — a piston's at its pin C — so centres are not left out)
+        own = self.mech.links[link].centre if link in self.mech.links else None
+        shared = {p for ln in (*self.mech.moving_links, self.mech.frame_link) if ln != link
+                  for p in self.mech.points_of(ln)}
+        others = [p for p in self.mech.points_of(link) if p != r.point and p in shared] or [
+            p for p in self.mech.points_of(link) if p != r.point and p != own]
         if not others:
             return None
         d = kin.pos.points[others[0]][k] - kin.pos.points[r.point][k]
@@ -449,8 +454,13 @@ class Reference:
                      ln != self.mech.crank.link), None)
         if link is None:
             return None
-        centres = {lp.centre for lp in self.mech.links.values()}
-        others = [p for p in self.mech.points_of(link) if p != r.point and p not in centres]
+        # the link's other joint: a point it shares with another link (a mass centre may
+        # stand at a joint — a piston's at its pin C — so centres are not left out)
+        own = self.mech.links[link].centre if link in self.mech.links else None
+        shared = {p for ln in (*self.mech.moving_links, self.mech.frame_link) if ln != link
+                  for p in self.mech.points_of(ln)}
+        others = [p for p in self.mech.points_of(link) if p != r.point and p in shared] or [
+            p for p in self.mech.points_of(link) if p != r.point and p != own]
         if not others:
             return None
         P = self.kin.pos.points

@@ -108,7 +108,10 @@ def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
         for _ in range(50):
             nd = scene.nodes[n]
             others = [j for j in nd.segments if j != cur]
-            if nd.ends != 2 or nd.passes or len(others) != 1 or nd.tip:
+            # lines passing through along this one (forces drawn over each other on one
+            # line, G2 down, Pи2 back up over it) do not cross it
+            crossing = [j for j in scene.on_segment[n] if not _along(scene.segments[j], d, L)]
+            if nd.ends != 2 or crossing or len(others) != 1 or nd.tip:
                 break  # a vertex, a crossing, or where one vector ends and the next begins
             j = others[0]
             t = scene.segments[j]
@@ -121,6 +124,13 @@ def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
             cur = j
         ends[k] = n
     return segs, ends[0], ends[1]
+
+
+def _along(t, d: tuple[float, float], L: float) -> bool:
+    """Whether segment t runs along direction d (of length L), within 2°: a line passing
+    at so small an angle is drawn over this one, not across it."""
+    e = (t.x2 - t.x1, t.y2 - t.y1)
+    return abs(d[0] * e[1] - d[1] * e[0]) <= 0.035 * L * math.hypot(*e)
 
 
 def _nearest_line(scene: Scene, t, min_len: float = 2.0, forces: bool = True) -> int | None:
@@ -147,8 +157,12 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
         if d > reach:
             continue
         if not forces:
+            # an arm: a thin line from a pivot ending square on a force's line — not a
+            # force's own arrow (R61 drawn into the pivot is square to the arm too)
             cost = d - (3.0 if _foot(scene, i) else 0.0) - (3.0 if _at_pivot(scene, s)
                                                             else 0.0)
+            if any(scene.heads[i]):
+                cost += 3.0 * t.height
             out.append((cost, i))
             continue
         # a force's name is written beside the middle of its line: along a long line,
@@ -217,11 +231,12 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
     by_group: dict[int, dict[str, DrawnForce]] = {}
     texts = []
     leaders = scene.leader_lines(_is_forces, slack=0.4)  # a sheared italic's corner
+    leader_segs = {lead[0] for lead in leaders.values()}  # another name's leader names none
     for ti, t in enumerate(scene.drawing.texts):
         names = _names(t.text)
         if not names or not all(is_force_name(n) for n in names):
             continue
-        near = _lines_near(scene, t, min_len=0.8)
+        near = [c for c in _lines_near(scene, t, min_len=0.8) if c[1] not in leader_segs]
         if ti in leaders:
             led = _led_to(scene, *leaders[ti])
             near = led + [c for c in near if all(c[1] != k for _c, k in led) and
@@ -294,7 +309,12 @@ def _led_to(scene: Scene, i: int, na: int, nb: int) -> list[tuple[float, int]]:
             continue
         d = point_segment(ax, ay, s)
         if d <= 3.0:
-            mid = math.hypot(ax - (s.x1 + s.x2) / 2, ay - (s.y1 + s.y2) / 2)
+            # the middle of the whole line (a line in pieces has its name by its middle,
+            # not by a piece's)
+            _segs, na_, nb_ = _whole_line(scene, k)
+            mx = (scene.nodes[na_].x + scene.nodes[nb_].x) / 2
+            my = (scene.nodes[na_].y + scene.nodes[nb_].y) / 2
+            mid = math.hypot(ax - mx, ay - my)
             out.append((-100.0 + d + 0.1 * mid, k))
     return sorted(out)
 

@@ -284,6 +284,30 @@ def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> No
                                                     if x.segments != f.segments]))
                 changed = True
                 break
+    # a name standing by a line another name owns and fits (a name set off a crowded
+    # cluster, by a long neighbour's line; 'Rn43' written with 'R43' by R43's line): it
+    # names an arrow of the plan drawn without a name — the one that fits it, as a
+    # teacher looks for the short arrow of G5's length and direction when 'G5' stands by
+    # R65's line
+    for names in units.values():
+        f = fp.forces[names[0]]
+        go = [n for n in names if fp.forces[n].segments == f.segments and
+              misfit([n], f) > 1.0]
+        owners = [n for n, g in fp.forces.items() if g.segments == f.segments and
+                  n not in go and misfit([n], f) <= 1.0]
+        if not go or not owners:
+            continue
+        fits = [(misfit(go, u), u) for u in fp.unnamed if u.segments not in held]
+        m, u = min(fits, key=lambda c: c[0], default=(math.inf, None))
+        if u is None or m > 1.0:
+            continue
+        held.add(u.segments)
+        fp.unnamed = [x for x in fp.unnamed if x is not u]
+        for name in go:
+            g = fp.forces[name]
+            fp.forces[name] = DrawnForce(name, u.start, u.end, u.sense, u.segments,
+                                         (g, *g.options))
+        changed = True
     if changed:
         fp.closure_mm = _closure(fp.forces, fp.unnamed)
 

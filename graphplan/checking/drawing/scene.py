@@ -39,6 +39,10 @@ LEADER_GAP_MM = 3.5
 CARRY_MM = 1.0
 """Shortest line carried on to an arrowhead's tip (mm): a vector a little longer than
 its head is drawn as a stub and the head."""
+STUB_MM = 0.2
+"""Shortest stub carried on to a filled arrowhead (mm): a vector a fraction of a
+millimetre longer than its head (a "V" of two short lines is not sure enough for that:
+a curve drawn as a polyline of short pieces makes such "V"s at every vertex)."""
 OPTION_H = 2.0
 """Nodes within this many letter heights of a letter's nearest node are kept as its
 other options (for a letter placed between two points)."""
@@ -119,12 +123,7 @@ class Scene:
     def _tips(self, segs: list[Segment]) -> list[tuple[tuple[float, float], ...]]:
         """Arrowheads: small fills, and "V"s of two short lines meeting at a tip (as a
         triangle: one end, the tip, the other end)."""
-        heads = []
-        for f in self.drawing.fills:
-            xs = [p[0] for p in f.points]
-            ys = [p[1] for p in f.points]
-            if max(xs) - min(xs) <= ARROW_MM and max(ys) - min(ys) <= ARROW_MM:
-                heads.append(f.points)
+        heads = [f.points for f in self.drawing.fills if _small(f.points)]
         short = [s for s in segs if s.length < ARROW_MM * 0.8]
         ends: dict[tuple[int, int], list[tuple[Segment, int]]] = {}
         for s in short:
@@ -202,7 +201,13 @@ class Scene:
         return out
 
     def _carry_to_tips(self, segs: list[Segment]) -> list[Segment]:
-        """Lines that stop at the base of an arrowhead, carried on to its tip."""
+        """Lines that stop at the base of an arrowhead, carried on to its tip.
+
+        A head carries the line that ends at its base along its axis. Where a line could
+        be carried at both ends (a short vector drawn back over another: its end sits
+        at the base of the other's head, pointing the other way), the heads go first to
+        the lines that reach a head at one end only; a short line (under a head's
+        length) is then carried at one end only, the one nearest its head."""
         if not self.arrow_tips:
             return segs
         cell = ARROW_MM
@@ -214,55 +219,176 @@ class Scene:
             cy = sum(p[1] for p in pts) / len(pts)
             cents.append((cx, cy))
             grid.setdefault((int(cx // cell), int(cy // cell)), []).append(h)
-        out = []
-        carried: dict[int, list[tuple[float, float]]] = {}  # head → the carried lines' starts
-        for s in segs:
-            if s.length < CARRY_MM:
-                out.append(s)
-                continue
-            ends = [(s.x1, s.y1), (s.x2, s.y2)]
+        filled = len([f for f in self.drawing.fills if _small(f.points)])  # heads 0…filled-1
+        bases = []  # the middle of each head's base: the vertices but its tip
+        for h, pts in enumerate(self.arrow_tips):
+            base = {(round(p[0], 6), round(p[1], 6)) for p in pts} - {
+                (round(tips[h][0], 6), round(tips[h][1], 6))}
+            bases.append((sum(p[0] for p in base) / len(base),
+                          sum(p[1] for p in base) / len(base)) if base else tips[h])
+
+        end_at: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
+        for sg in segs:
+            for x, y, ox, oy in ((sg.x1, sg.y1, sg.x2, sg.y2), (sg.x2, sg.y2, sg.x1, sg.y1)):
+                end_at.setdefault((round(x / SNAP_MM), round(y / SNAP_MM)), []).append(
+                    (x, y, ox, oy))
+        tip_at: dict[tuple[int, int], list[tuple[int, float, float, float, float]]] = {}
+        for h, (tx, ty) in enumerate(tips):
+            hx, hy = tx - cents[h][0], ty - cents[h][1]
+            hl = math.hypot(hx, hy)
+            if hl > 0:
+                tip_at.setdefault((round(tx / SNAP_MM), round(ty / SNAP_MM)), []).append(
+                    (h, tx, ty, hx / hl, hy / hl))
+
+        def ends_near(x: float, y: float) -> list[tuple[float, float, float, float]]:
+            k = (round(x / SNAP_MM), round(y / SNAP_MM))
+            return [q for i in (-1, 0, 1) for j in (-1, 0, 1)
+                    for q in end_at.get((k[0] + i, k[1] + j), ())
+                    if math.hypot(q[0] - x, q[1] - y) <= SNAP_MM]
+
+        def reached(ex: float, ey: float, dx: float, dy: float) -> list[int]:
+            """The filled heads whose tip a line's end (pointing out along (dx, dy)) already
+            reaches, along its axis (a line drawn through its head to the tip, as CAD
+            users draw; the next force starting there leaves at an angle)."""
+            k = (round(ex / SNAP_MM), round(ey / SNAP_MM))
+            return [h for i in (-1, 0, 1) for j in (-1, 0, 1)
+                    for h, tx, ty, ux, uy in tip_at.get((k[0] + i, k[1] + j), ())
+                    if h < filled and math.hypot(tx - ex, ty - ey) <= SNAP_MM and
+                    ux * dx + uy * dy > 0.99]
+
+        def goes_on(ex: float, ey: float, dx: float, dy: float) -> bool:
+            """Whether another line goes on from a line's end along it (a line split into
+            pieces: the piece is continued, not stopped at a head)."""
+            for _x, _y, ox, oy in ends_near(ex, ey):
+                ahead = (ox - ex) * dx + (oy - ey) * dy
+                if ahead > SNAP_MM and abs((ox - ex) * dy - (oy - ey) * dx) < 0.02 * ahead:
+                    return True
+            return False
+
+        def candidates(s: Segment, e: int) -> list[tuple[float, int, float]]:
+            """The heads line s may be carried on to at its end e: (how far, head,
+            gap between the end and the head), the farthest first."""
+            ex, ey = (s.x1, s.y1) if e == 0 else (s.x2, s.y2)
+            ox, oy = (s.x2, s.y2) if e == 0 else (s.x1, s.y1)
+            L = math.hypot(ex - ox, ey - oy)
+            dx, dy = (ex - ox) / L, (ey - oy) / L
+            cont = goes_on(ex, ey, dx, dy)
+            ci, cj = int(ex // cell), int(ey // cell)
+            cand = []
+            for di in (-1, 0, 1):
+                for dj in (-1, 0, 1):
+                    for h in grid.get((ci + di, cj + dj), ()):
+                        cx, cy = cents[h]
+                        along_c = (cx - ex) * dx + (cy - ey) * dy
+                        across_c = abs(-(cx - ex) * dy + (cy - ey) * dx)
+                        if not (0 < along_c <= ARROW_MM and across_c < 0.6):
+                            continue
+                        pts = self.arrow_tips[h]
+                        if min(math.hypot(px - ex, py - ey) for px, py in pts) > 1.0:
+                            continue
+                        gap = math.hypot(bases[h][0] - ex, bases[h][1] - ey)
+                        # the head must point on along the line, its tip ahead (the
+                        # head of the vector before, whose tip is here, does not)
+                        tx, ty = tips[h]
+                        far = (tx - ex) * dx + (ty - ey) * dy
+                        hx, hy = tx - cx, ty - cy
+                        hl = math.hypot(hx, hy)
+                        if far <= 0.05 or hl == 0 or (hx * dx + hy * dy) / hl < 0.9:
+                            continue
+                        cand.append((far, h, gap))
+            if cont:  # a piece continued: not to a filled head ("V"s as before)
+                cand = [c for c in cand if c[1] >= filled]
+            return sorted(cand, key=lambda c: (-c[0], c[1]))
+
+
+        def alone(x: float, y: float) -> bool:
+            """Whether only one line ends here (not a vertex of a polyline)."""
+            return len(ends_near(x, y)) == 1
+
+        def carried_on(s: Segment, e: int) -> list[tuple[float, int, float]]:
+            if s.length >= CARRY_MM:
+                return candidates(s, e)
+            # a stub: to a filled head, from its base, where no other line goes on (the
+            # pieces of a curve drawn as a polyline pass a head drawn on the curve)
+            ex, ey = (s.x1, s.y1) if e == 0 else (s.x2, s.y2)
+            if s.length >= STUB_MM and alone(ex, ey):
+                return [c for c in candidates(s, e) if c[1] < filled and c[2] <= SNAP_MM]
+            return []
+
+        cands = [[carried_on(s, e) for e in (0, 1)] for s in segs]
+        # an end already at a head's tip is complete — unless it is also at the base of a
+        # head no line reaches the tip of, and the head whose tip it reaches has a line of
+        # its own stopping at its base (forces drawn over each other on one line: G2 down
+        # to c, G3 back down past c, its head's base by chance at G2's tip)
+        at_tip = [[reached(*((sg.x1, sg.y1) if e == 0 else (sg.x2, sg.y2)),
+                           *_unit(sg, e)) for e in (0, 1)] for sg in segs]
+        tipped: dict[int, set[int]] = {}
+        based: dict[int, set[int]] = {}
+        for i in range(len(segs)):
             for e in (0, 1):
-                cand: list[tuple[float, int]] = []
-                ex, ey = ends[e]
-                ox, oy = ends[1 - e]
-                L = math.hypot(ex - ox, ey - oy)
-                dx, dy = (ex - ox) / L, (ey - oy) / L
-                ci, cj = int(ex // cell), int(ey // cell)
-                for di in (-1, 0, 1):
-                    for dj in (-1, 0, 1):
-                        for h in grid.get((ci + di, cj + dj), ()):
-                            cx, cy = cents[h]
-                            along_c = (cx - ex) * dx + (cy - ey) * dy
-                            across_c = abs(-(cx - ex) * dy + (cy - ey) * dx)
-                            if not (0 < along_c <= ARROW_MM and across_c < 0.6):
-                                continue
-                            pts = self.arrow_tips[h]
-                            if min(math.hypot(px - ex, py - ey) for px, py in pts) > 1.0:
-                                continue
-                            # the head must point on along the line, its tip ahead (the
-                            # head of the vector before, whose tip is here, does not)
-                            tx, ty = tips[h]
-                            far = (tx - ex) * dx + (ty - ey) * dy
-                            hx, hy = tx - cx, ty - cy
-                            hl = math.hypot(hx, hy)
-                            if far <= 0.05 or hl == 0 or (hx * dx + hy * dy) / hl < 0.9:
-                                continue
-                            cand.append((far, h))
+                for h in at_tip[i][e]:
+                    tipped.setdefault(h, set()).add(i)
+                for _f, h, _g in cands[i][e]:
+                    based.setdefault(h, set()).add(i)
+        for i in range(len(segs)):
+            for e in (0, 1):
+                if at_tip[i][e]:
+                    cands[i][e] = [c for c in cands[i][e] if c[1] >= filled or (
+                        not tipped.get(c[1], set()) - {i} and
+                        all(based.get(h, set()) - {i} for h in at_tip[i][e]))]
+        carried: dict[int, list[tuple[float, float]]] = {}  # head → the carried lines' starts
+        chosen: list[list[tuple[int, float, float] | None]] = [[None, None] for _ in segs]
+        # lines reaching a head at one end first: a head is theirs before a line's that
+        # reaches one at each end
+        order = sorted(range(len(segs)), key=lambda i: sum(bool(c) for c in cands[i]))
+        for i in order:
+            s = segs[i]
+            both = all(cands[i])
+            for e in (0, 1):
+                cand = cands[i][e]
+                ox, oy = (s.x2, s.y2) if e == 0 else (s.x1, s.y1)
                 # one head carries one line: a second line from the same start to the
                 # same base (a short vector drawn over a longer one, ending where the
                 # longer one's head begins: ps3 on pb) ends at the base, unless it has a
-                # head of its own there (vectors drawn over each other: pa, pc, ps4)
-                best = max((f for f, _h in cand), default=0.0)
-                for far, h in sorted(cand, key=lambda c: (-c[0], c[1])):
+                # head of its own there (vectors drawn over each other: pa, pc, ps4);
+                # a line with a head in reach at each end leaves a head another line
+                # was carried to
+                best = max((f for f, _h, _g in cand), default=0.0)
+                for far, h, gap in cand:
                     if far < best - SNAP_MM:
                         break
+                    if both and carried.get(h):
+                        continue
                     if not any(math.hypot(ox - qx, oy - qy) <= SNAP_MM
                                for qx, qy in carried.get(h, ())):
-                        carried.setdefault(h, []).append((ox, oy))
-                        ends[e] = (ex + far * dx, ey + far * dy)
+                        chosen[i][e] = (h, far, gap)
                         break
-            out.append(Segment(ends[0][0], ends[0][1], ends[1][0], ends[1][1], s.colour,
-                               s.width, s.layer))
+            # a stub shorter than a head between two heads pointing apart (a short
+            # vector's stub by the head of the vector drawn back over it) is its own
+            # head's: the one whose base it meets (nearest the middle of the base)
+            if all(chosen[i]) and s.length < ARROW_MM:
+                keep = min((0, 1), key=lambda e: chosen[i][e][2])  # type: ignore[index]
+                chosen[i][1 - keep] = None
+            for e, c in enumerate(chosen[i]):
+                if c is not None:
+                    carried.setdefault(c[0], []).append(
+                        (s.x2, s.y2) if e == 0 else (s.x1, s.y1))
+        out = []
+        for s, ch in zip(segs, chosen, strict=True):
+            ends = [(s.x1, s.y1), (s.x2, s.y2)]
+            L = s.length
+            for e, c in enumerate(ch):
+                if c is None:
+                    continue
+                ex, ey = ends[e]
+                ox, oy = ends[1 - e]
+                dx, dy = (ex - ox) / L, (ey - oy) / L
+                ends[e] = (ex + c[1] * dx, ey + c[1] * dy)
+            if any(ch):
+                out.append(Segment(ends[0][0], ends[0][1], ends[1][0], ends[1][1], s.colour,
+                                   s.width, s.layer))
+            else:
+                out.append(s)
         return out
 
     # --- nodes --------------------------------------------------------------------------
@@ -673,6 +799,21 @@ def _tip(pts: tuple) -> tuple[float, float]:
         if all(abs(p[0] - q[0]) + abs(p[1] - q[1]) > 1e-6 for q in uniq):
             uniq.append(p)
     return max(uniq, key=lambda p: sum(math.hypot(p[0] - q[0], p[1] - q[1]) for q in uniq))
+
+
+def _unit(s: Segment, e: int) -> tuple[float, float]:
+    """The direction out of segment s at its end e."""
+    L = s.length
+    return ((s.x1 - s.x2) / L, (s.y1 - s.y2) / L) if e == 0 else \
+        ((s.x2 - s.x1) / L, (s.y2 - s.y1) / L)
+
+
+def _small(pts) -> bool:
+    """Whether a fill is small enough to be an arrowhead (the fills come first among
+    :attr:`Scene.arrow_tips`)."""
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    return max(xs) - min(xs) <= ARROW_MM and max(ys) - min(ys) <= ARROW_MM
 
 
 def head_tip(pts) -> tuple[float, float]:
