@@ -2,17 +2,21 @@
 
 The sheets are lettered in **osifont**, an ISO 3098 CAD font close to GOST type B,
 which graphplan ships (``graphplan/data/fonts/osifont.ttf``, Debian's fonts-osifont
-0.1.20220224, with its licence: GPL-3 with the font exception, which lets documents
-embed it under any licence). The symbols osifont lacks come from the DejaVu fonts that
-matplotlib ships. So the lettering, its metrics and so every SVG, table and report are
-the same bytes on every machine, with or without installed fonts; fonts installed on the
-system are never used for the sheets (:func:`find_font_file`). The bundled build of
+0.1.20220224 with → and − added as composites of its own en dash and '>', Ё ё Э э
+drawn from Е е С с and the subscript digits ₀ … ₉ from its superscripts, by
+``docs/osifont_patch.py``, so that the equations and titles of the
+sheets stay in one typeface; with its
+licence: GPL-3 with the font exception, which lets documents embed it under any
+licence). The symbols osifont lacks come from the DejaVu fonts that matplotlib ships. So
+the lettering, its metrics and so every SVG, table and report are the same bytes on every
+machine, with or without installed fonts; fonts installed on the system are never used for
+the sheets (:func:`find_font_file`). The bundled build of
 osifont cannot letter every text of a TMM sheet:
 
-* the glyphs of **Ё ё Э э** are blank: each is one filled quadrilateral (a single
-  contour of 4 points) instead of a letter;
-* it has no **−** (U+2212 minus), **∥**, **⟂**, **⊥**, **√** and no subscript digits
-  **₁ ₂ ₃**.
+* it has no **∥**, **⟂**, **⊥**, **√** (the upstream build had no **−**, **→** and
+  subscript digits **₁ ₂ ₃** either, and its **Ё ё Э э** were blank — one filled
+  quadrilateral each, which :func:`glyph_is_blank` still catches in such a build:
+  graphplan's draws them).
 
 So every text gets its own font-family list. Its first family is the first font of
 :data:`FONT_CHAIN` that really draws every character of the text (checked glyph by
@@ -21,8 +25,8 @@ The first family matters: CairoSVG (the optional PDF/PNG engine) uses only the f
 family of the list and does no glyph fallback, and resvg, Typst and the browsers letter
 a text in one family when that family draws all of it. The required symbols come from::
 
-    osifont           А–я (without Ё ё Э э), ω ε φ π μ δ Δ Σ ψ τ ° ± ×
-    DejaVu Sans       Ё ё Э э, − ∥ ₁ ₂ ₃ √ ⊥ (and any text that contains them)
+    osifont           А–я, Ё ё, ω ε φ π μ δ Δ Σ ψ τ ° ± × − → ₁ ₂ ₃
+    DejaVu Sans       ∥ √ ⊥ (and any text that contains them)
     DejaVu Sans Mono  ⟂ (U+27C2 is in neither osifont nor DejaVu Sans; prefer ⊥ U+22A5)
 
 Should a font file be unreadable (a damaged installation), the choice falls back on the
@@ -99,10 +103,12 @@ def _ranges(ranges: list[tuple[int, int]], minus: str = "") -> frozenset[int]:
 
 
 #: Coverage assumed for a family whose file is not installed: what the Debian bookworm
-#: builds (fonts-osifont 0.1.20220224, fonts-dejavu-core 2.37) were measured to draw.
+#: builds (fonts-osifont 0.1.20220224 with graphplan's → and −, fonts-dejavu-core 2.37)
+#: were measured to draw.
 _ASSUMED: Mapping[str, frozenset[int]] = MappingProxyType(
     {
-        "osifont": _ranges(_BASIC + _GREEK + _CYRILLIC, minus="ЁёЭэ"),
+        "osifont": _ranges(_BASIC + _GREEK + _CYRILLIC
+                           + [(0x2080, 0x2089), (0x2192, 0x2192), (0x2212, 0x2212)]),
         "DejaVu Sans": _ranges(_BASIC + _GREEK + _CYRILLIC + _MATH),
         "DejaVu Sans Mono": _ranges(_BASIC + _GREEK + _CYRILLIC + _MATH + [(0x27C2, 0x27C2)],
                                     minus="∥"),
@@ -458,9 +464,11 @@ MINUS, EN_DASH = "\u2212", "\u2013"
 
 
 def drawable_minus(text: str) -> str:
-    """``text`` with its minus signs (U+2212, which osifont lacks) written as the en dash
-    osifont has, when that lets osifont letter the whole text; else ``text`` unchanged
-    (it is then lettered in the fallback family, slanted all the same)."""
+    """``text`` with its minus signs (U+2212) written as osifont's en dash, when that lets
+    osifont letter the whole text; else ``text`` unchanged (it is then lettered in the
+    fallback family, slanted all the same). graphplan's osifont draws U+2212 as the en
+    dash's outline, but the upstream build CAD programs letter the DXF's texts in has no
+    U+2212: the dash reads the same on the sheet and in CAD."""
     if MINUS not in text:
         return text
     swapped = text.replace(MINUS, EN_DASH)

@@ -83,7 +83,7 @@ def synthetic_sheet() -> Sheet:
                Text((320, 405), "h21 = 12 мм", 3.5, layer="dimensions")),
               layer="dimensions", id="arm"),
         Text((200, 80), "Ряд", 5.0, rotate_deg=90.0, layer="text", id="turned"),
-        Text((200, 100), "ЭЁ −1", 3.5, anchor="end", layer="text", id="dejavu"),
+        Text((200, 100), "ЭЁ ∥ √1", 3.5, anchor="end", layer="text", id="dejavu"),
     )
     tb = TitleBlock(designation="ТММ.00.01", title="Проверка экспорта", sheet=1, sheets=1)
     return Sheet(Page("A1"), items, tb)
@@ -407,7 +407,7 @@ def test_synthetic_sheet_uses_every_gost_line_type_and_style(ex):
     assert by_id["hidden"][0].dxf.linetype == "GOST_DASHED"
     assert by_id["traj"][0].dxf.linetype == "GOST_DASHDOT"
     assert by_id["ground"][0].dxf.lineweight == 70 and by_id["hidden"][0].dxf.lineweight == 25
-    # Э, Ё and − are not in osifont: DejaVu lettering, as on the SVG
+    # ∥ and √ are not in osifont: DejaVu lettering, as on the SVG
     assert by_id["dejavu"][0].dxf.style == "DEJAVU_SANS"
     assert by_id["turned"][0].dxf.rotation == 90.0
     # the wrapping arc 300° → 30° (90° of sweep) keeps its sweep

@@ -88,10 +88,10 @@ def test_diagram_text_is_text_in_the_svg(sheets, name):
         assert g.findall(f".//{SVG}path") == []  # no glyph outlines: lines are polylines
 
 
-def test_russian_letters_osifont_cannot_draw_are_slanted_too():
-    """Э, ё and the minus sign are not in the bundled osifont: such a text is lettered in
-    the fallback family, sheared to the same 75° (never upright)."""
-    t = Text((100.0, 100.0), "Энергия ёмкость −5,0", 3.5, layer="text", id="t")
+def test_symbols_osifont_cannot_draw_are_slanted_too():
+    """∥ and √ are not in the bundled osifont: such a text is lettered in the fallback
+    family, sheared to the same 75° (never upright)."""
+    t = Text((100.0, 100.0), "AB ∥ CD, √2", 3.5, layer="text", id="t")
     assert fonts.choose_family(t.text) != "osifont"
     svg = render_svg(Sheet(Page("A3"), (t,)))
     el = ET.fromstring(svg.encode("utf-8")).find(f".//{SVG}text[@id='t']")
@@ -127,9 +127,26 @@ def test_decimal_comma_on_russian_point_on_english_sheets(sheets):
     assert [s for s in en if NUMBER.search(s)]
 
 
-def test_a_minus_osifont_lacks_is_lettered_with_its_dash():
-    """U+2212 is not in the bundled osifont: a text osifont can letter otherwise keeps
-    osifont, the minus written as its en dash (not the whole line in the fallback font)."""
+def test_the_sheets_letters_are_all_osifont(sheets):
+    """Э, ё, the minus and → were not in the upstream osifont (the equations of sheet 2,
+    «Силовой расчёт», «Этот» fell back to DejaVu Sans: two typefaces in one block); graphplan's
+    build (docs/osifont_patch.py) draws them from its own glyphs: every text of the press's
+    and the engine's three sheets is lettered in osifont, and the new glyphs draw (they are
+    not the blank quadrilaterals of the upstream Ё ё Э э)."""
+    text = "Энергия ёмкость Ё −5,0: ΣMB(2) = 0 → Rτ12"
+    assert fonts.choose_family(text) == "osifont"
+    assert fonts.blank_chars("osifont", "ЁёЭэ−→") == ""
+    for name in ("press", "engine"):
+        for key, sheet in sheets(name).items():
+            bad = {t.text for t in iter_leaves(sheet.items) if isinstance(t, Text)
+                   and t.text.strip() and fonts.choose_family(t.text) != "osifont"}
+            assert not bad, (name, key, sorted(bad)[:5])
+
+
+def test_a_minus_is_lettered_with_its_dash():
+    """U+2212 was not in the upstream osifont (CAD programs' osifont, which the DXF's texts
+    name): a text osifont can letter keeps the minus written as its en dash, which every
+    osifont has (graphplan's minus is the en dash's outline, so the sheet looks the same)."""
     t = Text((100.0, 100.0), "Jм = JI − Jкр − Jрот·u²", 3.5, layer="text", id="t")
     assert fonts.drawable_minus(t.text) == "Jм = JI – Jкр – Jрот·u²"
     el = ET.fromstring(render_svg(Sheet(Page("A3"), (t,))).encode("utf-8")).find(

@@ -63,7 +63,7 @@ def make_sheet(fmt="A1"):
                Text((462, 157), "a", 5, layer="velocity_plan", id="lbl-a")),
               "velocity_plan", id="labels"),
         Text((400, 250), "ω₁ = 12,57 рад/с", 5, layer="text", id="omega"),
-        Text((400, 265), "Ёмкость ε φ", 5, layer="text", id="yo"),
+        Text((400, 265), "Ёмкость ε φ ∥ √2", 5, layer="text", id="yo"),
         Text((380, 300), "повёрнутый", 3.5, rotate_deg=90, layer="text", id="turned"),
         *table_items((60, 300), (15, 25), [(1, "0,50"), (2, "0,70")], header=("№", "v"),
                      id="tab"),
@@ -171,7 +171,7 @@ def test_text_lettering_attributes(root):
     assert "scale(" not in svg
 
 
-def test_text_with_yo_is_lettered_in_the_fallback(root):
+def test_text_osifont_cannot_letter_is_lettered_in_the_fallback(root):
     el = elements(root)
     assert el["yo"].get("font-family").startswith("'DejaVu Sans', ")
     assert el["tb-designation"].get("font-family").startswith("'osifont', ")

@@ -387,20 +387,19 @@ def test_check_layout_finds_drawing_leaving_the_frame():
 # ------------------------------------------------------------------------ fonts
 
 def test_osifont_metrics_and_its_blank_glyphs():
-    # the bundled build (Debian's 0.1.20220224): capitals 1515/2048 em, placeholder
-    # quadrilaterals for Ё ё Э э
+    # the bundled build (Debian's 0.1.20220224 with docs/osifont_patch.py): capitals
+    # 1515/2048 em, Ё ё Э э drawn over the upstream build's blank placeholders, − and →
     assert fonts.cap_ratio("osifont") == pytest.approx(1515 / 2048, abs=1e-9)
-    blank = fonts.blank_chars("osifont", "АЁёЭэЖ")
-    assert set(blank) == set("ЁёЭэ")
-    assert fonts.missing_chars("osifont", "Масштаб 1:2 ω ε φ") == ""
+    assert fonts.blank_chars("osifont", "АЁёЭэЖ−→") == ""
+    assert fonts.missing_chars("osifont", "Масштаб 1:2 ω ε φ − → Ёё Ээ") == ""
 
 
 def test_texts_osifont_cannot_draw_fall_back_to_dejavu():
     assert fonts.choose_family("Масштаб") == "osifont"
     assert fonts.font_family("Масштаб").startswith("'osifont', ")
-    assert fonts.choose_family("Ёмкость") == "DejaVu Sans"
-    assert fonts.font_family("Ёмкость").startswith("'DejaVu Sans', 'osifont'")
-    assert fonts.choose_family("ε = −3,5") == "DejaVu Sans"
+    assert fonts.choose_family("Ёмкость ε = −3,5 → 0") == "osifont"
+    assert fonts.choose_family("AB ∥ CD") == "DejaVu Sans"
+    assert fonts.font_family("AB ∥ CD").startswith("'DejaVu Sans', 'osifont'")
     assert fonts.font_family("x").endswith(", sans-serif")
 
 
@@ -414,9 +413,9 @@ def test_every_required_symbol_is_drawn_by_the_chain():
 
 def test_which_font_draws_which_symbol():
     report = fonts.coverage_report()
-    for ch in "ωεφπμδΔΣ°±×ψτАБЖЯабжя":
+    for ch in "ωεφπμδΔΣ°±×ψτАБЖЯабжяЁёЭэ−₁₂₃":
         assert report[ch] == "osifont", ch
-    for ch in "−∥₁₂₃":
+    for ch in "∥":
         assert report[ch] == "DejaVu Sans", ch
     assert report["⟂"] == "DejaVu Sans Mono"
 
@@ -444,7 +443,8 @@ def test_everything_works_without_font_files(no_fonts):
     assert fonts.text_width("a.", 5) == pytest.approx(5 * (fonts.FALLBACK_ADVANCE + narrow))
     # the known gaps of the reference osifont build still steer the choice
     assert fonts.choose_family("Масштаб") == "osifont"
-    assert fonts.choose_family("Ёмкость") == "DejaVu Sans"
+    assert fonts.choose_family("Ёмкость → −1") == "osifont"
+    assert fonts.choose_family("AB ∥ CD") == "DejaVu Sans"
     assert fonts.choose_family("a ⟂ b") == "DejaVu Sans Mono"
     assert check_layout(_clean_sheet()) == []
 

@@ -86,10 +86,12 @@ def _fit(points: np.ndarray, room_w: float, room_h: float) -> float:
     return gost_scale(need)
 
 
-def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
+def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None,
+                  slack: float = 0.0):
     """``draw(P)`` at the finest scale of the series (or at ``kl``) whose drawing — blocks,
-    slots and guides included, which the points alone do not bound — fits ``box``,
-    centred in it: ``(kl, P, items)``."""
+    slots and guides included, which the points alone do not bound — fits ``box`` grown by
+    ``slack`` mm on every side (the margin kept round it may take that much), centred in
+    it: ``(kl, P, items)``."""
     kl = _fit(points, box.width, box.height) if kl is None else kl
     best: tuple[float, float, _Paper] | None = None  # (overflow, kl, P) of the scale before
     for _ in range(6):
@@ -101,7 +103,7 @@ def _drawn_to_fit(points: np.ndarray, box: Rect, draw, kl: float | None = None):
         dy = (box.y0 + box.y1) / 2 - (y0 + y1) / 2
         P = _Paper((P.ox + dx, P.oy + dy), kl, P.pivot)
         over = max(x1 - x0 - box.width, y1 - y0 - box.height)
-        if over <= 1e-6:
+        if over <= 2.0 * slack + 1e-6:
             return kl, P, draw(P)
         if best is not None and over > best[0] - 0.5 and best[0] <= MARGIN / 2:
             # a coarser scale does not shrink it: what overflows is drawn at a fixed paper
@@ -244,8 +246,11 @@ def groups_items(analysis, slots, cell: Rect, lang: str, ident: str = "groups") 
         names = {p for lk in links for p in mech.points_of(lk)}
         return np.array([kin.pos.points[p][k] for p in names if p in kin.pos.points])
 
-    boxes = [Rect(cell.x0 + 2.0 + c * slot_w + MARGIN, cell.y0 + CAPTION + r * row_h + MARGIN,
-                  cell.x0 + 2.0 + (c + 1) * slot_w - MARGIN,
+    # the margin round each piece: MARGIN, but at most 15 % of a narrow slot (three pieces in
+    # a 100 mm cell left 8 mm of box each: the slotter's groups went to Kl 0.25, 2 mm blobs)
+    gm = min(MARGIN, 0.15 * slot_w)
+    boxes = [Rect(cell.x0 + 2.0 + c * slot_w + gm, cell.y0 + CAPTION + r * row_h + MARGIN,
+                  cell.x0 + 2.0 + (c + 1) * slot_w - gm,
                   cell.y0 + CAPTION + (r + 1) * row_h - MARGIN - 5.0)
              for r, c in (divmod(i, cols) for i in range(n))]
 
@@ -253,13 +258,13 @@ def groups_items(analysis, slots, cell: Rect, lang: str, ident: str = "groups") 
         return lambda P: _mechanism(mech, kin, k, P, links, slots, f"{ident}-{i}")
 
     # one scale for all the pieces: the coarsest any of them needs
-    kl = max(_drawn_to_fit(points_of(links), boxes[i], draw(i, links))[0]
+    kl = max(_drawn_to_fit(points_of(links), boxes[i], draw(i, links), slack=gm / 2)[0]
              for i, (_, links) in enumerate(pieces))
     items: list[Item] = []
     labels: list[LabelRequest] = []
     for i, (formula, links) in enumerate(pieces):
         box = boxes[i]
-        _, P, drawn = _drawn_to_fit(points_of(links), box, draw(i, links), kl)
+        _, P, drawn = _drawn_to_fit(points_of(links), box, draw(i, links), kl, slack=gm / 2)
         items += drawn
         geoms = [g for it in iter_leaves(drawn) if (g := item_geometry(it)) is not None]
         under = shapely.union_all(geoms).bounds[3] + 7.0 if geoms else cell.y1 - 4.0
