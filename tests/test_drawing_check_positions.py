@@ -250,7 +250,8 @@ def test_overlay_shows_positions_findings(tmp_path):
     """A joint of one position drawn 3 mm off its place: the overlay lays every position
     exactly from the student's pivot (green, dashed) and draws the joint's error in red
     with its distance, with a close-up of the plan; a position drawn at another crank
-    angle gets its crank in red and its angle off."""
+    angle gets its crank in red and its angle off; a trajectory drawn off its path, the
+    curve in red with its distance."""
     from graphplan.checking.drawing.overlay import RED, drawing_overlay
 
     v = EX / "fourbar.toml"
@@ -266,6 +267,13 @@ def test_overlay_shows_positions_findings(tmp_path):
                        lang="en")
     over = drawing_overlay(dc, "en")
     assert len(over) == 2 and "φ1&#x27;: +10°" in over[0]
+    # a centre of mass' trajectory 3 mm off: the curve in red over the exact path, dashed
+    dc = check_drawing(positions_sheet(v, tmp_path / "t.dxf",
+                                       plant=PositionPlant("path", point="S2")), v, lang="en")
+    assert [(f.quantity, f.kind) for f in dc.report.wrong] == [("⌒S2", "point")]
+    over = drawing_overlay(dc, "en")
+    assert len(over) == 2 and "⌒S2: " in over[0]
+    assert "<polyline points=" in over[0] and f"stroke='{RED}' stroke-width='0.45'" in over[0]
     right = drawing_overlay(check_drawing(positions_sheet(v, tmp_path / "s.dxf"), v,
                                           lang="en"), "en")
     assert len(right) == 1 and f"stroke='{RED}'" not in right[0]

@@ -227,7 +227,8 @@ def _positions_overlay(dc, j, body: list[str], crops: list, H: float, lang: str)
     pivot at the Kl used (green, dashed: the links, a ring at each joint), and in red each
     joint off its place (from where it is drawn to the exact place, the distance), each
     crank drawn at another angle than its number's (the drawn crank, a ring where its
-    number puts the pin, the angle off), a Kl or a numbering that is wrong."""
+    number puts the pin, the angle off), a trajectory off its path (the curve in red, the
+    exact path dashed, the distance), a Kl, a numbering or a position left out."""
     pl = j.found
     ref = dc.ref
     mech = ref.mech
@@ -261,7 +262,21 @@ def _positions_overlay(dc, j, body: list[str], crops: list, H: float, lang: str)
            j.key in f.where]
     r_exp = float(mech.crank.length) / pl.kl_used
     for f in bad:
-        if f.kind == "point" and (f.position, f.quantity[1:]) in pl.joints:
+        if f.kind == "point" and f.quantity.startswith("⌒"):
+            # a trajectory off its path: the exact path dashed, the curves drawn in red
+            name = f.quantity[1:]
+            path = pl.exact_paths.get(name)
+            if path is not None:
+                pts = " ".join(f"{x:.2f},{H - y:.2f}" for x, y in path)
+                body.append(f"<polyline points='{pts}' fill='none' stroke='{BLUE}' "
+                            "stroke-width='0.3' stroke-dasharray='1.2,0.6'/>")
+            for drawn in (p for p in pl.paths if p.point == name):
+                pts = " ".join(f"{x:.2f},{H - y:.2f}" for x, y in drawn.points)
+                body.append(f"<polyline points='{pts}' fill='none' stroke='{RED}' "
+                            "stroke-width='0.45'/>")
+                label(drawn.points[len(drawn.points) // 2],
+                      f"⌒{name}: {num(float(f.stated), lang, 3)} {unit}")
+        elif f.kind == "point" and (f.position, f.quantity[1:]) in pl.joints:
             name = f.quantity[1:]
             m = np.asarray(pl.joints[(f.position, name)], float)
             e = exact(f.position, name)
@@ -279,7 +294,7 @@ def _positions_overlay(dc, j, body: list[str], crops: list, H: float, lang: str)
             ring(e, RED)
             label(m, f"φ{f.position}: {'+' if float(f.stated) > 0 else ''}"
                      f"{num(float(f.stated), lang, 3)}°")
-        elif f.kind in ("scale", "label", "extreme"):
+        elif f.kind in ("scale", "label", "extreme", "missing"):
             label(o + np.array([3.0, -4.0 - 3.0 * bad.index(f)]),
                   f"{f.quantity}: {f.explanation.split(':')[0]}")
     if any(f.primary for f in bad):
