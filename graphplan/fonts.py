@@ -525,7 +525,7 @@ def text_width(text: str, height: float) -> float:
     Uses the advance widths of the family chosen for the text; characters without
     metrics count FALLBACK_ADVANCE·h each (FALLBACK_NARROW·h for
     spaces, stops and the like). The slant of italic lettering is not
-    included (see :func:`graphplan.drawing.sheet.text_box`).
+    included (see :func:`graphplan.drawing.items.text_box`).
     """
     family = choose_family(text)
     info = load_font(family)

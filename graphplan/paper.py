@@ -1,7 +1,7 @@
 """Paper: the sheet formats (GOST 2.301), the frame's margins and the title block's size.
 
 Millimetres, origin at the top-left corner of the sheet, x to the right and y down
-(see :mod:`graphplan.drawing.sheet`). The base layer: the draftsman's decisions
+(see :mod:`graphplan.drawing.items`). The base layer: the draftsman's decisions
 (:mod:`graphplan.project`) and the dynamics' diagram sizes need the page, not the drawing.
 """
 

@@ -17,7 +17,7 @@ from graphplan.drawing.chart import (
     nice_ticks,
     tick_labels,
 )
-from graphplan.drawing.sheet import Circle, Polyline, Text
+from graphplan.drawing.items import Circle, Polyline, Text
 
 
 def test_round_values_by_hand():

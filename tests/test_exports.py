@@ -24,7 +24,7 @@ pytest.importorskip("typst")
 pytest.importorskip("resvg_py")
 pypdf = pytest.importorskip("pypdf")
 
-from graphplan.drawing.sheet import (  # noqa: E402
+from graphplan.drawing.items import (  # noqa: E402
     DASHDOT,
     DASHDOTDOT,
     DASHED,
@@ -38,13 +38,12 @@ from graphplan.drawing.sheet import (  # noqa: E402
     Group,
     Hatch,
     Line,
-    Page,
     Polyline,
-    Sheet,
     Style,
     Text,
-    TitleBlock,
 )
+from graphplan.drawing.sheet import Page, Sheet  # noqa: E402
+from graphplan.drawing.title_block import TitleBlock  # noqa: E402
 from graphplan.errors import GraphplanError, InputError  # noqa: E402
 from graphplan.render import dxf as dxf_mod  # noqa: E402
 from graphplan.render import (  # noqa: E402

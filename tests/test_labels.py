@@ -45,8 +45,8 @@ def test_the_batched_boxes_are_the_boxes_of_the_texts():
     import numpy as np
     import shapely
 
+    from graphplan.drawing.items import text_at_centre
     from graphplan.drawing.labels import _label_boxes
-    from graphplan.drawing.sheet import text_at_centre
 
     rng = random.Random(7)
     for _ in range(500):

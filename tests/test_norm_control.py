@@ -242,7 +242,7 @@ def test_sheet_1_carries_the_structural_analysis(analysis, sheet, name):
 def test_no_line_thinner_than_gost_thin_line(sheet, name, n):
     """GOST 2.303: the thin line is S/3 … S/2 (S = 0.7 mm: at least 0.23 mm); the diagrams'
     node ordinates and pole rays were 0.15–0.175 mm grey."""
-    from graphplan.drawing.sheet import S
+    from graphplan.drawing.items import S
 
     thin = [(it.id, it.style.width) for it in iter_leaves(sheet(name, n).all_items())
             if getattr(it, "style", None) is not None and not isinstance(it, Text)
@@ -414,7 +414,7 @@ def test_flywheel_on_a2_and_a3_after_gost_2_307(sheet3_on, analysis, name, fmt):
     mm; a number wider than the space between its extension lines stands on the dimension
     line drawn on past the arrow (GOST 2.307), not across the extension lines."""
     from graphplan.drawing import Line
-    from graphplan.drawing.sheet import text_width
+    from graphplan.drawing.items import text_width
 
     sh = sheet3_on(name, fmt)
     s = analysis(name).unit_on(sh.page).mounted

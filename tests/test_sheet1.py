@@ -263,7 +263,7 @@ def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(built, 
     arrow and a letter ω2, ε2 … for every link that turns there, its head at the end the
     solver's sign turns to (counter-clockwise positive; the plans flip only y)."""
     from graphplan.drawing import Arc
-    from graphplan.drawing.sheet import arc_point
+    from graphplan.drawing.items import arc_point
 
     a, sheet, _ = built(name)
     sc = sheet_scales(a.mech, a.kin)

@@ -23,7 +23,7 @@ import math
 import numpy as np
 import pytest
 
-from graphplan.drawing.sheet import Arrow, Text
+from graphplan.drawing.items import Arrow, Text
 from graphplan.files import examples_dir
 from graphplan.plans import acceleration_plan, force_plans, velocity_plan, zhukovsky_lever
 from graphplan.teaching import lesson

@@ -52,17 +52,11 @@ from .figures import (
     fit_diagrams,
     spaced_labels,
 )
-from .labels import LabelRequest, merge_coincident, place_labels
-from .scheme import mechanism_scheme, scheme_links, scheme_paper
-from .sheet import (
+from .items import (
     DASHDOT,
     DASHDOTDOT,
     DASHED,
-    DEFAULT_SIGNATURES,
-    FORM1_LABELS,
-    FORM1_SEGMENTS,
     ITEM_TYPES,
-    LABEL_HEIGHTS,
     LAYERS,
     LINE_PITCH,
     MAIN,
@@ -81,24 +75,20 @@ from .sheet import (
     Line,
     Polyline,
     S,
-    Sheet,
     Style,
     Text,
-    TitleBlock,
     arc_point,
     arc_points,
     arrow_parts,
-    check_layout,
-    frame_items,
     hatch_segments,
     item_geometry,
     iter_leaves,
-    signatures,
-    table_items,
     text_at_centre,
     text_box,
-    title_block_items,
 )
+from .labels import LabelRequest, merge_coincident, place_labels
+from .scheme import mechanism_scheme, scheme_links, scheme_paper
+from .sheet import Sheet, check_layout
 from .sheet1 import (
     JOINT_R,
     PLAN_LAYERS,
@@ -128,7 +118,17 @@ from .sheet3 import (
     results_lines,
     u_density,
 )
-from .tables import split_table, titled_table
+from .tables import split_table, table_items, titled_table
+from .title_block import (
+    DEFAULT_SIGNATURES,
+    FORM1_LABELS,
+    FORM1_SEGMENTS,
+    LABEL_HEIGHTS,
+    TitleBlock,
+    frame_items,
+    signatures,
+    title_block_items,
+)
 
 __all__ = [
     "ARROW_MM",

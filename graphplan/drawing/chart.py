@@ -7,13 +7,13 @@ and turns data into sheet points by the linear map
 
     X = x0 + (x − x_lo) / (x_hi − x_lo) · width,   Y = y0 + (y_hi − y) / (y_hi − y_lo) · height.
 
-Its lines are :class:`~graphplan.drawing.sheet.Polyline` (clipped to the box, as a plot's
-curves are), its dots filled circles, its letters :class:`~graphplan.drawing.sheet.Text` of
+Its lines are :class:`~graphplan.drawing.items.Polyline` (clipped to the box, as a plot's
+curves are), its dots filled circles, its letters :class:`~graphplan.drawing.items.Text` of
 GOST 2.304 capital height (slanted like every text of the sheet; the decimal comma on a
 Russian sheet), so they stay texts in the SVG, the DXF and the PDF and the layout checks
 see them. Text is placed by its capitals: ``va="top"`` puts the capitals' top on the
 point, ``"center"`` their middle, ``"bottom"`` the descenders' foot (0.3 h below the
-baseline, as :func:`~graphplan.drawing.sheet.text_box` counts them).
+baseline, as :func:`~graphplan.drawing.items.text_box` counts them).
 
 The ordinate's values are chosen like a drafter chooses them and as matplotlib's
 ``MaxNLocator`` does (:func:`nice_ticks`: steps 1, 2, 2.5, 5 × 10ⁿ, as many as fit the
@@ -30,7 +30,7 @@ import numpy as np
 
 from .. import fonts
 from ..numbers import decimal_comma
-from .sheet import Circle, Item, Polyline, Style, Text
+from .items import Circle, Item, Polyline, Style, Text
 
 LAYER = "diagrams"
 #: Space between a tick and its label, and between the tick labels and the axis' name, mm

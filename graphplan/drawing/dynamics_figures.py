@@ -30,14 +30,13 @@ from shapely import LineString, union_all
 from shapely import box as shapely_box
 
 from ..numbers import fmt, sheet_text
-from .labels import LabelRequest, place_labels
-from .sheet import (
+from ..paper import Rect
+from .items import (
     Arc,
     Arrow,
     Circle,
     Group,
     Polyline,
-    Rect,
     Style,
     Text,
     item_geometry,
@@ -45,6 +44,7 @@ from .sheet import (
     text_box,
     text_width,
 )
+from .labels import LabelRequest, place_labels
 
 THIN = Style(0.25)
 MAIN = Style(0.5)

@@ -5,7 +5,7 @@ is one millimetre of the sheet, so the abscissa is ``length_mm`` long and an ord
 of y mm stands for ``y·Ks`` (``Kv``, ``Ka``). :func:`fit_diagrams` chooses the length
 and the heights for the box the sheet gives and :func:`diagrams_items` draws them
 (:class:`graphplan.drawing.chart.Chart`): polylines in sheet millimetres and
-:class:`~graphplan.drawing.sheet.Text` in the sheet's lettering (GOST 2.304 type B,
+:class:`~graphplan.drawing.items.Text` in the sheet's lettering (GOST 2.304 type B,
 slanted; decimal comma on Russian sheets), so that they stay text in the SVG, the DXF
 and the PDF and the layout checks see them.
 """
@@ -24,7 +24,7 @@ from ..model import Mechanism
 from ..numbers import plain
 from ..plans import MIN_NODES, KinematicDiagrams, diagram_motion, kinematic_diagrams
 from .chart import MIN_DOT, Chart
-from .sheet import Circle, Group, Item, Style
+from .items import Circle, Group, Item, Style
 
 THIN, MAIN = 0.25, 0.5  #: line widths, mm
 TEXT_H, SMALL_H = 3.5, 2.5  #: capital heights of labels and of position numbers, mm

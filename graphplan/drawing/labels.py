@@ -10,7 +10,7 @@ crosses as few lines as possible. Where every spot near the point is crossed by 
 ``leaders`` looks farther out for a clear spot and joins the letter to its point with a
 thin leader line (выноска, GOST 2.316), as a draftsman does.
 
-Paper coordinates, mm, y down (see :mod:`graphplan.drawing.sheet`).
+Paper coordinates, mm, y down (see :mod:`graphplan.drawing.items`).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ import shapely
 from shapely.geometry.base import BaseGeometry
 
 from .. import fonts
-from .sheet import SLANT_DEG, THIN, Line, Pt, Text, text_at_centre, text_box
+from .items import SLANT_DEG, THIN, Line, Pt, Text, text_at_centre, text_box
 
 #: Directions tried around an anchor (degrees, counter-clockwise as seen), best first.
 _DIRECTIONS = (45, 135, -45, -135, 0, 180, 90, -90, 22.5, 157.5, -22.5, -157.5,

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from ..project import SLOT_OVER
-from .sheet import (
+from .items import (
     MAIN,
     THIN,
     Arc,

@@ -16,7 +16,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..units import nice_ceil
-from .sheet import MAIN, Circle, Item, Line, Polyline, Style, Text
+from .items import MAIN, Circle, Item, Line, Polyline, Style, Text
 from .sheet1 import (
     JOINT_R,
     WHITE_FILL,

@@ -18,6 +18,7 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from ..kinematics import link_coordinate, output_coordinate, translating_links
+from ..paper import Page, Rect
 from ..plans import Plan
 from ..project import (
     CAPTION,
@@ -28,6 +29,30 @@ from ..project import (
     Sheet1Scales,
     fit_columns,
     kinematic_twin,
+)
+from .items import (
+    DASHDOT,
+    DASHDOTDOT,
+    MAIN,
+    MEDIUM,
+    THIN,
+    Arc,
+    Arrow,
+    Circle,
+    Group,
+    Hatch,
+    Item,
+    Line,
+    Polyline,
+    Pt,
+    Style,
+    Text,
+    arc_point,
+    item_geometry,
+    iter_leaves,
+    text_at_centre,
+    text_box,
+    text_width,
 )
 from .labels import LabelRequest, place_labels
 from .linkage import (
@@ -50,36 +75,9 @@ from .linkage import (
 from .linkage import (
     slider_point as slider_point,
 )
-from .sheet import (
-    DASHDOT,
-    DASHDOTDOT,
-    MAIN,
-    MEDIUM,
-    THIN,
-    Arc,
-    Arrow,
-    Circle,
-    Group,
-    Hatch,
-    Item,
-    Line,
-    Page,
-    Polyline,
-    Pt,
-    Rect,
-    Sheet,
-    Style,
-    Text,
-    TitleBlock,
-    arc_point,
-    item_geometry,
-    iter_leaves,
-    signatures,
-    text_at_centre,
-    text_box,
-    text_width,
-)
+from .sheet import Sheet
 from .tables import titled_table
+from .title_block import TitleBlock, signatures
 
 WORDS = {
     "ru": {"positions": "План положений", "velocity": "План скоростей",

@@ -17,8 +17,26 @@ import numpy as np
 import shapely
 
 from ..numbers import plain
+from ..paper import Rect
 from ..project import CAPTION
 from ..units import nice_ceil
+from .items import (
+    MAIN,
+    Circle,
+    Hatch,
+    Item,
+    Line,
+    Polyline,
+    Pt,
+    Style,
+    Text,
+    arc_point,
+    item_geometry,
+    iter_leaves,
+    text_at_centre,
+    text_box,
+    text_width,
+)
 from .labels import LabelRequest, place_labels
 from .linkage import (
     JOINT_R,
@@ -30,24 +48,6 @@ from .linkage import (
     _support,
     link_items,
     turning_arrow,
-)
-from .sheet import (
-    MAIN,
-    Circle,
-    Hatch,
-    Item,
-    Line,
-    Polyline,
-    Pt,
-    Rect,
-    Style,
-    Text,
-    arc_point,
-    item_geometry,
-    iter_leaves,
-    text_at_centre,
-    text_box,
-    text_width,
 )
 
 L = "position_plan"
@@ -295,7 +295,8 @@ def pairs_table(structure, cell: Rect, n_pieces: int, lang: str, ident: str
     each pair, the links it joins, revolute or prismatic, its class), in the right of the
     structural scheme's cell when the cell holds it beside ``n_pieces`` pieces at least
     PIECE_MIN_W wide: ``(items, width taken)``, or ``([], 0)``."""
-    from .sheet import Text, table_items
+    from .items import Text
+    from .tables import table_items
 
     w = PAIR_WORDS[lang]
     rows = [[p.joint or "—", "–".join(p.links), w[p.kind], "5"] for p in structure.pairs]

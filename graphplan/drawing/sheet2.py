@@ -34,6 +34,7 @@ from ..forces import reaction_name
 from ..kinematics import position_angles_deg
 from ..model import russian_kind
 from ..numbers import fmt
+from ..paper import Page, Rect
 from ..project import (
     CAPTION,
     FORCE_TABLE_W,
@@ -44,8 +45,7 @@ from ..project import (
     sheet2_table_header,
 )
 from ..units import Scale, nice_ceil
-from .labels import LabelRequest, place_labels
-from .sheet import (
+from .items import (
     MAIN,
     THIN,
     Arrow,
@@ -53,19 +53,17 @@ from .sheet import (
     Group,
     Item,
     Line,
-    Page,
     Polyline,
-    Rect,
-    Sheet,
     Style,
     Text,
     arc_point,
     item_geometry,
-    table_items,
     text_at_centre,
     text_box,
     text_width,
 )
+from .labels import LabelRequest, place_labels
+from .sheet import Sheet
 from .sheet1 import (
     JOINT_R,
     WHITE_FILL,
@@ -82,7 +80,7 @@ from .sheet1 import (
     title_block,
     turning_arrow,
 )
-from .tables import split_table
+from .tables import split_table, table_items
 
 ARROW_MM = 16.0  #: length of a load's or reaction's arrow on a group (direction only), mm
 LEADERS = 30.0  #: a letter with no clear spot by its point is written up to this far, on a leader

@@ -31,10 +31,11 @@ import math
 from ..dynamics import DynamicsSettings, MachineUnit, machine_unit
 from ..errors import LayoutError
 from ..numbers import fmt, sheet_text
+from ..paper import Page, Rect
 from ..project import CAPTION, GAP, fit_columns
 from ..reports import T as TABLE_WORDS
 from ..reports import position_rows
-from .sheet import (
+from .items import (
     MAIN,
     THIN,
     Arrow,
@@ -42,20 +43,17 @@ from .sheet import (
     Hatch,
     Item,
     Line,
-    Page,
     Polyline,
-    Rect,
-    Sheet,
     Style,
     Text,
     item_geometry,
     iter_leaves,
-    table_items,
     text_box,
     text_width,
 )
+from .sheet import Sheet
 from .sheet1 import title_block
-from .tables import titled_table
+from .tables import table_items, titled_table
 
 WORDS = {
     "ru": {"sheet": "Динамический анализ", "flywheel": "Маховик", "rim": "обод",

@@ -34,7 +34,7 @@ def _text(x: float, y: float, s: str, h: float = 2.5, anchor: str = "middle") ->
 def _fitted(x: float, y: float, s: str, width: float, heights=(3.5, 2.5)) -> list[Text]:
     """``s`` centred at (x, y) in a cell ``width`` wide: the largest height that fits, else
     two lines (split at the space nearest the middle) at the smallest."""
-    from ..drawing.sheet import text_width
+    from ..drawing.items import text_width
 
     for h in heights:
         t = _text(x, y, s, h)

@@ -7,7 +7,7 @@ points up, the sheet's down, so a point (x, y) of the sheet is written at
 arcs and text rotations keep their values.
 
 Layers
-    one per layer of the sheet (:data:`graphplan.drawing.sheet.LAYERS`, same names: frame,
+    one per layer of the sheet (:data:`graphplan.drawing.items.LAYERS`, same names: frame,
     title, construction, position_plan, velocity_plan, acceleration_plan,
     force_plan, diagrams, dimensions, tables, text), each with a description. Every layer
     is colour 7 (black on paper, white on a dark screen) and continuous; the entities
@@ -47,7 +47,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from .. import fonts
-from ..drawing.sheet import (
+from ..drawing.items import (
     LAYERS,
     SLANT_DEG,
     Arc,
@@ -59,12 +59,12 @@ from ..drawing.sheet import (
     Line,
     Polyline,
     Pt,
-    Sheet,
     Style,
     Text,
     arrow_parts,
     hatch_segments,
 )
+from ..drawing.sheet import Sheet
 from ..files import write_atomic
 from ..numbers import decimal_comma
 from .extra import require

@@ -2,7 +2,7 @@
 lines of the steps before it.
 
 A panel's marks (:class:`graphplan.teaching.model.Mark`, mm with y up) become the
-sheets' own drawing items (:mod:`graphplan.drawing.sheet`: arrows with filled heads, thin
+sheets' own drawing items (:mod:`graphplan.drawing.items`: arrows with filled heads, thin
 construction lines, lettering sized by its capital height) on paper with **y down**,
 ``(x, y) → (x, −y)``, the one flip of the module; the letters of the points are placed
 once per panel with the sheets' label placer (:func:`graphplan.drawing.labels.place_labels`),
