@@ -285,6 +285,10 @@ ALL_VARIANTS = sorted(p.stem for p in VARIANTS.glob("*.toml"))
 VARIANT_SHEET_TODO = {
     "shaper_part": "acceleration plan of position a: the letter s3 set 13 mm from its "
                    "point, 3 mm below the end of nAO3, with no leader",
+    "loom_beater": "acceleration plan of position a: s5 read off its point since the "
+                   "lettering's font gained its glyphs (5063ba4)",
+    "opposed_compressor": "plan of positions (a variant written after the reader): "
+                          "positions 2 and 6 read at other crank angles",
 }
 
 

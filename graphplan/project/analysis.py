@@ -149,8 +149,12 @@ class Project:
         that plan turned)."""
         plan = self.stage(("velocity_plan", k, precision, kl.per_mm, kv.per_mm),
                           lambda: velocity_plan(self.mech, self.kin, k, kl, kv, Reader(precision)))
-        # the same construction under its own scale's name (the lever's Kv has its basis)
-        return plan if plan.scale == kv else replace(plan, scale=kv)
+        # the same construction under its own scale's name (the lever's Kv has its basis),
+        # kept too: a stage is one value, whoever asks first
+        if plan.scale == kv:
+            return plan
+        return self.stage(("velocity_plan as", k, precision, kl.per_mm, kv),
+                          lambda: replace(plan, scale=kv))
 
     @property
     def force_memo(self) -> dict:
