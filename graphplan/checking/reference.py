@@ -280,22 +280,28 @@ class Reference:
                 return sign * np.asarray(r.vector[k], float), r
         return None, None
 
-    def _component(self, r, vec, k, kin, normal: bool) -> float | None:
-        """The part of a reaction along (normal) or across (tangential) its dyad link."""
+    def _far_joint(self, r) -> tuple[str, str] | None:
+        """(the dyad link, its other joint) of a revolute reaction ``r`` (its Rτ and Rn
+        are taken across and along the line to it): a point the link shares with another
+        link — a mass centre may stand at a joint, a piston's at its pin C, so centres are
+        not left out. None for a pair of the frame and the crank, or a sliding pair."""
         link = next((ln for ln in (r.on, r.by) if ln != self.mech.frame_link and
                      ln != self.mech.crank.link), None)
         if link is None or r.pair != "R":
             return None
-        # the link's other joint: a point it shares with another link (a mass centre may
-        # stand at a joint — a piston's at its pin C — so centres are not left out)
         own = self.mech.links[link].centre if link in self.mech.links else None
         shared = {p for ln in (*self.mech.moving_links, self.mech.frame_link) if ln != link
                   for p in self.mech.points_of(ln)}
         others = [p for p in self.mech.points_of(link) if p != r.point and p in shared] or [
             p for p in self.mech.points_of(link) if p != r.point and p != own]
-        if not others:
+        return (link, others[0]) if others else None
+
+    def _component(self, r, vec, k, kin, normal: bool) -> float | None:
+        """The part of a reaction along (normal) or across (tangential) its dyad link."""
+        lf = self._far_joint(r)
+        if lf is None:
             return None
-        d = kin.pos.points[others[0]][k] - kin.pos.points[r.point][k]
+        d = kin.pos.points[lf[1]][k] - kin.pos.points[r.point][k]
         u = d / float(np.hypot(*d))
         along = float(np.dot(vec, u))
         return abs(along) if normal else abs(float(vec[0] * u[1] - vec[1] * u[0]))
@@ -450,21 +456,12 @@ class Reference:
         vec, r = self._reaction(fs, i, j, k)
         if vec is None or r.pair != "R":
             return None
-        link = next((ln for ln in (r.on, r.by) if ln != self.mech.frame_link and
-                     ln != self.mech.crank.link), None)
-        if link is None:
+        lf = self._far_joint(r)
+        if lf is None:
             return None
-        # the link's other joint: a point it shares with another link (a mass centre may
-        # stand at a joint — a piston's at its pin C — so centres are not left out)
-        own = self.mech.links[link].centre if link in self.mech.links else None
-        shared = {p for ln in (*self.mech.moving_links, self.mech.frame_link) if ln != link
-                  for p in self.mech.points_of(ln)}
-        others = [p for p in self.mech.points_of(link) if p != r.point and p in shared] or [
-            p for p in self.mech.points_of(link) if p != r.point and p != own]
-        if not others:
-            return None
+        link, far = lf
         P = self.kin.pos.points
-        rA, rB = np.asarray(P[r.point][k], float), np.asarray(P[others[0]][k], float)
+        rA, rB = np.asarray(P[r.point][k], float), np.asarray(P[far][k], float)
         d = rB - rA
         u = d / float(np.hypot(*d))
         t = vec - float(np.dot(vec, u)) * u
