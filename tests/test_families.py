@@ -674,8 +674,8 @@ def test_a_scheme_is_not_coarsened_for_what_does_not_shrink():
     кулиса's ω/ε scheme went from 0.015 to 0.15 m/mm, its links a 3 mm blob)."""
     from graphplan.drawing import Line
     from graphplan.drawing.items import Style
-    from graphplan.paper import Rect
     from graphplan.drawing.sheet1_schemes import MARGIN, _drawn_to_fit
+    from graphplan.paper import Rect
 
     box = Rect(0.0, 0.0, 100.0, 35.0)
     pts = np.array([[0.0, 0.0], [0.3, 0.47]])        # 0.47 m tall: fits 35 mm at 0.015

@@ -559,8 +559,8 @@ CASES = [
     ("load-not-table", P, [set_("loads[0]", 600000)], "loads[0]", "expected a table (got int)"),
     ("load-unknown-key", P, [set_("loads[0].maximum", 1)],
      "loads[0].maximum", "unknown key (expected one of: angle, bore, diagram, kind, link, max, "
-     "name, over, p_ambient, p_max, phase, point, pressure_unit, sense, stroke, strokes, travel, "
-     "travel_link, unit, value, working)"),
+     "name, over, p_ambient, p_max, phase, point, pressure_unit, rod, sense, stroke, strokes, "
+     "travel, travel_link, unit, value, working)"),
     ("load-missing-max", P, [drop("loads[0].max")], "loads[0].max", "missing required key"),
     ("load-missing-diagram", P, [drop("loads[0].diagram")],
      "loads[0].diagram", "missing required key: 'diagram'"),

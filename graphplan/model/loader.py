@@ -51,7 +51,7 @@ either alphabet: kgf/cm2 (кгс/см², the technical atmosphere at, ат, of t
 is 98 066.5 Pa; atm (атм), the physical atmosphere, 101 325 Pa."""
 LOAD_KEYS = {"kind", "link", "point", "max", "value", "diagram", "name", "sense", "over",
              "stroke", "strokes", "travel", "angle", "travel_link", "working", "phase",
-             "bore", "p_max", "p_ambient", "pressure_unit", "unit"}
+             "bore", "rod", "p_max", "p_ambient", "pressure_unit", "unit"}
 FORCE_UNITS = {"N": 1.0, "kN": 1e3, "MN": 1e6, "Н": 1.0, "кН": 1e3, "МН": 1e6}
 """Units of a force load's ``max`` or ``value``, in N (Russian spellings accepted)."""
 MOMENT_UNITS = {"N·m": 1.0, "N*m": 1.0, "Nm": 1.0, "kN·m": 1e3, "kN*m": 1e3, "kNm": 1e3,
@@ -1054,7 +1054,10 @@ def _travel_link(r: _Reader, lt: dict, path: str, ln: str, slider: bool, ctx: di
 
 
 def _gas_scale(r: _Reader, lt: dict, path: str, unit: float) -> tuple[float, float]:
-    """A gas force's scale p_max·πD²/4 and the ambient pressure's force p_ambient·πD²/4, N."""
+    """A gas force's scale p_max·A and the ambient pressure's force p_ambient·A, N, signed
+    along the piston's x (away from the head): A = πD²/4 on the head's side; on the rod's
+    side of a double-acting cylinder (``rod`` = d) A = π(D² − d²)/4 and both are negative,
+    the pressure pushing the piston toward the head."""
     if "unit" in lt:
         raise r.fail(f"{path}.unit", "a gas force is p·πD²/4: its unit is "
                      "pressure_unit (MPa, bar …), with the bore in the length unit")
@@ -1063,7 +1066,13 @@ def _gas_scale(r: _Reader, lt: dict, path: str, unit: float) -> tuple[float, flo
             raise r.fail(f"{path}.{k}", "a gas force is p·πD²/4: give the pressures "
                          "(diagram/strokes, p_max) and the bore, not the force")
     D = r.length(lt["bore"], f"{path}.bore", unit)
-    area = math.pi * D * D / 4.0
+    area, side = math.pi * D * D / 4.0, 1.0
+    if "rod" in lt:  # the rod's side of a double-acting cylinder: the annulus, toward the head
+        d = r.length(lt["rod"], f"{path}.rod", unit)
+        if d >= D:
+            raise r.fail(f"{path}.rod", f"the piston rod's diameter must be less than the "
+                         f"bore ({d * 1000:g} mm ≥ {D * 1000:g} mm)")
+        area, side = math.pi * (D * D - d * d) / 4.0, -1.0
     pu = r.string(lt.get("pressure_unit", "MPa"), f"{path}.pressure_unit",
                   tuple(PRESSURE_UNITS))
     pmax = r.number(lt.get("p_max", 1.0), f"{path}.p_max", positive=True, hi=1e9)
@@ -1072,14 +1081,14 @@ def _gas_scale(r: _Reader, lt: dict, path: str, unit: float) -> tuple[float, flo
     if maximum > MAX_LOAD:
         raise r.fail(f"{path}.p_max", f"p_max·πD²/4 = {maximum:.3g} N is beyond "
                      f"{MAX_LOAD:g} N (check pressure_unit and bore)")
-    return maximum, pamb * PRESSURE_UNITS[pu] * area
+    return side * maximum, side * pamb * PRESSURE_UNITS[pu] * area
 
 
 def _value_scale(r: _Reader, lt: dict, path: str, kind: str, sense: str
                  ) -> tuple[float, float]:
     """A load's scale in SI (``max`` in its ``unit``; 1 for a constant), and the constant
     ``value`` in SI (0 for a diagram)."""
-    for k in ("p_max", "p_ambient", "pressure_unit"):
+    for k in ("p_max", "p_ambient", "pressure_unit", "rod"):
         if k in lt:
             raise r.fail(f"{path}.{k}", "goes with 'bore' (a gas force on a piston)")
     units = FORCE_UNITS if kind == "force" else MOMENT_UNITS

@@ -232,6 +232,8 @@ class Resistance:
         Point of application of a force.
     maximum : float
         Scale of the diagram's values: the load is ``value·maximum − offset`` (N or N·m).
+        Negative for the rod's side of a double-acting cylinder (``rod``), whose pressure
+        pushes the piston toward the head, against its x.
     diagram : tuple of (x, value) pairs
         The diagram of the first loaded stroke (kept for the readers of one diagram).
     name : str | None

@@ -121,6 +121,10 @@ KEYS: dict[str, tuple[str, str]] = {
               "crank angle before which the stroke list does not start, degrees"),
     "bore": ("диаметр цилиндра D (length_unit): сила газов (p − p_атм)·πD²/4",
              "cylinder bore D: a gas force (p − p_ambient)·πD²/4"),
+    "rod": ("диаметр штока d: полость со стороны штока цилиндра двойного действия, "
+            "сила (p − p_атм)·π(D² − d²)/4 к крышке",
+            "the piston rod's diameter d: the rod's side of a double-acting cylinder, a force "
+            "(p − p_ambient)·π(D² − d²)/4 toward the head"),
     "p_max": ("значения диаграммы — доли p_max (в pressure_unit)",
               "the diagram's values are fractions of p_max"),
     "p_ambient": ("атмосферное давление, вычитается из давлений (pressure_unit)",
