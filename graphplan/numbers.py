@@ -18,6 +18,8 @@ format                    for                                 e.g.
                           alone only
 :func:`fixed`             cells and lengths with a fixed      ``12.30``, never ``-0.00``
                           number of decimals
+:func:`signed`            a difference in %: a sign always,  ``+1.67``, ``0.00``, never
+                          none on a zero                      ``-0.00``
 :func:`figures`           lessons: N significant figures,     ``0.4600``
                           trailing zeros kept
 :func:`cell`              the summary table of sheet 1: 3–4   ``1.234e+05`` … ``0.0123``
@@ -109,6 +111,13 @@ def fixed(x: SupportsFloat, decimals: int = 2) -> str:
     """``decimals`` decimals, and no negative zero (``-0.00`` → ``0.00``)."""
     s = f"{float(x):.{decimals}f}"
     return s[1:] if re.fullmatch(r"-0\.?0*", s) else s
+
+
+def signed(x: SupportsFloat, decimals: int = 2) -> str:
+    """``decimals`` decimals with the sign written (``+1.67``, ``-0.40``), except on a value
+    that rounds to zero (``0.00``: a difference of ``-0.001 %`` is no difference)."""
+    s = fixed(x, decimals)
+    return s if s.startswith("-") or not s.strip("0.") else "+" + s
 
 
 def figures(x: float, sig: int = 4) -> str:

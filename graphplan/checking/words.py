@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..numbers import report as num  # the checker's reports' numbers
+from ..numbers import signed
 from ..units import UNITS_RU, unit_text
 
 
@@ -16,7 +17,7 @@ def pct(rel: float | None, lang: str = "en") -> str:
     """A relative difference as a signed percentage: ``+9.4 %``."""
     if rel is None:
         return "—"
-    s = f"{rel * 100:+.1f} %"
+    s = f"{signed(rel * 100, 1)} %"
     return s.replace(".", ",") if lang == "ru" else s
 
 

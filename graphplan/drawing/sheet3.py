@@ -30,7 +30,7 @@ import math
 
 from ..dynamics import DynamicsSettings, MachineUnit, machine_unit
 from ..errors import LayoutError
-from ..numbers import fmt, sheet_text
+from ..numbers import fmt, sheet_text, signed
 from ..paper import Page, Rect
 from ..project import CAPTION, GAP, fit_columns
 from ..reports import T as TABLE_WORDS
@@ -88,7 +88,7 @@ def results_lines(u: MachineUnit, lang: str) -> list[str]:
         f"η = {u.efficiency:g}",
         f"Mд = {fmt(fw.M_d, 5)} {'Н·м' if ru else 'N·m'} "
         f"({'графически' if ru else 'graphical'} {fmt(fw.work.M_d_graph, 5)}, "
-        f"{(fw.work.M_d_graph / fw.M_d - 1) * 100:+.2f} %)",
+        f"{signed((fw.work.M_d_graph / fw.M_d - 1) * 100)} %)",
         f"Pс = Mд·ω1 = {fmt(fw.P_c / 1000, 4)} {kw};  "
         + (f"Pдв.тр = Pс/η = {fmt(u.power_W / 1000, 4)} {kw}" if ru
            else f"Preq = Pс/η = {fmt(u.power_W / 1000, 4)} {kw}"),
@@ -124,8 +124,8 @@ def _flywheel_lines(u: MachineUnit, what: str, lang: str) -> list[str]:
                                                     if u.motor is not None else [])
     return [f"Jм = {what} = {' − '.join(terms)} = {fmt(fw.I_m, 5)} {kg_m2} "
             f"({'Мерцалов' if ru else 'Merkalov'} {fmt(fw.I_m_approx, 5)}, "
-            f"{fw.difference_pct:+.2f} %)",
-            f"δ {sim} = {u.simulation.delta_actual:.4f} ({u.delta_error_pct:+.2f} %)"]
+            f"{signed(fw.difference_pct)} %)",
+            f"δ {sim} = {u.simulation.delta_actual:.4f} ({signed(u.delta_error_pct)} %)"]
 
 
 def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
@@ -137,7 +137,7 @@ def _engine_lines(u: MachineUnit, lang: str) -> list[str]:
         f"ω1 = {fmt(fw.omega, 4)} {'рад/с' if ru else 'rad/s'},  δ = {fw.delta:g}",
         f"Mс = −Aд({cyc})/{'4π' if u.model.period > 7 else '2π'} = {fmt(fw.M_d, 5)} "
         f"{'Н·м' if ru else 'N·m'} ({'графически' if ru else 'graphical'} "
-        f"{fmt(fw.work.M_d_graph, 5)}, {(fw.work.M_d_graph / fw.M_d - 1) * 100:+.2f} %)",
+        f"{fmt(fw.work.M_d_graph, 5)}, {signed((fw.work.M_d_graph / fw.M_d - 1) * 100)} %)",
         f"P = |Mс|·ω1·η = {fmt(u.power_W / 1000, 4)} {'кВт' if ru else 'kW'}",
         f"ΔTmax − ΔTmin = {fmt(fw.dT_max, 5)} {'Дж' if ru else 'J'}",
         f"JI = kl·KT/(ω1²·δ) = {fw.segment_mm:.1f}·{fmt(fw.KT, 4)}/({fmt(fw.omega, 4)}²·"

@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from ..kinematics import output_coordinate, slide_key
-from ..numbers import cell
+from ..numbers import cell, signed
 from ..plans import KinematicDiagrams
 from ..project import Analysis
 
@@ -81,7 +81,7 @@ def _delta(diag: float, plan: float, big: float) -> str:
     pct = (diag - plan) / plan * 100.0
     if abs(pct) < 0.05:
         return "0.0"
-    return f"{pct:+.1f}" if abs(pct) < 1000 else f"{pct:+.0f}"
+    return signed(pct, 1) if abs(pct) < 1000 else signed(pct, 0)
 
 
 def comparison_rows(analysis: Analysis, d: KinematicDiagrams, lang: str = "en"

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..dynamics import MachineUnit
 from ..kinematics import cycle_angle_deg
-from ..numbers import fmt
+from ..numbers import fmt, signed
 
 T: dict[str, dict[str, Any]] = {
     "ru": {"title": "Динамический анализ машинного агрегата", "data": "Исходные данные",
@@ -147,9 +147,9 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
           f"{fmt(fw.I_rotor, 4)} = {fmt(fw.I_m_signed if not fw.needed else fw.I_m, 6)} "
           f"{kgm2}" + ("" if fw.needed else f" ≤ 0: {t['no_fw']}"),
           (f"- {'Мерцалов' if ru else 'Merkalov'}: {fmt(fw.I_m_approx, 6)} {kgm2} "
-           f"({fw.difference_pct:+.3f} %); "
+           f"({signed(fw.difference_pct, 3)} %); "
            f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: "
-           f"{fmt(fw.I_m_graph, 6)} {kgm2} ({graph_pct:+.2f} %)") if fw.needed else
+           f"{fmt(fw.I_m_graph, 6)} {kgm2} ({signed(graph_pct)} %)") if fw.needed else
           (f"- {'Мерцалов' if ru else 'Merkalov'}: Jм = {fmt(fw.I_m_approx, 6)} {kgm2}; "
            f"{'по графическому ΔT' if ru else 'from the graphical ΔT'}: Jм = "
            f"{fmt(fw.I_m_graph, 6)} {kgm2}"),
@@ -186,7 +186,7 @@ def dynamics_markdown(u: MachineUnit, lang: str = "ru") -> str:
     L += ["", f"## {t['check']}", "",
           f"- ω(φ) = √(2(T0 + ΔT)/(Jпр + Jрот·u² + Jм)): ωmax = {fmt(s.omega_max, 5)}, "
           f"ωmin = {fmt(s.omega_min, 5)}, δ = (ωmax − ωmin)/ωср = {s.delta_actual:.5f} "
-          + (f"({u.delta_error_pct:+.3f} % {'от цели' if ru else 'off the target'})"
+          + (f"({signed(u.delta_error_pct, 3)} % {'от цели' if ru else 'off the target'})"
              if fw.needed else f"≤ δ = {fw.delta:g} ({t['no_fw_sim']})"),
           (f"- RK4 {'с характеристикой двигателя' if ru else 'with the motor characteristic'} "
            f"(s = {mo.slip:.3f}): δ = {float(s.cycle_delta[-1]):.5f}" if mo is not None else

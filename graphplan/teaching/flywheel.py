@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from ..dynamics import machine_unit
+from ..numbers import signed
 from .captions import WORDS, mm, num, plain
 from .model import Lesson, LessonStep, Mark, Panel, Result
 
@@ -218,9 +219,9 @@ def flywheel_lesson(analysis) -> Lesson:
     jm = f"Jм = {what} = {num(fw.J_I, 6)} − {num(fw.I_const, 6)}{minus} = "
     if fw.needed:
         notes = [_two(f"{jm}{num(fw.I_m, 6)} kg·m²; by Merkalov {num(fw.I_m_approx, 6)} "
-                      f"kg·m² ({fw.difference_pct:+.2f} %)",
+                      f"kg·m² ({signed(fw.difference_pct)} %)",
                       f"{jm}{num(fw.I_m, 6)} кг·м²; по Мерцалову {num(fw.I_m_approx, 6)} "
-                      f"кг·м² ({fw.difference_pct:+.2f} %)")]
+                      f"кг·м² ({signed(fw.difference_pct)} %)")]
     else:  # the crank (and the rotor) already have JI: Jм = 0
         notes = [_two(f"{jm}{num(fw.I_m_signed, 6)} kg·m² ≤ 0: no flywheel is needed, Jм = 0",
                       f"{jm}{num(fw.I_m_signed, 6)} кг·м² ≤ 0: маховик не нужен, Jм = 0")]
