@@ -48,8 +48,8 @@ class KinematicsCode:
         cr = mech.crank
         self.theta[mech.frame_link] = g.K(0.0)
         self.axis[mech.frame_link] = g.K(1.0)
-        self.theta[cr.link] = Value("phi")
-        e1 = g.fn("exp", g.mul(g.K(1j), Value("phi")))
+        self.theta[cr.link] = Value("phi", kind="r")
+        e1 = g.fn("exp", g.mul(g.K(1j), Value("phi", kind="r")), kind="c", bound=1.0)
         self.axis[cr.link] = e1
         self.P[cr.pin] = g.add(self.P[cr.pivot], g.mul(g.K(cr.length), e1))
         self._extra_points()
@@ -100,9 +100,9 @@ class KinematicsCode:
             dist = self.dist(gd.through, gd.toward)
             u = g.mul(g.sub(self.P[gd.toward], base), g.K(1.0 / dist))
         elif gd.link == self.mech.frame_link:
-            u = g.K(complex(math.cos(gd.angle), math.sin(gd.angle)))
+            u = g.K(g.unit(gd.angle))
         else:
-            u = g.mul(self.axis[gd.link], g.K(complex(math.cos(gd.angle), math.sin(gd.angle))))
+            u = g.mul(self.axis[gd.link], g.K(g.unit(gd.angle)))
         return base, u
 
     def _place_RRR(self, d) -> None:
@@ -115,16 +115,20 @@ class KinematicsCode:
         dv = g.sub(C, A)
         dist = g.abs(dv)
         tiny = 1e-12 * (l1 + l2)
-        g.check(f"{g.ref(dist)}.min() > {tiny!r}")
+        g.check_min(dist, tiny, absolute=False)
         inv = g.div(g.K(1.0), dist)
         aa = g.mul(g.add(g.mul(dist, dist), g.K(l1 * l1 - l2 * l2)), g.mul(inv, g.K(0.5)))
         h2 = g.sub(g.K(l1 * l1), g.mul(aa, aa))
-        g.check(f"{g.ref(h2)}.min() >= 0")
+        g.refuse(f"{g.ref(h2)} < 0")
         e = g.mul(dv, inv)
+        g.within(e, 2.0)  # (bounds with a margin of 2 for round-off: |e| = 1, |AB| = l1)
         B = g.add(A, g.mul(e, g.add(aa, g.mul(g.K(1j * s), g.sqrt(h2)))))
+        g.within(B, A.bound + 2 * l1)
         self.P[b] = B
         self.axis[i] = g.mul(g.sub(B, A), g.K(1.0 / l1))
         self.axis[j] = g.mul(g.sub(B, C), g.K(1.0 / l2))
+        g.within(self.axis[i], 2.0)
+        g.within(self.axis[j], 2.0)
 
     def _place_RRP(self, d) -> None:
         g = self.g
@@ -135,13 +139,13 @@ class KinematicsCode:
         G, u = self._guide(d.guides[0])
         cw = g.mul(g.conj(u), g.sub(self.P[a], G))
         h = g.im(cw)
-        g.check(f"{g.ref(g.abs(h))}.max() <= {l1!r}")
+        g.refuse(f"{g.ref(g.abs(h))} > {g.lit(l1)}")
         root = g.sqrt(g.sub(g.K(l1 * l1), g.mul(h, h)))
         along = g.add(g.re(cw), g.mul(g.K(s), root))
         B = g.add(G, g.mul(u, along))
         self.P[b] = B
         self.along[slide_key(j, d.guides[0].link)] = along  # (B − G)·u
-        self.axis[i] = g.mul(g.sub(B, self.P[a]), g.K(1.0 / l1))
+        self.axis[i] = g.within(g.mul(g.sub(B, self.P[a]), g.K(1.0 / l1)), 2.0)
         self.axis[j] = u
         self.guides[slide_key(j, d.guides[0].link)] = (G, u)
 
@@ -154,16 +158,17 @@ class KinematicsCode:
         dv = g.sub(self.P[a], self.P[c])
         dist2 = g.add(g.mul(g.re(dv), g.re(dv)), g.mul(g.im(dv), g.im(dv)))
         tol = 1e-9 * max(self.mech.crank.length, abs(e))
-        g.check(f"{g.ref(dist2)}.min() > {tol * tol + e * e!r}")
+        g.check_min(dist2, tol * tol + e * e, absolute=False)
         if e == 0:
             dist = g.sqrt(dist2)
+            g.set_low(dist, math.sqrt(g.low(dist2)))
             u = g.mul(g.div(dv, dist), g.K(s))
             self.dyad[d.name] = {"r_abs": dist}
         else:
             along = g.mul(g.K(s), g.sqrt(g.sub(dist2, g.K(e * e))))
             u = g.div(g.mul(dv, g.add(along, g.K(-1j * e))), dist2)
             self.dyad[d.name] = {"r_abs": g.sqrt(dist2)}
-        self.axis[i] = self.axis[j] = u
+        self.axis[i] = self.axis[j] = g.within(u, 2.0)  # a unit vector
         self.guides[slide_key(i, j)] = (g.add(self.P[c], g.mul(u, g.K(1j * e))), u)
 
     def _place_PRP(self, d) -> None:
@@ -173,8 +178,10 @@ class KinematicsCode:
         G1, u1 = self._guide(d.guides[0])
         G2, u2 = self._guide(d.guides[1])
         den = g.cross(u1, u2)
-        g.check(f"{g.ref(g.abs(den))}.min() > 1e-12" if den.const is None
-                else repr(abs(den.const) > 1e-12))
+        if den.const is None:
+            g.check_min(den, 1e-12)
+        else:
+            g.check(repr(abs(den.const) > 1e-12))
         t = g.div(g.cross(g.sub(G2, G1), u2), den)
         self.P[b] = g.add(G1, g.mul(u1, t))
         self.axis[i], self.axis[j] = u1, u2
@@ -186,7 +193,7 @@ class KinematicsCode:
         a, dn = d.joints
         i, j = d.links
         G, u = self._guide(d.guides[0])
-        w = g.mul(u, g.K(complex(math.cos(d.slot_angle), math.sin(d.slot_angle))))
+        w = g.mul(u, g.K(g.unit(d.slot_angle)))
         t = g.div(g.cross(w, g.sub(self.P[a], G)), g.cross(w, u))
         D = g.add(G, g.mul(u, t))
         self.P[dn] = D
@@ -235,9 +242,10 @@ class KinematicsCode:
         det = g.cross(c1, c2)
         scale = g.mul(n1, n2)
         if scale.const is not None:
-            g.check(f"{g.ref(g.abs(det))}.min() > {1e-9 * scale.const!r}")
+            g.check_min(det, 1e-9 * scale.const)
         else:
-            g.check(f"({g.ref(g.abs(det))} > {g.ref(scale)} * 1e-9).all()")
+            g.refuse(f"{g.ref(g.abs(det))} <= {g.ref(scale)} * {g.lit(1e-9)}")
+            g.set_low(det, 1e-9 * g.low(n1) * g.low(n2))
         info = {"c1": c1, "c2": c2, "cc1": g.conj(c1), "inv": g.div(g.K(1.0), det)}
         stored = self.dyad.setdefault(d.name, {})
         stored.update(info)

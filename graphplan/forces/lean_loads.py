@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ..kinematics import Cycle
-from .lean_code import NotCompiled, Value
+from .lean_code import NotCompiled, Value, count_nonzero, interp_complex
 from .lean_kinematics import KinematicsCode
 from .loads import JUMP_TOL, diagram_value, resistance_names
 
@@ -16,21 +16,30 @@ from .loads import JUMP_TOL, diagram_value, resistance_names
 def interp_diagram(xs, ys, nodes, d, signed: bool, clip: bool, lo: float, hi: float):
     """The diagram ``d`` as ``np.interp`` (see LoadsCode._diagram); x is clipped to [lo, hi]
     only where the general function is called (np.interp holds its end values beyond the
-    ends, and x leaves [0, 1] by round-off only)."""
+    ends, and x leaves [0, 1] by round-off only).
+
+    One complex ``np.interp`` gives both the value (real part) and whether x is within
+    2·:data:`JUMP_TOL` of a node (imaginary part: a step 1 near each node, 0 elsewhere,
+    on a grid that merges the diagram's abscissae with the steps' corners)."""
     tol = 2 * JUMP_TOL
     # zero beyond an end inside [lo, hi]; an end at or beyond lo or hi holds its value
-    left = 0.0 if xs[0] > lo else None
-    right = 0.0 if xs[-1] < hi else None
-    # a step function 1 within 2·tol of a node, 0 elsewhere: one interpolation finds
-    # whether any x is near a node
+    left = 0.0 if xs[0] > lo else float(ys[0])
+    right = 0.0 if xs[-1] < hi else float(ys[-1])
     gx = np.array([v for n in nodes for v in (n - 2 * tol, n - tol, n + tol, n + 2 * tol)])
     gy = np.array([v for _ in nodes for v in (0.0, 1.0, 1.0, 0.0)])
+    grid = np.unique(np.concatenate((xs, gx)))  # xs strictly increasing (no jump)
+    table = np.interp(grid, xs, ys, left, right) + 1j * (
+        np.interp(grid, gx, gy, 0.0, 0.0) if gx.size else 0.0)
+    # at the diagram's own abscissae the value is its ordinate, exactly
+    table.real[np.searchsorted(grid, xs)] = ys
+    lr = (complex(left), complex(right))
+    maximum = np.maximum
 
     def value(x):
-        if gx.size and np.interp(x, gx, gy).any():
+        z = interp_complex(x, grid, table, *lr)
+        if count_nonzero(z.imag):
             return diagram_value(d, np.clip(x, lo, hi), signed=signed)
-        v = np.interp(x, xs, ys, left, right)
-        return np.maximum(v, 0.0) if clip else v
+        return maximum(z.real, 0.0) if clip else z.real
 
     return value
 
@@ -58,7 +67,7 @@ class LoadsCode:
             if inertia and props.inertia > 0:
                 eps = st.E[ln]
                 if eps.const is None:  # ε of round-off at a dead centre: no couple
-                    keep = g.tmp(f"{g.ref(g.abs(eps))} > {1e-12 * w1sq!r}")
+                    keep = g.tmp(f"{g.ref(g.abs(eps))} > {g.lit(1e-12 * w1sq)}", "b", 1.0)
                     self.moments[ln].append((f"Mи{ln}",
                                              g.mul(g.mul(eps, keep), g.K(-props.inertia))))
                 elif eps.const != 0:
@@ -86,19 +95,19 @@ class LoadsCode:
                 u = st.guides[key][1] if key in st.guides else None
                 if res.sense == "diagram":
                     if res.angle is not None:
-                        e = g.K(complex(math.cos(res.angle), math.sin(res.angle)))
+                        e = g.K(g.unit(res.angle))
                     else:
                         assert u is not None
                         e = g.mul(u, g.K(w if own else 1.0))
                     vec = g.mul(e, size)
                 elif u is not None:
                     motion = (g.mul(g.K(w), dirn()) if own
-                              else g.fn("np.sign", st.sv(key)))
+                              else g.fn("np.sign", st.sv(key), bound=1.0))
                     vec = g.mul(u, g.mul(g.K(s), g.mul(motion, size)))
                 else:
                     v = self._point_velocity(res.link, at)
                     sp = g.abs(v)
-                    safe = g.tmp(f"np.where({g.ref(sp)} > 0, {g.ref(sp)}, 1.0)")
+                    safe = g.tmp(f"np.where({g.ref(sp)} > 0, {g.ref(sp)}, 1.0)", "r")
                     vec = g.mul(v, g.div(g.mul(g.K(s), size), safe))
                 self.forces[res.link].append((name, vec, at))
             else:
@@ -106,7 +115,7 @@ class LoadsCode:
                     mom = size
                 else:
                     motion = (g.mul(g.K(w), dirn()) if own
-                              else g.fn("np.sign", st.W[res.link]))
+                              else g.fn("np.sign", st.W[res.link], bound=1.0))
                     mom = g.mul(g.K(s), g.mul(motion, size))
                 self.moments[res.link].append((name, mom))
 
@@ -115,10 +124,11 @@ class LoadsCode:
         direction of motion (a function generating it when asked for)."""
         g, mech = self.st.g, self.st.mech
         period = cycle.period
-        tau = g.mul(g.sub(Value("phi"), g.K(cycle.origin)), g.K(float(mech.crank.sense)))
-        tau = g.fn("np.mod", tau, g.K(period))
+        tau = g.mul(g.sub(Value("phi", kind="r"), g.K(cycle.origin)),
+                    g.K(float(mech.crank.sense)))
+        tau = g.fn("np.mod", tau, g.K(period), bound=period)
         if res.over == "crank":
-            x = g.fn("np.mod", g.sub(tau, g.K(res.phase)), g.K(period))
+            x = g.fn("np.mod", g.sub(tau, g.K(res.phase)), g.K(period), bound=period)
             val = self._diagram(res.strokes[0], x, True, (0.0, period), n_res, 0, clip_x=False)
             return g.sub(g.mul(val, g.K(res.maximum)), g.K(res.offset)), None
         lt = cycle.travels[(res.travel_link or mech.output.link,
@@ -131,38 +141,44 @@ class LoadsCode:
         # u: the crank's travel from the load's first start dead centre (one reduction
         # modulo the period; loads.stroke_index takes τ modulo it first: the two differ by
         # round-off, 1e-15 rad, well inside DEAD_CENTRE_TOL that decides at a dead centre)
-        u = g.fn("np.mod", g.add(g.mul(Value("phi"), g.K(float(mech.crank.sense))),
+        u = g.fn("np.mod", g.add(g.mul(Value("phi", kind="r"), g.K(float(mech.crank.sense))),
                                  g.K(-cycle.origin * mech.crank.sense + DEAD_CENTRE_TOL
-                                     - _first_start(res, mech, cycle, lt))), g.K(period))
+                                     - _first_start(res, mech, cycle, lt))), g.K(period),
+                 bound=period)
         if period == two_pi and loaded == [0]:
             # one turn, one loaded stroke: stroke_index's k is 0 exactly where u < lt.turn
             # (its other turn starts where u/2π rounds to 1, after lt.turn)
             k = None
-            sel0 = g.tmp(f"{g.ref(u)} < {lt.turn!r}")
+            sel0 = g.tmp(f"{g.ref(u)} < {g.lit(lt.turn)}", "b", 1.0)
         else:
-            turn = g.fn("np.floor", g.tmp(f"{g.ref(u)} / {two_pi!r}"))
+            turn = g.fn("np.floor", g.tmp(f"{g.ref(u)} / {g.lit(two_pi)}", "r", u.bound / two_pi),
+                        bound=u.bound / two_pi + 1)
             r = g.sub(u, g.mul(turn, g.K(two_pi)))
-            k = g.add(g.mul(turn, g.K(2.0)), g.tmp(f"{g.ref(r)} >= {lt.turn!r}"))
+            k = g.add(g.mul(turn, g.K(2.0)), g.tmp(f"{g.ref(r)} >= {g.lit(lt.turn)}", "b", 1.0))
         if lt.kind == "rocker":
             mid = 0.5 * (lt.q_start + lt.q_end)
-            q = g.add(q, g.mul(g.fn("np.round", g.mul(g.sub(g.K(mid), q), g.K(1 / two_pi))),
-                               g.K(two_pi)))
+            q = g.add(q, g.mul(g.fn("np.round", g.mul(g.sub(g.K(mid), q), g.K(1 / two_pi)),
+                                    bound=math.inf), g.K(two_pi)))
         xr = g.mul(g.sub(q, g.K(lt.q_start)), g.K(1.0 / (lt.q_end - lt.q_start)))
         x = xr  # in [0, 1] but for round-off: clipped where the general function reads it
         signed = res.sense == "diagram"
         size = g.K(0.0)
         for m in loaded:
             d = res.stroke_diagrams(round(period / math.pi))[m]
-            sel = sel0 if k is None else g.tmp(f"{g.ref(k)} == {float(m)!r}")
+            sel = sel0 if k is None else g.tmp(f"{g.ref(k)} == {g.lit(float(m))}", "b", 1.0)
             val = self._diagram(d, x, signed, (0.0, 1.0), n_res, m)
-            size = g.add(size, g.mul(g.sub(g.mul(val, g.K(res.maximum)), g.K(res.offset)), sel))
+            if res.offset == 0:  # the constant last: it folds into the force's direction
+                size = g.add(size, g.mul(g.mul(val, sel), g.K(res.maximum)))
+            else:
+                size = g.add(size, g.mul(g.sub(g.mul(val, g.K(res.maximum)), g.K(res.offset)),
+                                         sel))
 
         def dirn():
             """±1 on the strokes 0 → 1 and 1 → 0 (where the size is not 0)."""
             if len(loaded) == 1:
                 return g.K(1.0 if loaded[0] % 2 == 0 else -1.0)
             assert k is not None
-            return g.sub(g.K(1.0), g.mul(g.fn("np.mod", k, g.K(2.0)), g.K(2.0)))
+            return g.sub(g.K(1.0), g.mul(g.fn("np.mod", k, g.K(2.0), bound=2.0), g.K(2.0)))
         return size, dirn
 
     def _diagram(self, d, x: Value, signed: bool, span, n_res: int, m: int,
@@ -174,18 +190,20 @@ class LoadsCode:
         g = self.st.g
         xs = np.array([p[0] for p in d], float)
         ys = np.array([p[1] for p in d], float)
+        top = float(np.max(np.abs(ys)))  # |value| ≤ the largest ordinate
         name = f"_{n_res}_{m}"
         if not np.all(np.diff(xs) > 10 * JUMP_TOL):
             fn = g.bind(f"diagram{name}", lambda x, d=d, s=signed: diagram_value(d, x, signed=s))
             if clip_x:
-                x = g.fn("np.clip", x, g.K(float(span[0])), g.K(float(span[1])))
-            return g.tmp(f"{fn}({g.ref(x)})")
+                x = g.fn("np.clip", x, g.K(float(span[0])), g.K(float(span[1])),
+                         bound=max(abs(span[0]), abs(span[1])))
+            return g.tmp(f"{fn}({g.ref(x)})", "r", top)
         nodes = [float(v) for v in xs[1:-1]]
         nodes += [float(v) for v in (xs[0], xs[-1]) if span[0] < v < span[1]]
         clip = not signed and ys.min() < 0
         fn = g.bind(f"diagram{name}",
                     interp_diagram(xs, ys, np.array(sorted(nodes)), d, signed, clip, *span))
-        return g.tmp(f"{fn}({g.ref(x)})")
+        return g.tmp(f"{fn}({g.ref(x)})", "r", top)
 
     def _coordinate(self, link: str) -> Value:
         """The travel link's coordinate (:func:`~graphplan.kinematics.link_coordinate`)."""
@@ -202,7 +220,7 @@ class LoadsCode:
                     return g.dot(u, g.sub(st.P[point], G))
             break
         theta = st.theta_of(link)
-        return g.fn("np.unwrap", theta)
+        return g.fn("np.unwrap", theta)  # (no bound: it grows with the positions)
 
     def _point_velocity(self, link: str, at: Value) -> Value:
         st, g = self.st, self.st.g
@@ -254,9 +272,9 @@ class LoadsCode:
             # where a size is 0 its load is 0: keeping the loads at or above the limit is
             # the general rule's drop of those below it and above 0
             for (kind, key, _), sz in zip(rows, sizes, strict=True):
-                self._keep(kind, key, g.tmp(f"{g.ref(sz)} >= {g.ref(limit)}"))
+                self._keep(kind, key, g.tmp(f"{g.ref(sz)} >= {g.ref(limit)}", "b", 1.0))
             for kind, key, size in consts:
-                self._keep(kind, key, g.tmp(f"{g.ref(limit)} <= {size!r}"))
+                self._keep(kind, key, g.tmp(f"{g.ref(limit)} <= {g.lit(size)}", "b", 1.0))
 
     def _keep(self, kind: str, key: tuple[str, int], keep: Value) -> None:
         """A force (``kind`` "f") or couple kept where ``keep`` (0 elsewhere)."""
