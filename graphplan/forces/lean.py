@@ -25,10 +25,18 @@ generator: :mod:`~graphplan.forces.lean_code`; the kinematics, loads and groups:
   path), and each array deleted after its last use;
 * every check of the general path is kept — assembly, lock-up (|sin| > 1e-9), the force
   system's conditioning (bounded by ``‖A‖_F⁶/|det A|``, with a margin of 10⁴ for the
-  other moment centre and scale the lean system uses) and no NaN or infinity in any
-  output — each as one reduction; where one fails, the general path is run, which
-  raises the error naming the dyad and the position (or, where the lean bound was only
-  cautious, gives the result).
+  other moment centre and scale the lean system uses) — each as one ``count_nonzero``
+  of a mask; where one fails, the general path is run, which raises the error naming
+  the dyad and the position (or, where the lean bound was only cautious, gives the
+  result);
+* no NaN or infinity in any output, proven at generation where it can be: φ is checked
+  finite first, and each value carries a bound ``|x| ≤ B`` (from the checks and the
+  geometry, with round-off), so an output with a finite bound needs no check at run
+  time; the others (a load along a point's velocity divides by its speed) are checked
+  with ``isfinite``;
+* at a course project's 36 positions numpy's fixed cost per call is the time: constants
+  are held in the dtype of the array they meet (a mixed pair costs twice), a product with
+  a constant is one call, and numpy's C functions are called without their wrappers.
 
 The result, :class:`CycleSolution`, holds complex numbers ``x + iy`` (a frame point or a
 constant as a Python complex): every point's position, velocity and acceleration, every
