@@ -51,3 +51,29 @@ def test_every_kink_of_a_travel_diagram_is_a_break_on_its_stroke(case, solved):
                     assert np.min(np.abs(x - s1[0])) < 1e-9, (case, s1)
                     found += 1
     assert found > 0
+
+
+@pytest.mark.parametrize("case", ["examples/engine.toml", "examples/press.toml",
+                                  "tests/data/variants/v_twin_engine.toml"])
+def test_a_memo_bisects_each_node_once_and_changes_no_break(case, solved, monkeypatch):
+    # the flywheel's reduction asks for the breaks twice (with the strokes' ends and every
+    # kink, then without): with one memo the second call bisects nothing, and every break is
+    # the same float as without the memo (the bisection stops only where [lo, hi] no longer
+    # changes, so it ends where 80 steps would)
+    import graphplan.forces.loads as loads_module
+
+    project = solved(str(ROOT / case))
+    mech, cycle = project.mech, project.cycle
+    alone = (load_breaks(mech, cycle, ends=True), load_breaks(mech, cycle, every_kink=False))
+    calls = []
+    real = loads_module.solve_positions
+    monkeypatch.setattr(loads_module, "solve_positions",
+                        lambda *a, **k: calls.append(1) or real(*a, **k))
+    memo: dict = {}
+    first = load_breaks(mech, cycle, ends=True, memo=memo)
+    n_first = len(calls)
+    second = load_breaks(mech, cycle, every_kink=False, memo=memo)
+    assert (first, second) == alone
+    assert n_first > 0 and len(calls) == n_first  # the second call bisected nothing
+    # each travel link's nodes stopped at the floating-point limit, not after 80 steps
+    assert n_first < 80 * len(memo), (n_first, len(memo))

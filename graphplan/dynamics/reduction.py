@@ -277,7 +277,8 @@ def reduced_moment(analysis: Solved, grid: int | None = None, *,
     M = np.append(M, M[0])
     pos_tau = (sense * (analysis.kin.phi - phi0)) % period
     pos_M = _resisting_moment(analysis, analysis.kin, neglect_below)
-    every = resistance_breaks(analysis, ends=True)
+    memo: dict = {}  # the nodes' τ, bisected once for both calls
+    every = resistance_breaks(analysis, ends=True, memo=memo)
 
     solved: dict[bytes, Array] = {}  # Mс at a set of travels, solved once per set
 
@@ -291,22 +292,25 @@ def reduced_moment(analysis: Solved, grid: int | None = None, *,
 
     A = exact_work(at, tau, every) if neglect_below == 0.0 else None
     return ReducedMoment(tau, phi, M, analysis.kin.labels, pos_tau, pos_M,
-                         abs(mech.crank.omega), sense, resistance_breaks(analysis), A,
+                         abs(mech.crank.omega), sense, resistance_breaks(analysis, memo=memo), A,
                          at if neglect_below == 0.0 else None, period)
 
 
-def resistance_breaks(analysis: Solved, ends: bool = False) -> tuple[float, ...]:
+def resistance_breaks(analysis: Solved, ends: bool = False, memo: dict | None = None
+                      ) -> tuple[float, ...]:
     """Crank travel (rad, from the first position) of every interior break of the variant's
     load diagrams: the abscissae where a load jumps or its slope changes, in every loaded
     stroke (:func:`graphplan.forces.loads.load_breaks`); with ``ends`` also the ends of
-    the loaded strokes (where a load may switch on or off at a dead centre: a kink of Mс)."""
+    the loaded strokes (where a load may switch on or off at a dead centre: a kink of Mс).
+    ``memo``: as load_breaks' (one bisection per node for calls on one analysis)."""
     mech, cycle = analysis.mech, analysis.cycle
     if not mech.resistances:
         return ()
     phi0, _ = _first(mech, analysis)
     shift = float(cycle_travel(mech, cycle, phi0))
     return tuple(sorted({round((t - shift) % cycle.period, 12)
-                         for t in load_breaks(mech, cycle, ends=ends, every_kink=ends)}))
+                         for t in load_breaks(mech, cycle, ends=ends, every_kink=ends,
+                                              memo=memo)}))
 
 
 def reduced_inertia(mech: Mechanism, kin: Kinematics) -> ReducedInertia:

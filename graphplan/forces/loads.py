@@ -376,14 +376,15 @@ diagram), whose kinks are only its sampling: only its jumps are drawing nodes.""
 
 
 def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
-                every_kink: bool = True) -> tuple[float, ...]:
+                every_kink: bool = True, memo: dict | None = None) -> tuple[float, ...]:
     """Crank travel τ (rad, from the cycle's origin, in [0, period)) of every place where a
     load of the variant jumps or kinks: each interior node of its diagrams where the value
     jumps or the slope changes; with ``ends`` also each end of a loaded stroke (the dead
     centres, where a load switches on or off while its point stands still: a kink of Mс)
     and the start of a crank-angle diagram. Exact integrals take all of them as nodes; the
     graphical integration (``every_kink=False``) takes the jumps, and the kinks of the
-    diagrams of at most :data:`SHAPE_NODES` nodes."""
+    diagrams of at most :data:`SHAPE_NODES` nodes. ``memo`` (a dict the caller keeps for
+    calls on one mechanism and cycle) holds each node's τ, bisected once for all of them."""
     out: set[float] = set()
     two_pi = 2 * math.pi
     P = cycle.period
@@ -410,7 +411,12 @@ def load_breaks(mech: Mechanism, cycle: Cycle, ends: bool = False,
             for i in _kinks(d, 0.0, 1.0, every_kink):
                 nodes.setdefault(id(lt), (lt, []))[1].append((a, b, d[i][0], bool(odd)))
     for lt, todo in nodes.values():
-        out.update(t % P for t in _travel_angles(mech, cycle, lt, *zip(*todo, strict=True)))
+        memo_lt = {} if memo is None else memo.setdefault(id(lt), {})
+        new = [n for n in dict.fromkeys(todo) if n not in memo_lt]
+        if new:
+            memo_lt.update(zip(new, _travel_angles(mech, cycle, lt, *zip(*new, strict=True)),
+                               strict=True))
+        out.update(memo_lt[n] % P for n in todo)
     return tuple(sorted(round(t, 12) for t in out))
 
 
@@ -444,7 +450,10 @@ def _travel_angles(mech: Mechanism, cycle: Cycle, lt: LinkTravel, a, b, x, falli
         q = (pos.theta[lt.link] if lt.kind == "rocker"
              else link_coordinate(mech, lt.link, pos)[1])
         up = (lt.fraction(q) < x) != falling
-        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+        lo2, hi2 = np.where(up, mid, lo), np.where(up, hi, mid)
+        if np.array_equal(lo2, lo) and np.array_equal(hi2, hi):
+            break  # every [lo, hi] at its floating-point limit: the next steps change nothing
+        lo, hi = lo2, hi2
     return [float(t) for t in 0.5 * (lo + hi)]
 
 
