@@ -318,10 +318,10 @@ def profile_press(reps: int, n: int = 360) -> dict:
 
 TURN = 360  #: positions of the turn the speed targets are set for
 
-SMALL_N = ("numpy's fixed cost: the lean full cycle is some 95 array operations of ~0.3–0.6 µs "
-           "each whatever N, while numba's compiled loop has none; even the closed-form "
-           "crank–slider in numpy, ~80 operations without checks, is slower than numba at 36 "
-           "positions")
+SMALL_N = ("numpy's fixed cost: the lean full cycle is some 80 array operations of ~0.25–0.5 "
+           "µs each whatever N, while numba's compiled loop has none (level with it at 36 "
+           "positions, within a run's spread); the closed-form crank–slider in numpy, ~80 "
+           "operations without checks, is slower than both there")
 GENERAL = ("generality: graphplan solves any chain of dyads from a model (points, links, "
            "loads by name, the neglect rule, conditioning, checks), the closed form one "
            "mechanism written out by hand")

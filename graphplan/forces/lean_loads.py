@@ -27,7 +27,8 @@ def interp_diagram(xs, ys, nodes, d, signed: bool, clip: bool, lo: float, hi: fl
     right = 0.0 if xs[-1] < hi else float(ys[-1])
     gx = np.array([v for n in nodes for v in (n - 2 * tol, n - tol, n + tol, n + 2 * tol)])
     gy = np.array([v for _ in nodes for v in (0.0, 1.0, 1.0, 0.0)])
-    grid = np.unique(np.concatenate((xs, gx)))  # xs strictly increasing (no jump)
+    grid = np.sort(np.concatenate((xs, gx)))  # xs strictly increasing (no jump); without
+    grid = grid[np.concatenate(([True], np.diff(grid) > 0))]  # np.unique (it imports np.ma)
     table = np.interp(grid, xs, ys, left, right) + 1j * (
         np.interp(grid, gx, gy, 0.0, 0.0) if gx.size else 0.0)
     # at the diagram's own abscissae the value is its ordinate, exactly
