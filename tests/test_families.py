@@ -657,7 +657,7 @@ def test_a_720_cycle_draws_the_velocity_plans_of_one_turn(solved, drawn):
     a = solved(VARIANT_DIR / "inline_twin_180.toml")
     assert distinct_positions(a.kin) == tuple(range(12))
     sc = a.sheet1
-    assert sc.plans == tuple(range(12)) and sc.acc_plans == (13, 19)
+    assert sc.plans == tuple(range(12)) and sc.analysed == (13, 19)
     caps = {it.text for it in iter_leaves(drawn(VARIANT_DIR / "inline_twin_180.toml", 1).items)
             if isinstance(it, Text) and it.text.startswith("План скоростей")}
     assert {"План скоростей, пол. 1, 13", "План скоростей, пол. 7, 19"} <= caps

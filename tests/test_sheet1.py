@@ -144,9 +144,12 @@ def test_press_sheet_shows_all_positions_and_the_scales_of_the_seed(built):
     for lab in a.kin.labels:  # 8 positions and the working positions (2), (3)
         assert any(t == f"План скоростей, пол. {lab}" for t in texts)
     # acceleration plans: the positions of the force analysis, (2), (3) and the idle one
+    # (further positions' plans where the grid holds them: their own test below)
     acc = sorted(t for t in texts if t.startswith("План ускорений"))
-    assert acc == ["План ускорений, пол. (2)", "План ускорений, пол. (3)",
-                   "План ускорений, пол. 2"]
+    assert [f"План ускорений, пол. {a.kin.labels[k]}" for k in a.sheet1.analysed] == [
+        "План ускорений, пол. (2)", "План ускорений, пол. (3)", "План ускорений, пол. 2"]
+    assert len(acc) == len(a.sheet1.acc_plans) and set(acc) >= {
+        "План ускорений, пол. (2)", "План ускорений, пол. (3)", "План ускорений, пол. 2"}
     # the crank pin is numbered in every position on the plan of positions
     pp = [t.text for t in iter_leaves(sheet.items)
           if isinstance(t, Text) and t.id and t.id.startswith("pp-label")]
@@ -269,8 +272,9 @@ def test_analysed_positions_show_omega_and_epsilon_of_every_turning_link(built, 
     sc = sheet_scales(a.mech, a.kin)
     leaves = {it.id: it for it in iter_leaves(sheet.items) if it.id}
     texts = {it.text for it in leaves.values() if isinstance(it, Text)}
-    assert sc.acc_plans and len(sc.layout.schemes) == len(sc.acc_plans)
-    for k in sc.acc_plans:
+    assert sc.analysed and len(sc.layout.schemes) == len(sc.analysed)
+    assert sc.acc_plans[:len(sc.analysed)] == sc.analysed
+    for k in sc.analysed:
         for link in a.mech.moving_links:
             for sym, value in (("ω", a.kin.vel.omega[link][k]), ("ε", a.kin.acc.epsilon[link][k])):
                 ident = f"sch{k}-{sym}{link}"
@@ -468,12 +472,12 @@ def test_a_force_analysis_of_one_position_gets_a_second_acceleration_plan(built,
     a, sheet, _ = built(name)
     sc = a.sheet1
     given = [a.kin.labels.index(x) for x in a.mech.settings["kinetostatics"]["positions"]]
-    assert len(given) == 1 and sc.acc_plans[0] == given[0] and len(sc.acc_plans) == 2
+    assert len(given) == 1 and sc.analysed[0] == given[0] and len(sc.analysed) == 2
     working = in_working_stroke(a.mech, a.cycle, a.kin.phi)
-    assert working[sc.acc_plans[0]] != working[sc.acc_plans[1]]
-    assert len(sc.layout.a_cells) == len(sc.layout.schemes) == 2
+    assert working[sc.analysed[0]] != working[sc.analysed[1]]
+    assert len(sc.layout.a_cells) == len(sc.acc_plans) and len(sc.layout.schemes) == 2
     ids = {it.id for it in iter_leaves(sheet.all_items())}
-    for k in sc.acc_plans:
+    for k in sc.analysed:
         assert f"sch{k}-caption" in ids and any((i or "").startswith(f"ap{k}-") for i in ids)
 
 
@@ -511,3 +515,41 @@ def test_the_structural_scheme_lists_the_kinematic_pairs_of_the_shaper(built):
     assert sorted(r[1] for r in rows if r[2] == "поступ.") == ["2–3", "5–6"]
     assert {r[3] for r in rows} == {"5"}
     assert 3 * 5 - 2 * len(rows) == 1
+
+
+@pytest.mark.parametrize("name", ["engine", "offset_slider", "slotter", "press", "shaper"])
+def test_a_grid_with_room_draws_further_acceleration_plans_at_the_same_scales(built, name):
+    """The method draws acceleration plans of 1–3 positions or of all: where the grid of
+    plans holds more at the Kv and Ka the analysed positions' plans get, sheet 1 draws the
+    plans of further positions (up to four in all), spread round the cycle, each read (its
+    longest vector ≥ 53 mm: a 50 mm shaft and its head) and without a scheme of its own;
+    the analysed positions come first, their plans and schemes as before. The same
+    project laid out with the analysed positions alone has the same Kv and Ka and no more
+    rows of plans."""
+    from graphplan.project.scales import ACC_PLANS_MAX
+
+    a, sheet, _ = built(name)
+    sc = a.sheet1
+    extra = sc.acc_plans[len(sc.analysed):]
+    assert extra, f"{name}: no further acceleration plan (the grid held one when written)"
+    assert len(sc.acc_plans) <= ACC_PLANS_MAX and len(set(sc.acc_plans)) == len(sc.acc_plans)
+    longest = {}
+    for it in iter_leaves(sheet.items):
+        m = re.match(r"^ap(\d+)-", it.id or "")
+        if m and isinstance(it, Arrow):
+            k = int(m.group(1))
+            longest[k] = max(longest.get(k, 0.0), math.dist(it.p0, it.p1))
+    assert set(longest) == set(sc.acc_plans)
+    assert all(longest[k] >= 53.0 - 1e-6 for k in extra), longest
+    ids = {it.id for it in iter_leaves(sheet.items)}
+    assert not any(i and i.startswith(tuple(f"sch{k}-" for k in extra)) for i in ids)
+    # each further position is at least as far round the cycle from the plans before it
+    # as any other position not drawn (the farthest was taken)
+    turn = 2 * math.pi
+
+    def apart(k, among):
+        return min(abs((a.kin.phi[k] - a.kin.phi[j] + math.pi) % turn - math.pi) for j in among)
+
+    for i, k in enumerate(extra):
+        before = sc.acc_plans[:len(sc.analysed) + i]
+        assert apart(k, before) >= apart(extra[-1], before) - 1e-9

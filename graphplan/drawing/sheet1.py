@@ -623,7 +623,7 @@ def kinematics_sheet(analysis, *, lang: str = "ru", precision: float = 0.0,
         items += ill_mark_items(ap, cell, f"ap{k}", lang)
     from .sheet1_schemes import groups_items, scheme_items
 
-    for c, k in enumerate(sc.acc_plans[:len(sc.layout.schemes)]):
+    for c, k in enumerate(sc.analysed[:len(sc.layout.schemes)]):
         items += scheme_items(analysis, sc.slots, k, sc.layout.schemes[c], lang, f"sch{k}")
     if sc.layout.groups is not None:
         items += groups_items(analysis, sc.slots, sc.layout.groups, lang)

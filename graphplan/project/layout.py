@@ -185,7 +185,8 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
                   a_shapes: tuple[tuple[float, float], ...] = (),
                   longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1,
                   scheme_aspect: float = 1.0, groups_aspect: float = 2.0,
-                  sizes: tuple[float, float] | None = None) -> Sheet1Layout:
+                  sizes: tuple[float, float] | None = None,
+                  n_schemes: int | None = None) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
     The left column holds the plan of positions and under it the kinematic diagrams (the
@@ -199,6 +200,9 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     enough for them and the diagrams, else after the plans. The defining vectors are made
     as long as the place allows (neither plan's longest vector over VECTOR_HARD,
     ``longest`` per mm of it); the height left grows the schemes, then every row.
+
+    ``n_schemes``: how many of the acceleration plans (the first) get the scheme of their
+    position's ω and ε (all by default: the analysed positions; further plans have none).
 
     ``sizes``: the defining vectors (pa, πa, mm) the plans are drawn at, once their scales
     are chosen. Each cell is then made as large as its plan at that size needs, and the
@@ -219,7 +223,7 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     x0 = f.x0 + 4.0
     gx0, gx1 = x0 + left_w + GAP + 4.0, f.x1 - 4.0
     W = gx1 - gx0
-    n_s = len(a_shapes)
+    n_s = len(a_shapes) if n_schemes is None else min(n_schemes, len(a_shapes))
 
     def extras(width: float) -> list[tuple[float, float]]:
         s_w = min(width, max(SCHEME_H[0] * scheme_aspect, MIN_CELL_W))

@@ -64,6 +64,9 @@ class Sheet1Scales:
     paths: dict[str, np.ndarray] | None = None  # the trajectories the extent was taken from
     slots: dict[str, tuple[float, float]] | None = None  # see :func:`slot_ranges`
     acc_plans: tuple[int, ...] = ()  # positions whose acceleration plans are drawn
+    #: the first of them, the analysed positions: each with the scheme of its ω and ε (the
+    #: others are further plans the grid had room for, :func:`_more_acceleration_plans`)
+    analysed: tuple[int, ...] = ()
 
 
 def slot_ranges(mech: Mechanism, fine) -> dict[str, tuple[float, float]]:
@@ -283,8 +286,10 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         kl_m = kl.per_mm
     acc = acceleration_positions(mech, kin, cycle, forces)
 
-    def at(acc: tuple[int, ...]) -> tuple[Sheet1Scales, list[float]]:
-        """The scales and layout with the acceleration plans of ``acc``, and the longest
+    def at(acc: tuple[int, ...], n_schemes: int | None = None
+           ) -> tuple[Sheet1Scales, list[float]]:
+        """The scales and layout with the acceleration plans of ``acc`` (the first
+        ``n_schemes`` with the scheme of their ω and ε, all by default), and the longest
         vector of every plan drawn, mm."""
         # an acceleration plan is built on its position's velocity plan: that one is drawn too
         plan_w = (ext[2] - ext[0]) / kl.per_mm + 2 * PLAN_MARGIN
@@ -305,7 +310,8 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
             longest = (max(v_long, default=1.0), max(a_long, default=1.0))
             try:
                 layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
-                                       len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads))
+                                       len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads),
+                                       n_schemes=n_schemes)
                 # plans too small to read: fewer of them, larger
                 if layout.plan_size * max(longest) >= LONGEST_READ or n_try == len(tries) - 1:
                     break
@@ -352,9 +358,11 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         # the diagrams and the schemes
         sizes = (va / kv.per_mm, aa / ka.per_mm if a_shapes else 0.0)
         layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
-                               len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes)
+                               len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes,
+                               n_schemes)
         drawn = ([lg * sizes[0] for lg in v_long] + [lg * sizes[1] for lg in a_long])
-        return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc), drawn
+        return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc,
+                            acc[:n_schemes] if n_schemes is not None else acc), drawn
 
     sc, drawn = at(acc)
     given = positions_by_label(mech, kin, "kinetostatics")
@@ -363,6 +371,55 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         # the second acceleration plan (acceleration_positions) makes the plans too small to
         # read: the force analysis's position alone
         sc, _ = at(given)
+    if positions_by_label(mech, kin, "drawing", "accelerations") is None:
+        sc = _more_acceleration_plans(kin, sc, at)
+    return sc
+
+
+def _room(layout: Sheet1Layout) -> tuple[float, float, float]:
+    """The area of the kinematic diagrams' box, the smallest side of the schemes' cells
+    (mm², mm) and the rows of plans, negated: what a further plan must not take from them
+    (it goes into a row's room, not a row of its own)."""
+    cells = [*layout.schemes, *([layout.groups] if layout.groups else [])]
+    rows = len({round(c.y0, 3) for c in layout.cells})
+    return (layout.diagrams.width * layout.diagrams.height,
+            min((min(c.width, c.height) for c in cells), default=0.0), -float(rows))
+
+
+ACC_PLANS_MAX = 4  #: acceleration plans sheet 1 draws at most by default (the method: of 1–3
+#: positions, or of all), the analysed positions' first
+
+
+def _more_acceleration_plans(kin, sc: Sheet1Scales, at) -> Sheet1Scales:
+    """``sc`` with the acceleration plans of further positions (up to ACC_PLANS_MAX in all)
+    where the grid holds them at the same Kv and Ka: each the position farthest round the
+    cycle from those drawn whose plan is read (its longest vector READ_MIN mm or more),
+    without a scheme of its own (the analysed positions keep theirs). ``at``: the scales
+    and layout for a tuple of positions (:func:`_sheet_scales`)."""
+    n_schemes = len(sc.acc_plans)
+    turn = 2.0 * math.pi
+    while len(sc.acc_plans) < ACC_PLANS_MAX:
+        def apart(k: int, drawn: tuple[int, ...] = sc.acc_plans) -> float:
+            return min(abs((float(kin.phi[k]) - float(kin.phi[j]) + math.pi) % turn - math.pi)
+                       for j in drawn)
+
+        candidates = sorted((k for k in distinct_positions(kin) if k not in sc.acc_plans
+                             and kinematic_twin(kin, k, sc.acc_plans) is None),
+                            key=lambda k: (-round(apart(k), 6), k))
+        for k in candidates:
+            try:
+                more, drawn = at((*sc.acc_plans, k), n_schemes)
+            except LayoutError:
+                return sc
+            if ((more.kv.per_mm, more.ka.per_mm) != (sc.kv.per_mm, sc.ka.per_mm)
+                    or any(a < b - 1e-6 for a, b in zip(_room(more.layout), _room(sc.layout),
+                                                       strict=True))):
+                return sc  # the plans drawn, the diagrams or the schemes would shrink
+            if drawn[-1] >= READ_MIN:
+                sc = more
+                break
+        else:
+            return sc
     return sc
 
 
