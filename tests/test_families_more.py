@@ -229,3 +229,32 @@ def test_the_gas_forces_of_the_master_and_articulated_pistons_by_virtual_work():
     dB, dC = _rate(data, kin.phi)
     closed = -(sizes[0] * dB + sizes[1] * dC)
     np.testing.assert_allclose(M_bal, closed, rtol=1e-9, atol=1e-9 * np.abs(closed).max())
+
+
+# --- sheet 2: which curve of the load diagram is which load -----------------------------------
+
+
+def _q_group_texts(path: Path) -> list[str]:
+    from graphplan.drawing import Group, Text, iter_leaves, kinetostatics_sheet
+
+    a = analyze(load(path))
+    (q,) = [it for it in kinetostatics_sheet(a).all_items()
+            if isinstance(it, Group) and it.id == "s2-q-diagram"]
+    return [it.text for it in iter_leaves([q]) if isinstance(it, Text)]
+
+
+@pytest.mark.parametrize(("path", "names"), [
+    # two stages, two diagrams: each curve named
+    (VARIANTS / "opposed_compressor.toml", ["Fг1", "Fг2"]),
+    # two cylinders of one diagram and one stroke draw one curve: named once for both
+    (VARIANTS.parent.parent.parent / "examples" / "compressor.toml", ["Fг1, Fг2"]),
+    # two chambers of one piston: four rectangles, two named by their tops
+    (VARIANTS / "double_acting_pump.toml", ["Fж1", "Fж2"]),
+    # an in-line twin: both cylinders draw one curve (a turn apart): named once for both
+    (VARIANTS / "twin_engine.toml", ["Fг1, Fг2"]),
+])
+def test_each_curve_of_a_load_diagram_with_several_loads_is_named(path, names):
+    """A teacher asked «which cylinder?» of the compressor's Q(s) (two curves, one title
+    «Fг1, Fг2(s)»): each curve now carries its load's name by its highest free point."""
+    texts = _q_group_texts(path)
+    assert sorted(t for t in texts if t.startswith(("Fг", "Fж")) and "(" not in t) == names

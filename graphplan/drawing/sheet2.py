@@ -855,11 +855,6 @@ def q_items(analysis, curves, unit: str, positions, box: Rect, lang: str) -> Gro
                 ax.plot(x[run], y[run], 0.5)
             else:
                 ax.plot(x[run], y[run], 0.3, IDLE_DASH)
-    if unit == "deg_crank" and len(curves) > 1:  # several loads over φ: each named
-        for name, x, size, _work, _ in curves:
-            j = int(np.argmax(size))
-            ax.letter(float(ax.sx(x[j])) + 1.5, float(ax.sy(size[j] / div)) - 1.0, name, 2.5,
-                      "left", "bottom")
     # the analysed positions on the curve of the first load
     _name, x, size, work, _ = curves[0]
     from ..forces import resistance_loads
@@ -870,6 +865,7 @@ def q_items(analysis, curves, unit: str, positions, box: Rect, lang: str) -> Gro
             else np.abs(np.asarray(ld.moment)))
     xs = _position_travel(analysis, unit)
     shown: list[tuple[float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []  # the numbers' boxes, mm in the axes
     x_mm = (width_mm - 26.0) / max(1.02 * float(np.max(x)), 1e-12)
     y_mm = (height_mm - 32.0) / max(big / div * 1.15, 1e-12)
     # the ordinates of the analysed positions (thin lines)
@@ -893,6 +889,17 @@ def q_items(analysis, curves, unit: str, positions, box: Rect, lang: str) -> Gro
                             (width_mm - 26.0, height_mm - 32.0))
         ax.letter(float(ax.sx(px)) + dx, float(ax.sy(py)) - dy, kin.labels[k], 2.5,
                   "right" if dx < 0 else "left", "bottom")
+        wk = text_width(Text((0, 0), kin.labels[k], 2.5, layer="text")) + 0.5
+        x0 = px * x_mm + dx - (wk if dx < 0 else 0.0)
+        taken.append((x0, py * y_mm + dy, x0 + wk, py * y_mm + dy + 3.0))
+    if len(curves) > 1:  # several loads (two cylinders, two chambers): each curve named
+        lines = [np.column_stack([c[1] * x_mm, c[2] / div * y_mm]) for c in curves]
+        lines += [np.array([[xs[j] * x_mm, 0.0], [xs[j] * x_mm, vals[j] / div * y_mm]])
+                  for j in sel]
+        for label, px, py, dx, dy in _curve_names(curves, (x_mm, y_mm / div), lines, taken,
+                                                  (width_mm - 26.0, height_mm - 32.0)):
+            ax.letter(float(ax.sx(px)) + dx, float(ax.sy(py / div)) - dy, label, 2.5,
+                      "right" if dx < 0 else "left", "bottom")
     ax.frame(0.25)
     xv, yv = ax.x_values(), ax.y_values()
     foot = ax.xticks(xv, tick_labels(xv))
@@ -933,6 +940,50 @@ def _qs_naming(analysis, names: list[str]) -> tuple[str, str, bool]:
         word = "qs_moment" if moment else "qs"
     symbol = names[0] if len(names) == 1 else ("M" if moment else "F")
     return word, symbol, moment
+
+
+def _curve_names(curves, scale, lines, taken, limits) -> list:
+    """Where the name of each curve of Q(s) goes: (name, x, size, dx, dy), the text's nearer
+    corner ``dx, dy`` mm from the curve's point (x, size). Curves that are one curve (the
+    same diagram on two cylinders) share one name «Fг1, Fг2». Each name stands by the
+    highest point of its curve where it crosses no curve, ordinate, position number
+    (``taken``: boxes in mm) or name placed before, inside the axes (``limits``, mm)."""
+    from shapely.geometry import LineString, box
+
+    # one drawn line: two cylinders of one diagram, sampled at other crank angles (their
+    # cycles a turn or the V angle apart), draw the same curve to within 0.3 mm
+    groups: list[tuple[list[str], np.ndarray, np.ndarray, LineString]] = []
+    for (name, x, size, *_), drawn in zip(curves, lines, strict=False):
+        drawn = LineString(drawn)
+        same = next((g for g in groups if g[3].hausdorff_distance(drawn) < 0.3), None)
+        if same is None:
+            groups.append(([name], x, size, drawn))
+        else:
+            same[0].append(name)
+    obstacles = [LineString(c) for c in lines if len(c) > 1]
+    obstacles += [box(*b) for b in taken]
+    frame = box(0.0, 0.0, *limits)
+    out = []
+    for names, x, size, _ in groups:
+        label = ", ".join(names)
+        w = text_width(Text((0, 0), label, 2.5, layer="text")) + 0.5
+        order = np.argsort(-size, kind="stable")
+        for j in order[::max(1, len(order) // 60)]:
+            at = (float(x[j]) * scale[0], float(size[j]) * scale[1])
+            spot = next(((dx, dy) for dx, dy in ((1.5, 1.0), (-1.5, 1.0), (1.5, -4.5),
+                                                 (-1.5, -4.5), (1.5, 4.5), (-1.5, 4.5))
+                         if frame.contains(b := box(at[0] + dx - (w if dx < 0 else 0.0),
+                                                    at[1] + dy,
+                                                    at[0] + dx + (0.0 if dx < 0 else w),
+                                                    at[1] + dy + 3.0))
+                         and not any(b.intersects(o) for o in obstacles)), None)
+            if spot is not None:
+                dx, dy = spot
+                x0 = at[0] + dx - (w if dx < 0 else 0.0)
+                obstacles.append(box(x0, at[1] + dy, x0 + w, at[1] + dy + 3.0))
+                out.append((label, float(x[j]), float(size[j]), dx, dy))
+                break
+    return out
 
 
 def _free_side(label: str, at, rising: bool, curves, limits) -> tuple[float, float]:
