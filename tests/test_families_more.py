@@ -69,6 +69,15 @@ def test_each_chamber_of_the_double_acting_pump_presses_on_its_own_area():
         assert np.all(power <= 1e-9 * np.abs(power).max())
     net = (f1.vector[:, 0] + f2.vector[:, 0]) * vx
     assert np.count_nonzero(net < -1e-9 * np.abs(net).max()) == 10   # all but the dead centres
+    # the work over the turn, closed form: each stroke moves the piston H against a constant
+    # force, so A = −H·(0.05 + 0.60)·10⁶·(A_head + A_rod) = −0.65·10⁶·0.25·0.038249
+    # = −6215.5 J; the weights' work over a turn is nil. The dynamics' exact integral:
+    from graphplan import dynamics as dyn
+
+    H = 0.250
+    wd = dyn.work_diagrams(dyn.dynamic_model(a))
+    assert wd.A_c[-1] == pytest.approx(-0.65e6 * H * (head + annulus), rel=1e-9)
+    assert wd.M_d == pytest.approx(0.65e6 * H * (head + annulus) / (2 * math.pi), rel=1e-9)
 
 
 @pytest.mark.parametrize(("edit", "key", "words"), [
