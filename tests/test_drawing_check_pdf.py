@@ -24,18 +24,12 @@ ROOT = Path(__file__).resolve().parents[1]
 EX = ROOT / "examples"
 EXAMPLES = sorted(p.stem for p in EX.glob("*.toml"))
 
-#: Sheet 2 changed at the end of session 9 (the mechanism with its loads, the force tables:
-#: 805c721, d64f5f3) after the PDF reader was last measured on it; each case names what the
-#: reader now gets wrong (DEFECTS.md, → drawcheck / drawcheck2)
-PDF_SVG_TODO = {
-    "offset_slider": "sheet 2's PDF reads one Rn12 'inaccurate' (model) that the SVG reads ok",
-    "shaper_prp": "sheet 2's PDF finds one force plan without its position where the SVG "
-                  "finds two",
-}
-PLANTED_PDF_TODO = {
-    "crusher": "the swap G5 ⇄ R65 planted in sheet 2's PDF is not found (6 of 7)",
-    "fourbar": "the swap G2 ⇄ Pи2 planted in sheet 2's PDF is not found (7 of 8)",
-}
+#: A PDF that still reads otherwise than its SVG, with its named cause (none since session
+#: 10: the loads drawn on «Механизм с нагрузками» are not a force plan — PDF and SVG found
+#: a different number of such false plans —, and Rn12 is judged by its own direction)
+PDF_SVG_TODO: dict[str, str] = {}
+#: An error planted in the PDF that is not found, with its named cause (none)
+PLANTED_PDF_TODO: dict[str, str] = {}
 
 
 @pytest.fixture(scope="module")
@@ -217,22 +211,40 @@ def test_errors_planted_in_graphplans_own_pdf(own, ex, tmp_path):
     assert crank
     rep = check_drawing(_pdf(_edit(svg, crank), tmp_path / "kl.pdf"), v, lang="en").report
     hit(any(f.verdict == "wrong" and f.quantity == "h21" for f in rep.findings), "Kl")
+    # two names swapped: forces of lengths ≥ 30 % and 3 mm apart, each name nearer its
+    # own line than the other's and one of them by 2 mm or more (as in test_drawing_check:
+    # a name the sheet sets off a cluster, nearer a neighbour's line, swapped would stand
+    # by its own line again — the drawing then reads right, no error to find)
+    from graphplan.checking.drawing.primitives import Segment
+    from graphplan.checking.drawing.scene import point_segment
+
+    def text_of(name: str, f):
+        """The text that is the name alone nearest its line (None: the name is written
+        in a text with others, ``Rn63, R63``)."""
+        mid = ((f.start[0] + f.end[0]) / 2, (f.start[1] + f.end[1]) / 2)
+        return _near(placed, name, mid) if any(p[1] == name for p in placed) else None
+
+    def nearer(a: str, fa, fb, by: float = 0.0) -> bool:
+        """Whether a's name stands nearer its own line than fb's, by ``by`` mm."""
+        p = text_of(a, fa)
+        return p is not None and point_segment(*p[2], Segment(*fa.start, *fa.end)) + by < \
+            point_segment(*p[2], Segment(*fb.start, *fb.end))
+
     swapped = None
     for j in plans:
         single = {n: f for n, f in j.found.forces.items()
                   if sum(g.segments == f.segments for g in j.found.forces.values()) == 1}
         for a in sorted(single):
             for b in sorted(single):
-                la, lb = single[a].length, single[b].length
-                if a < b and abs(la - lb) >= max(3.0, 0.3 * max(la, lb)):
+                fa, fb = single[a], single[b]
+                la, lb = fa.length, fb.length
+                if a < b and abs(la - lb) >= max(3.0, 0.3 * max(la, lb)) and \
+                        nearer(a, fa, fb) and nearer(b, fb, fa) and \
+                        (nearer(a, fa, fb, 2.0) or nearer(b, fb, fa, 2.0)):
                     swapped = swapped or (j, a, b)
     assert swapped is not None
     j, a, b = swapped
-    ms = []
-    for name in (a, b):
-        f = j.found.forces[name]
-        ms.append(_near(placed, name, ((f.start[0] + f.end[0]) / 2,
-                                       (f.start[1] + f.end[1]) / 2))[0])
+    ms = [text_of(name, j.found.forces[name])[0] for name in (a, b)]
     rep = check_drawing(_pdf(_edit(svg, {ms[0]: ms[1][2], ms[1]: ms[0][2]}),
                              tmp_path / "swap.pdf"), v, lang="en").report
     hit(any(f.verdict == "wrong" and f.quantity in (f"{a}_mm", f"{b}_mm", f"∠{a}", f"∠{b}")

@@ -21,14 +21,8 @@ from graphplan.checking.drawing.check import check_drawing
 ROOT = Path(__file__).resolve().parents[1]
 VARIANTS = sorted((ROOT / "tests" / "data" / "variants").glob("*.toml"))
 
-# A variant whose sheet 2 still gets a false finding, with its named cause:
-VARIANT_TODO: dict[tuple[str, str], str] = {
-    # session 10 (families' new variant): position 9's force plan of group 2-3 names G3 (6.7 mm,
-    # the vertical d→e) under the line e→f (R43), 6 mm right of e — a teacher reads G3 there
-    # too: the reader finds '∠G3' wrong. Sheet 2's label placement (→ sheet2 in DEFECTS.md).
-    **{("inclined_screen", f): "issue 22/18: G3 named under R43's line in position 9's plan 2-3"
-       for f in ("dxf", "svg", "pdf")},
-}
+# A variant whose sheet 2 still gets a false finding, with its named cause (none now):
+VARIANT_TODO: dict[tuple[str, str], str] = {}
 
 
 def _formats() -> list[str]:
@@ -81,6 +75,9 @@ def test_own_sheet2_of_every_variant_reads_clean(request, sheet2, v, fmt):
     # groups' «План сил ВВВ(2-3), Kp = …» and the crank's «Кривошип, Kp = …»)
     drawn = [t for t in dc.drawing.texts if "Kp = " in t.text]
     assert plans and len(plans) == len(drawn), ([j.found.where for j in plans], len(drawn))
+    # and no force plan where the sheet draws none (the loads on the mechanism's scheme)
+    assert all(j.scale for j in dc.plans if j.found.kind == "force"), \
+        [j.found.where for j in dc.plans if j.found.kind == "force" and not j.scale]
     assert all(j.position in ref.labels for j in plans)
     arms = [f for f in rep.figures if f.quantity == "h21"]
     assert arms and all(f.verdict == "ok" and f.position in ref.labels for f in arms)

@@ -57,8 +57,15 @@ def canonical_name(name: str) -> str:
     return name
 
 
-def _names(text: str) -> list[str]:
-    return [canonical_name(n) for n in split_names(text)]
+_FOOTNOTE = "*∗"
+"""A footnote's mark after a force's name (``G4*``): the footnote says the force is too
+short to draw at the plan's scale and gives it in newtons — its name names no line."""
+
+
+def _names(text: str, footnoted: bool = True) -> list[str]:
+    """The force names of a text; without those marked by a footnote unless asked."""
+    return [canonical_name(n.rstrip(_FOOTNOTE)) for n in split_names(text)
+            if n.rstrip(_FOOTNOTE) and (footnoted or n[-1] not in _FOOTNOTE)]
 
 
 @dataclass(slots=True)
@@ -110,7 +117,9 @@ def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
             others = [j for j in nd.segments if j != cur]
             # lines passing through along this one (forces drawn over each other on one
             # line, G2 down, Pи2 back up over it) do not cross it
-            crossing = [j for j in scene.on_segment[n] if not _along(scene.segments[j], d, L)]
+            # nor does a line merely ending on this one (a name's leader overshooting it)
+            crossing = [j for j in scene.on_segment[n] if not _along(scene.segments[j], d, L)
+                        and _across(scene.segments[j], nd, d, L)]
             if nd.ends != 2 or crossing or len(others) != 1 or nd.tip:
                 break  # a vertex, a crossing, or where one vector ends and the next begins
             j = others[0]
@@ -124,6 +133,15 @@ def _whole_line(scene: Scene, i: int) -> tuple[list[int], int, int]:
             cur = j
         ends[k] = n
     return segs, ends[0], ends[1]
+
+
+def _across(t, nd, d: tuple[float, float], L: float) -> bool:
+    """Whether segment t passing through node nd goes across the line of direction d (of
+    length L) there: both its ends a millimetre or more off that line."""
+    def off(x: float, y: float) -> float:
+        return abs((x - nd.x) * d[1] - (y - nd.y) * d[0]) / L
+
+    return min(off(t.x1, t.y1), off(t.x2, t.y2)) >= 1.0
 
 
 def _along(t, d: tuple[float, float], L: float) -> bool:
@@ -146,7 +164,7 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
     half_w = 0.35 * t.height * len(t.text)
     reach = 3.0 * t.height + half_w + 2.0
     out: list[tuple[float, int]] = []
-    whole: dict[int, tuple[float, float, float, float]] = {}
+    whole: dict[int, tuple[float, float, float, float, bool]] = {}
     for i, s in enumerate(scene.segments):
         if s.length < min_len:
             continue
@@ -170,10 +188,10 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
         # of its middle, from the text's box. The line is taken whole: a line split into
         # pieces (a polyline through its middle) has its name by its pieces' ends
         if i not in whole:
-            _segs, na, nb = _whole_line(scene, i)
+            segs, na, nb = _whole_line(scene, i)
             whole[i] = (scene.nodes[na].x, scene.nodes[na].y, scene.nodes[nb].x,
-                        scene.nodes[nb].y)
-        x1, y1, x2, y2 = whole[i]
+                        scene.nodes[nb].y, any(any(scene.heads[j]) for j in segs))
+        x1, y1, x2, y2, headed = whole[i]
         L2 = max((x2 - x1) ** 2 + (y2 - y1) ** 2, 1e-12)
         along = ((t.x - x1) * (x2 - x1) + (t.y - y1) * (y2 - y1)) / L2
         mx, my = (x1 + x2) / 2, (y1 + y2) / 2
@@ -184,7 +202,7 @@ def _lines_near(scene: Scene, t, min_len: float = 2.0, forces: bool = True
         mid = math.hypot(t.x - mx, t.y - my)
         cost = d + 0.25 * mid if abs(along - 0.5) <= 0.4 else \
             max(d, mid_box) + 0.25 * mid + 0.5 * t.height
-        if not any(scene.heads[i]):
+        if not headed:
             cost += 3.0 * t.height  # a construction line, not a force's arrow
         out.append((cost, i))
     return sorted(out)
@@ -232,9 +250,12 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
     texts = []
     leaders = scene.leader_lines(_is_forces, slack=0.4)  # a sheared italic's corner
     leader_segs = {lead[0] for lead in leaders.values()}  # another name's leader names none
+    cells = _table_entries(scene)
     for ti, t in enumerate(scene.drawing.texts):
-        names = _names(t.text)
-        if not names or not all(is_force_name(n) for n in names):
+        if ti in cells or not _is_forces(t.text):
+            continue
+        names = _names(t.text, footnoted=False)
+        if not names:
             continue
         near = [c for c in _lines_near(scene, t, min_len=0.8) if c[1] not in leader_segs]
         if ti in leaders:
@@ -262,31 +283,102 @@ def find_force_plans(scene: Scene) -> list[FoundForcePlan]:
                 n, DrawnForce(n, drawn[0].start, drawn[0].end, drawn[0].sense,
                               drawn[0].segments, tuple(drawn[1:])))
     plans = []
+    members: dict[int, list[int]] = {}
+    for i, gg in enumerate(scene.group_of):
+        members.setdefault(gg, []).append(i)
     for g, forces in by_group.items():
         if len(forces) < 2:
             continue
-        # a polygon: the forces meet end to end
-        ends = [p for f in forces.values() for p in (f.start, f.end)]
-        met = sum(1 for p in ends if sum(1 for q in ends if math.hypot(p[0] - q[0],
-                                                                       p[1] - q[1]) < 0.5) > 1)
-        if met < 0.6 * len(ends):
-            continue
-        xs = [p[0] for p in ends]
-        ys = [p[1] for p in ends]
-        fp = FoundForcePlan(g, forces, (min(xs), min(ys), max(xs), max(ys)))
         named = {k for f in forces.values() for k in f.segments}
+        unnamed: list[DrawnForce] = []
         seen: set[tuple[int, ...]] = set()
-        for i, gg in enumerate(scene.group_of):
-            if gg == g and i not in named and any(scene.heads[i]) and \
-                    scene.segments[i].length >= 0.8:
+        for i in members[g]:
+            if i not in named and any(scene.heads[i]) and scene.segments[i].length >= 0.8:
                 f = _drawn(scene, i)
                 if f.segments not in seen and not named & set(f.segments):
                     seen.add(f.segments)
-                    fp.unnamed.append(f)
+                    unnamed.append(f)
+        if not _laid_head_to_tail(forces, unnamed):
+            continue
+        ends = [p for f in forces.values() for p in (f.start, f.end)]
+        xs = [p[0] for p in ends]
+        ys = [p[1] for p in ends]
+        fp = FoundForcePlan(g, forces, (min(xs), min(ys), max(xs), max(ys)))
+        fp.unnamed = unnamed
         fp.closure_mm = _closure(forces, fp.unnamed)
         plans.append(fp)
     _captions(scene, plans)
     return [p for p in plans if p.kind == "force"]
+
+
+def _laid_head_to_tail(forces: dict[str, DrawnForce], unnamed: list[DrawnForce]) -> bool:
+    """Whether named lines form a force polygon: the forces are laid head to tail, so most
+    ends of the named lines meet another line's end (an arrow drawn without a name — a
+    force too short to name, named in a footnote — carries the chain on), and somewhere
+    one force's tip is another's tail. Forces drawn from their points of application on
+    a scheme of the mechanism meet tail to tail only. A plan is a few forces, a few of
+    them too short to name: a curve's names on a diagram among its hundreds of ordinates
+    and hatching strokes (whose ends meeting the curve look like heads) are not a plan."""
+    lines: list[DrawnForce] = []
+    for f in forces.values():
+        if all(f.segments != g.segments for g in lines):
+            lines.append(f)
+    if len(unnamed) > 10 * len(forces):
+        return False
+    every = lines + list(unnamed)
+
+    def ends(f: DrawnForce):
+        # (point, role): the tail first; a line without its own head shows no sense
+        return ((f.start, "tail" if f.sense else None), (f.end, "tip" if f.sense else None))
+
+    met = 0
+    head_to_tail = False
+    for f in lines:
+        for p, role in ends(f):
+            at = [r for g in every if g is not f for q, r in ends(g)
+                  if math.hypot(p[0] - q[0], p[1] - q[1]) < 0.5]
+            met += bool(at)
+            head_to_tail |= any(role is None or r is None or r != role for r in at)
+    return head_to_tail and met >= 0.6 * 2 * len(lines)
+
+
+def _table_entries(scene: Scene) -> set[int]:
+    """The texts written in a table's cells (a force's name in a table of the forces is
+    not a name on a line): a text boxed by lines without arrowheads — a horizontal line
+    above and below it, a vertical one left and right, within two letter heights of its
+    box, closing a cell round it."""
+    hs: list[tuple[float, float, float]] = []  # x from, x to, y
+    vs: list[tuple[float, float, float]] = []  # y from, y to, x
+    for i, s in enumerate(scene.segments):
+        L = s.length
+        if L < 2.0 or any(scene.heads[i]):
+            continue
+        if abs(s.y2 - s.y1) <= 0.01 * L:
+            hs.append((min(s.x1, s.x2), max(s.x1, s.x2), 0.5 * (s.y1 + s.y2)))
+        elif abs(s.x2 - s.x1) <= 0.01 * L:
+            vs.append((min(s.y1, s.y2), max(s.y1, s.y2), 0.5 * (s.x1 + s.x2)))
+    out: set[int] = set()
+    if len(hs) < 2 or len(vs) < 2:
+        return out
+    for ti, t in enumerate(scene.drawing.texts):
+        if t.angle % 180.0 or not _is_forces(t.text):
+            continue
+        half_w, half_h = 0.35 * t.height * len(t.text), 0.5 * t.height
+        reach = 2.0 * t.height
+        above = [y for x0, x1, y in hs if 0 < y - t.y <= half_h + reach and
+                 x0 <= t.x - half_w and x1 >= t.x + half_w]
+        below = [y for x0, x1, y in hs if 0 < t.y - y <= half_h + reach and
+                 x0 <= t.x - half_w and x1 >= t.x + half_w]
+        if not above or not below:
+            continue
+        top, foot = min(above), max(below)
+        left = [x for y0, y1, x in vs if 0 < t.x - x <= half_w + reach and
+                y0 <= foot + 0.3 and y1 >= top - 0.3]
+        right = [x for y0, y1, x in vs if 0 < x - t.x <= half_w + reach and
+                 y0 <= foot + 0.3 and y1 >= top - 0.3]
+        if left and right:
+            out.add(ti)
+    return out
 
 
 def _is_forces(text: str) -> bool:

@@ -42,6 +42,23 @@ def _expected_mm(ref, vocab, name: str, k: int, kp: float) -> float | None:
     return None if v is None else abs(v) / kp
 
 
+def force_vector(ref, name: str, k: int):
+    """graphplan's vector of a force at position k (N): the load's or the reaction's,
+    else the side of graphplan's force plan that draws it (a reaction's components
+    ``Rτ12``, ``Rn12`` are drawn, not loads or reactions of their own); ``None`` if
+    graphplan draws no such force."""
+    line = ref.force_line(name, k)
+    if line is not None:
+        return line[1]
+    for p in ref.analysis.force_plans(k):
+        for poly in p.polygons.values():
+            for q, a, b in poly:
+                if q == name:
+                    return (np.asarray(p.points[b], float) - np.asarray(p.points[a], float)
+                            ) * p.scale.per_mm
+    return None
+
+
 def _angle_error(f, vec) -> float:
     """The drawn force's direction less graphplan's, degrees (−180…180); the line's
     direction only (−90…90) when no arrowhead of its own shows its sense."""
@@ -74,9 +91,9 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
                 e = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
                 if e is not None and e > 0.5:
                     errs.append((f.length - e) / e)
-                line = ref.force_line(name, k)
-                if line is not None and f.length >= 2.0 and float(np.hypot(*line[1])) > 0:
-                    angles.append(_angle_error(f, line[1]) / 30.0)
+                vec = force_vector(ref, name, k)
+                if vec is not None and f.length >= 2.0 and float(np.hypot(*vec)) > 0:
+                    angles.append(_angle_error(f, vec) / 30.0)
             # medians: a force or two read off a neighbouring line do not decide it
             if not errs:
                 return math.inf
@@ -109,11 +126,8 @@ def judge_force_plan(fp: FoundForcePlan, ref, tol: Tolerances, lang: str):
             continue
         if vocab.lookup(f"{name}_mm") is not None:
             j.figures[f"{name}_mm"] = f.length
-        line = ref.force_line(name, k)
-        if line is None or f.length < 2.0:
-            continue
-        vec = line[1]
-        if float(np.hypot(*vec)) <= 0:
+        vec = force_vector(ref, name, k)
+        if vec is None or f.length < 2.0 or float(np.hypot(*vec)) <= 0:
             continue
         am = math.degrees(math.atan2(f.end[1] - f.start[1], f.end[0] - f.start[0]))
         ae = math.degrees(math.atan2(vec[1], vec[0]))
@@ -215,50 +229,58 @@ def _choose_lines(fp: FoundForcePlan, ref, vocab, k: int, tol: Tolerances) -> No
             length = _expected_mm(ref, vocab, name, k, fp.kp)  # type: ignore[arg-type]
             if length is None:
                 continue
-            fl = ref.force_line(name, k)
             band = max(tol.segment * length, tol.reading_mm)
-            worst = max(worst, _mismatch(line, length, None if fl is None else fl[1]) / band)
+            worst = max(worst, _mismatch(line, length, force_vector(ref, name, k)) / band)
         return worst
 
     held: set[tuple[int, ...]] = set()
     loose = []
     for names in units.values():
         f = fp.forces[names[0]]
-        if misfit(names, f) <= 1.0 or not f.options:
+        if not f.options or (len(names) == 1 and misfit(names, f) <= 1.0):
             held.add(f.segments)
             continue
         # a text naming forces drawn on nearly one line (``Rn12, R12, R23`` beside three
-        # lines converging): a name that fits the line keeps it, the others choose
-        stay = [n for n in names if misfit([n], f) <= 1.0]
-        if stay and len(names) > 1:
+        # lines converging, ``Rn63, R63`` by two lines 1° apart): a name keeps the line
+        # when it fits it and no line the text is nearly as near fits it clearly better;
+        # the others choose
+        stay = [n for n in names if misfit([n], f) <= 1.0 and
+                all(misfit([n], o) >= misfit([n], f) - 0.5 for o in f.options)]
+        if stay:
             held.add(f.segments)
             loose += [[n] for n in names if n not in stay]
+        elif len(names) > 1 and misfit(names, f) <= 1.0:
+            held.add(f.segments)
         else:
             loose.append(names)
+    # each name of a loose text takes the line that fits it best, the best fits first;
+    # the names of one text may share a line (``Rn12, R12`` drawn on one line) or take
+    # lines of their own (``Rn34, R34`` by a fan of lines from one point)
     choices = []
     for names in loose:
         f = fp.forces[names[0]]
-        for o in f.options:
-            m = misfit(names, o)
-            if m <= 1.0:
-                choices.append((m, id(names), names, o))
+        for n in names:
+            choices += [(m, n, id(names), o) for o in f.options
+                        if (m := misfit([n], o)) <= 1.0]
     changed = False
-    done: set[int] = set()
-    for _m, key, names, o in sorted(choices, key=lambda c: c[0]):
-        if key in done or o.segments in held:
+    done: set[str] = set()
+    owner: dict[tuple[int, ...], int] = {}
+    for _m, name, key, o in sorted(choices, key=lambda c: c[0]):
+        if name in done or (o.segments in held and owner.get(o.segments) != key):
             continue
-        done.add(key)
+        done.add(name)
         held.add(o.segments)
-        for name in names:
-            f = fp.forces[name]
-            fp.forces[name] = DrawnForce(name, o.start, o.end, o.sense, o.segments,
-                                         (f, *[x for x in f.options if x is not o]))
+        owner[o.segments] = key
+        f = fp.forces[name]
+        fp.forces[name] = DrawnForce(name, o.start, o.end, o.sense, o.segments,
+                                     (f, *[x for x in f.options if x is not o]))
         changed = True
     # two names each nearer the other's line (a crowded polygon): exchanged when each then
     # fits its line and together they fit better — the pair's best, not one name's
     for names in loose:
         f = fp.forces[names[0]]
-        if misfit(names, f) <= 1.0:
+        if misfit(names, f) <= 1.0 or any(fp.forces[n].segments != f.segments
+                                          for n in names):
             continue
         for o in f.options:
             other = [n for n, g in fp.forces.items() if g.segments == o.segments and
@@ -336,4 +358,4 @@ def judge_arm(a: DrawnArm, ref, sheet: dict[str, float], lang: str):
     return j
 
 
-__all__ = ["judge_arm", "judge_force_plan"]
+__all__ = ["force_vector", "judge_arm", "judge_force_plan"]

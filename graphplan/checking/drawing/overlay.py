@@ -16,6 +16,7 @@ import html
 import numpy as np
 
 from ..words import num
+from .judge_forces import force_vector
 
 BLUE = "#00a060"  # graphplan's construction: a green no CAD layer colour is by default
 RED = "#d01010"
@@ -137,9 +138,9 @@ def _force_overlay(dc, j, body: list[str], crops: list, H: float, lang: str) -> 
     for name, f in fp.forces.items():
         a = np.asarray(f.start, float)
         b = np.asarray(f.end, float)
-        line = ref.force_line(name, k) if k is not None else None
-        if line is not None and float(np.hypot(*line[1])) > 0:
-            vec = np.asarray(line[1], float) / float(j.scale)
+        line = force_vector(ref, name, k) if k is not None else None
+        if line is not None and float(np.hypot(*line)) > 0:
+            vec = np.asarray(line, float) / float(j.scale)
             d = b - a
             if not f.sense and float(np.dot(vec, d)) < 0:
                 vec = -vec  # the line's direction only: laid along the student's
