@@ -21,8 +21,14 @@ from graphplan.checking.drawing.check import check_drawing
 ROOT = Path(__file__).resolve().parents[1]
 VARIANTS = sorted((ROOT / "tests" / "data" / "variants").glob("*.toml"))
 
-# A variant whose sheet 2 still gets a false finding, with its named cause (none now):
-VARIANT_TODO: dict[tuple[str, str], str] = {}
+# A variant whose sheet 2 still gets a false finding, with its named cause:
+VARIANT_TODO: dict[tuple[str, str], str] = {
+    # session 10 (families' new variant): position 9's force plan of group 2-3 names G3 (6.7 mm,
+    # the vertical d→e) under the line e→f (R43), 6 mm right of e — a teacher reads G3 there
+    # too: the reader finds '∠G3' wrong. Sheet 2's label placement (→ sheet2 in DEFECTS.md).
+    **{("inclined_screen", f): "issue 22/18: G3 named under R43's line in position 9's plan 2-3"
+       for f in ("dxf", "svg", "pdf")},
+}
 
 
 def _formats() -> list[str]:

@@ -69,6 +69,15 @@ def test_each_chamber_of_the_double_acting_pump_presses_on_its_own_area():
         assert np.all(power <= 1e-9 * np.abs(power).max())
     net = (f1.vector[:, 0] + f2.vector[:, 0]) * vx
     assert np.count_nonzero(net < -1e-9 * np.abs(net).max()) == 10   # all but the dead centres
+    # the work over the turn, closed form: each stroke moves the piston H against a constant
+    # force, so A = −H·(0.05 + 0.60)·10⁶·(A_head + A_rod) = −0.65·10⁶·0.25·0.038249
+    # = −6215.5 J; the weights' work over a turn is nil. The dynamics' exact integral:
+    from graphplan import dynamics as dyn
+
+    H = 0.250
+    wd = dyn.work_diagrams(dyn.dynamic_model(a))
+    assert wd.A_c[-1] == pytest.approx(-0.65e6 * H * (head + annulus), rel=1e-9)
+    assert wd.M_d == pytest.approx(0.65e6 * H * (head + annulus) / (2 * math.pi), rel=1e-9)
 
 
 @pytest.mark.parametrize(("edit", "key", "words"), [
@@ -258,3 +267,34 @@ def test_each_curve_of_a_load_diagram_with_several_loads_is_named(path, names):
     «Fг1, Fг2(s)»): each curve now carries its load's name by its highest free point."""
     texts = _q_group_texts(path)
     assert sorted(t for t in texts if t.startswith(("Fг", "Fж")) and "(" not in t) == names
+
+
+# --- the inclined screen: a constant resistance on both strokes, a weight along the slope ----
+
+
+def test_the_screens_resistance_on_both_strokes_does_exactly_minus_2_f_h():
+    """A constant 600 N against the box's motion on both strokes does −2·F·H over the turn,
+    whatever the motion between (H = 82.002 mm from the test's own sampling of the box's
+    travel): −98.403 J, in the dynamics' exact integral to 1e-9; the box's weight pulls it
+    down the 12° slope (helps on the down stroke, resists on the up one) and does no work
+    over the turn."""
+    from graphplan import dynamics as dyn
+    from graphplan.kinematics import solve
+
+    a = analyze(load(VARIANTS / "inclined_screen.toml"))
+    fine = solve(a.mech, np.radians(np.arange(0.0, 360.0, 0.01)))
+    u = np.array([math.cos(math.radians(-12)), math.sin(math.radians(-12))])
+    H = float(np.ptp(fine.pos.points["E"] @ u))
+    assert pytest.approx(a.cycle.stroke, abs=1e-7) == H
+    wd = dyn.work_diagrams(dyn.dynamic_model(a))
+    assert wd.A_c[-1] == pytest.approx(-2 * 600.0 * a.cycle.stroke, rel=1e-9)
+    # the weight along the slope at every position: G5·sin 12° = 623.7 N down the slope
+    ld = compute_loads(a.mech, a.kin, a.cycle, kinds=("gravity",), inertia=False)
+    (g5,) = [f for f in ld.all_forces() if f.name == "G5"]
+    np.testing.assert_allclose(g5.vector @ u, 3000.0 * math.sin(math.radians(12)), rtol=1e-12)
+    # the resistance: 600 N along the guide against the box's velocity, 0 at the dead centres
+    (fc,) = compute_loads(a.mech, a.kin, a.cycle, kinds=("resistance",),
+                          inertia=False).all_forces()
+    v = a.kin.vel.points["E"] @ u
+    moving = np.abs(v) > 1e-9
+    np.testing.assert_allclose((fc.vector @ u)[moving], -600.0 * np.sign(v[moving]), rtol=1e-12)

@@ -7,7 +7,8 @@ at 180°, a two-stage V compressor in кгс/см², a dough mixer loaded at a c
 shears (кулиса → RRR) in rad/s and N, a slotting machine with a rotating кулиса, a two-stage
 opposed compressor with its cranks at 180°, a rocking conveyor (RRR → RRP, weights in N), a
 double-acting pump with a crosshead (a chamber on each side of the piston), a 60° V diesel with
-an articulated rod (the second group on the master rod's lug)…
+an articulated rod (the second group on the master rod's lug), a rocking inclined screen (a
+resistance on both strokes, the box's weight along a 12° slope)…
 
 Issue 17 holds the assignment families to the sheets issue's norm control: each variant's
 sheets are measured with the same measures as the examples' (``norm_measures``):
