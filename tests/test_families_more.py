@@ -80,6 +80,22 @@ def test_each_chamber_of_the_double_acting_pump_presses_on_its_own_area():
     assert wd.M_d == pytest.approx(0.65e6 * H * (head + annulus) / (2 * math.pi), rel=1e-9)
 
 
+def test_a_double_acting_pump_assembled_behind_the_crank_warns_for_both_chambers():
+    # the crosshead assembled on the other branch, behind the crank: ВМТ (s = 0, the head)
+    # would be the dead centre nearest the crank, for both chambers' diagrams
+    from graphplan.model import loads
+
+    text = (VARIANTS / "double_acting_pump.toml").read_text(encoding="utf-8")
+    old = 'branch = "+"            # the crosshead'
+    assert old in text
+    behind = text.replace(old, 'branch = "-"            # the crosshead')
+    warns = analyze(loads(behind, source="dap-behind.toml")).warnings
+    assert [w.split(": ")[1] for w in warns] == ["loads[0]", "loads[1]"]
+    assert all("where piston 3 is nearest the crank" in w and "dyads[0].branch" in w
+               for w in warns)
+    assert analyze(loads(text, source="dap.toml")).warnings == ()
+
+
 @pytest.mark.parametrize(("edit", "key", "words"), [
     ("rod = 50 ", "rod = 160 ", "the piston rod's diameter must be less than the bore"),
     ("rod = 50 ", "rod = -5 ", "must be > 0"),
