@@ -205,10 +205,43 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
                                    for i, n in enumerate(L.options)
                                    if scene.node_group(n) == g and
                                    (i == 0 or not scene.is_join(n))]
+        _unnamed_arrows(scene, g, letters, options)
         plans.append(FoundPlan(kind, g, poles[0].name, points, letters, bbox, segments=segs,
                                options=options))
     _captions(scene, plans)
     return [p for p in plans if not _is_lever(scene, p)]
+
+
+def _unnamed_arrows(scene: Scene, g: int, letters: list[Letter],
+                    options: dict[str, list[tuple[float, float]]]) -> None:
+    """An arrow of the plan whose head no letter names is the vector of the nearest letter
+    that stands at no arrowhead of its own — by a loose line end, or at a point another
+    text names too (two letters at one point only where the construction puts two points
+    at one place) — as a teacher reads a letter set off its point: that arrowhead is
+    added to the letter's options (the construction then tells which it names)."""
+    named = {L.node for L in letters}
+    texts_at: dict[int, set[int]] = {}
+    for L in letters:
+        texts_at.setdefault(L.node, set()).add(id(L.text))  # type: ignore[arg-type]
+    adrift = [L for L in letters if not pole_kind(L.name) and L.name in options and
+              (not scene.nodes[L.node].tip or len(texts_at[L.node]) > 1)]  # type: ignore[index]
+    if not adrift:
+        return
+    for n, nd in enumerate(scene.nodes):
+        if not nd.tip or n in named or scene.node_group(n) != g:
+            continue
+        L = min(adrift, key=lambda L: _box_distance(L.text, nd.x, nd.y))
+        if (nd.x, nd.y) not in options[L.name]:
+            options[L.name].append((nd.x, nd.y))
+
+
+def _box_distance(t: Text, x: float, y: float) -> float:
+    """From a text's box (its capital height, 0,7 of it per character) to a point, mm."""
+    a = math.radians(t.angle)
+    u = (x - t.x) * math.cos(a) + (y - t.y) * math.sin(a)
+    v = -(x - t.x) * math.sin(a) + (y - t.y) * math.cos(a)
+    return math.hypot(max(abs(u) - 0.35 * t.height * len(t.text), 0.0),
+                      max(abs(v) - 0.5 * t.height, 0.0))
 
 
 def _is_lever(scene: Scene, p: FoundPlan) -> bool:

@@ -14,11 +14,14 @@ lettered near it, and read as a draftsman reads it:
    (lines split into pieces followed on); the drawn crank radius ``r`` is their median
    distance, so the plan's Kl as drawn is ``l_OA / r``.
 3. **The numbers** — each text of position labels near the crank circle goes to a pin,
-   one number to each circle, at the least total cost over all numbers (the Hungarian
+   each pin numbered once, at the least total cost over all numbers (the Hungarian
    method: a number set nearer a neighbour's pin is still its own pin's when its
    neighbours' numbers sit at theirs): the distance from the text, plus how far round
-   the circle it is from the pin, a leader followed to the pin it ends at, and a number
-   between two pins given to the one its position puts there (by at most its height).
+   the circle it is from the pin, a leader followed to the pin it ends at (a line whose
+   end by the text is on a joint is a link, not a leader), and a number between two
+   pins given to the one its position puts there (by at most its height). Circles drawn
+   at one place (a 720° cycle's twins, a two-throw crank's pins) are one pin numbered as
+   many times as circles are drawn there, a second number at the cost of its height.
 4. **The joints of each position** — the exact position at its number's crank angle
    (where the pin is off it, at the angle drawn), laid from the drawn pivot at the Kl
    used, gives where each revolute joint should be. A joint is the circle the position's
@@ -326,15 +329,23 @@ def _hinge_at_end(hinges: np.ndarray, q, u=None, skip=None) -> int | None:
 
 
 def _leader_ends(scene: Scene, t: Text) -> list[np.ndarray]:
-    """The far ends of thin lines that start at a text's box (its leaders)."""
+    """The far ends of the lines that start at a text's box (its leaders). A line whose
+    end by the text is on a joint's circle is a link drawn from that joint, not a leader:
+    a leader starts at its text, free."""
     _ends_on(scene, (0.0, 0.0, 0.0))  # the lines' ends, once
     ends = scene._pp_ends  # type: ignore[attr-defined]
+    hinges = _hinges(scene)
     hw, hh = 0.35 * t.height * len(t.text) + 2.5, 0.5 * t.height + 2.0
     out = []
     for a, b in ((0, 2), (2, 0)):
         near = (np.abs(ends[:, a] - t.x) <= hw) & (np.abs(ends[:, a + 1] - t.y) <= hh) & \
             (ends[:, 4] >= 2.0) & (ends[:, 4] <= 60.0)
-        out += [ends[i, b:b + 2] for i in np.flatnonzero(near)]
+        for i in np.flatnonzero(near):
+            q = ends[i, a:a + 2]
+            if len(hinges) and bool(np.any(np.hypot(hinges[:, 0] - q[0], hinges[:, 1] - q[1])
+                                           <= hinges[:, 2] + 0.6)):
+                continue
+            out.append(ends[i, b:b + 2])
     return out
 
 
@@ -342,24 +353,32 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
-def _assign(pairs: list[tuple[float, str, int]], reach: float = 25.0) -> dict[str, int]:
-    """Labels to pins, one each, at the whole set's least total cost (the Hungarian
-    method): a number set nearer a neighbour's pin than its own is still read at its own
-    when its neighbours' numbers sit at theirs, as a teacher reads them in turn."""
-    labs = sorted({lab for _d, lab, _i in pairs})
-    pins = sorted({i for _d, _lab, i in pairs})
-    if not labs or not pins:
+def _assign(pairs: list[tuple[float, str, int, float]], slots: dict[int, int],
+            reach: float = 25.0) -> dict[str, int]:
+    """Labels to pin places at the whole set's least total cost (the Hungarian method): a
+    number set nearer a neighbour's pin than its own is still read at its own when its
+    neighbours' numbers sit at theirs, as a teacher reads them in turn. ``pairs``: (cost,
+    label, place, the number's height); ``slots``: how many circles are drawn at each
+    place. Each pin is numbered once: a second number goes to a place already numbered
+    (two positions drawn at one place: a 720° cycle's twins, a two-throw crank's pins)
+    only at the cost of its height more, where no free pin by it takes it."""
+    labs = sorted({lab for _d, lab, _i, _h in pairs})
+    cols = [(i, k) for i in sorted(slots) for k in range(max(slots[i], 1))]
+    if not labs or not cols:
         return {}
     big = 1e6
-    C = np.full((len(labs), max(len(pins), len(labs))), big)
+    C = np.full((len(labs), max(len(cols), len(labs))), big)
     li = {lab: n for n, lab in enumerate(labs)}
-    pi = {i: n for n, i in enumerate(pins)}
-    for d, lab, i in pairs:
-        if d <= reach:
-            C[li[lab], pi[i]] = min(C[li[lab], pi[i]], d)
-    cols = _hungarian(C)
-    return {lab: pins[c] for lab, c in zip(labs, cols, strict=True)
-            if c < len(pins) and C[li[lab], c] < big}
+    ci: dict[int, list[int]] = {}
+    for n, (i, _k) in enumerate(cols):
+        ci.setdefault(i, []).append(n)
+    for d, lab, i, h in pairs:
+        if d <= reach and i in ci:
+            for k, c in enumerate(ci[i]):
+                C[li[lab], c] = min(C[li[lab], c], d + k * h)
+    got = _hungarian(C)
+    return {lab: cols[c][0] for lab, c in zip(labs, got, strict=True)
+            if c < len(cols) and C[li[lab], c] < big}
 
 
 def _hungarian(C: np.ndarray) -> list[int]:
@@ -478,6 +497,13 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
     # a pin whose crank line is broken (by a slide block drawn over it) is on the circle too
     dh = np.hypot(hinges[:, 0] - o[0], hinges[:, 1] - o[1])
     pins = sorted(set(pins) | {int(i) for i in np.flatnonzero(np.abs(dh - r) <= 0.02 * r + 0.3)})
+    # the circles drawn at one place (two positions' pins, a two-throw crank's A and D)
+    # are one pin place, numbered as many times as circles are drawn there
+    slots: dict[int, int] = {}
+    for i in pins:
+        k0 = next((k for k in slots if math.hypot(*(hinges[k, :2] - hinges[i, :2])) < 0.3), i)
+        slots[k0] = slots.get(k0, 0) + 1
+    pins = sorted(slots)
     plan = PositionPlan(cap, kl, (float(o[0]), float(o[1])), r)
     # 3. the numbers
     labels = list(ref.labels)
@@ -526,8 +552,8 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
                 # a number between two pins goes to the one its position puts there (by
                 # at most its height: it only settles what the sheet leaves open)
                 prior = min(r * abs(_wrap(ang - phi[lab])), t.height)
-                pairs.append((d + prior, lab, i))
-    for lab, i in _assign(pairs).items():
+                pairs.append((d + prior, lab, i, t.height))
+    for lab, i in _assign(pairs, slots).items():
         c = hinges[i]
         plan.pins[lab] = (float(c[0]), float(c[1]))
         plan.angles[lab] = math.atan2(c[1] - o[1], c[0] - o[0])
