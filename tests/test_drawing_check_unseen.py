@@ -152,3 +152,29 @@ def test_a_class_folder_goes_on_past_a_broken_drawing(tmp_path, capsys):
 
     text = page.read_text(encoding="utf-8")
     assert "<svg" in text and RED in text  # the plan drawn at another scale, in red
+
+
+def test_pdf_with_its_text_as_outlines_is_one_clear_line(tmp_path, capsys):
+    """A PDF printed from a viewer that turns text into curves (the plans drawn by
+    matplotlib, its letters as glyph paths, printed to PDF by cairosvg): no letter can be
+    read, and the check says so in one line naming the file and why, in English and in
+    Russian — not "no plan found"; the same sheet with its text kept is checked clean."""
+    pytest.importorskip("matplotlib")
+    pytest.importorskip("cairosvg")
+    from graphplan.cli import main
+
+    out = student_sheet(PRESS, tmp_path / "outlines.pdf", LABELS, fmt="pdf", outlines=True)
+    d = read_drawing(out)
+    assert not d.texts and len(d.fills) > 100 and d.segments  # glyphs are filled shapes
+    with pytest.raises(DrawingError) as e:
+        check_drawing(out, PRESS)
+    msg = str(e.value)
+    assert "\n" not in msg and "outlines.pdf" in msg and "no letters can be read" in msg
+    assert "outlines" in msg.split("outlines.pdf", 1)[1]
+    assert main(["check", "--drawing", str(out), "--variant", str(PRESS), "--lang", "ru"]) != 0
+    err = capsys.readouterr().err
+    assert "буквы не прочитать" in err and "контурами" in err, err
+    kept = student_sheet(PRESS, tmp_path / "text.pdf", LABELS, fmt="pdf")
+    dc = check_drawing(kept, PRESS, lang="en")
+    assert dc.report.ok and _found(dc) == sorted(
+        (k, lab) for k in ("velocity", "acceleration") for lab in LABELS)

@@ -87,6 +87,11 @@ def check_drawing(path: str | Path, variant: str | Path, tolerances: dict | None
     found = find_plans(scene)
     sheet = assign_scales(found, stated_scales(d.texts))
     notes: list[str] = list(d.notes)
+    if not d.texts and d.fills:  # letters as outlines are filled shapes, no text
+        raise DrawingError(
+            f"{path}: no letters can be read: the drawing holds no text ({len(d.segments)} "
+            f"lines, {len(d.fills)} filled shapes); if its letters are drawn as outlines, "
+            f"export it with the text kept as text")
     if not found and not any(t.text.strip() in ("h21",) or "сил" in t.text.lower() or
                              caption_kind(t.text) == "scheme" for t in d.texts):
         raise DrawingError(

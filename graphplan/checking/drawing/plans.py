@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..units import fold
 from .primitives import Text
@@ -34,6 +34,9 @@ _KIND_WORDS = {"lever": ("рычаг", "жуковск", "lever", "zhukovsk"),
                "scheme": ("схема", "scheme", "diagram of", "план положени")}
 _SCALE = re.compile(r"(?<![A-Za-zА-Яа-я])(?:[KК]|μ|µ|m(?=u))\s*u?\s*_?\s*\{?\s*"
                     r"([lLvapPFfлр])(?![A-Za-zА-Яа-я])\s*\}?\s*=")
+_RATIO = re.compile(r"(\d+(?:[.,]\d+)?)\s*:\s*(\d+(?:[.,]\d+)?)(?![\d:])")
+_RATIO_M = re.compile(r"(?<![A-Za-zА-Яа-я])(?:[MМ]|Масштаб|[Ss]cale)\s*"
+                      r"(\d+(?:[.,]\d+)?)\s*:\s*(\d+(?:[.,]\d+)?)(?![\d:])")
 _NUMBER = re.compile(r"[-+]?\d+(?:[.,]\d+)?(?:\s*[·*x×]\s*10\s*\^?\s*[-−]?\d+|[eE][-+]?\d+)?")
 _SCALE_OF = {"l": "Kl", "L": "Kl", "л": "Kl", "v": "Kv", "a": "Ka", "p": "Kp", "P": "Kp",
              "F": "Kp", "f": "Kp", "р": "Kp"}
@@ -118,6 +121,16 @@ def stated_scales(texts) -> list[StatedScale]:
     for t in texts:
         s = t.text
         m = _SCALE.search(s)
+        # a drawing's scale by ГОСТ 2.302 (``М 1:2``, ``Масштаб 2:1``, ``μl = 1:2``): 1 mm
+        # of paper is b/a mm of the mechanism; a ratio is no velocity's or force's scale
+        ratio = _RATIO.search(s[m.end():]) if m else _RATIO_M.search(s)
+        if ratio and m and ratio.start() > 0 and s[m.end():][:ratio.start()].strip():
+            ratio = None  # "Kl = lOA/OA = …": not a ratio right after the sign
+        if ratio:
+            a, b = (float(g.replace(",", ".")) for g in ratio.group(1, 2))
+            if a > 0 and b > 0 and (not m or _SCALE_OF.get(m.group(1)) == "Kl"):
+                out.append(StatedScale("Kl", b / a / 1000.0, t))
+            continue
         if not m or re.search(r"\bH\s*\d?\s*=", s):
             continue
         sym = _SCALE_OF.get(m.group(1))
@@ -173,6 +186,19 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
         if L.node is None:
             continue
         by_group.setdefault(scene.node_group(L.node), []).append(L)
+    # a letter by the loose end of a construction line that lies apart from every plan
+    # (a line drawn through a point but stopped short of it) is read with the plan of
+    # the next node it is nearly as near
+    poled = {g for g, ls in by_group.items() if any(pole_kind(L.name) for L in ls)}
+    for g in [g for g in by_group if g not in poled]:
+        for L in list(by_group[g]):
+            nd = scene.nodes[L.node]  # type: ignore[index]
+            to = next((n for n in L.options[1:] if scene.node_group(n) in poled), None)
+            if to is None or nd.tip or nd.ends != 1 or nd.passes:
+                continue
+            by_group[g].remove(L)
+            by_group[scene.node_group(to)].append(
+                replace(L, node=to, options=(to, *(n for n in L.options if n != to))))
     plans = []
     for g, letters in by_group.items():
         poles = [L for L in letters if pole_kind(L.name)]
@@ -214,34 +240,24 @@ def find_plans(scene: Scene) -> list[FoundPlan]:
 
 def _unnamed_arrows(scene: Scene, g: int, letters: list[Letter],
                     options: dict[str, list[tuple[float, float]]]) -> None:
-    """An arrow of the plan whose head no letter names is the vector of the nearest letter
-    that stands at no arrowhead of its own — by a loose line end, or at a point another
+    """An arrow of the plan whose head no letter names is the vector of one of the letters
+    that stand at no arrowhead of their own — by a loose line end, or at a point another
     text names too (two letters at one point only where the construction puts two points
     at one place) — as a teacher reads a letter set off its point: that arrowhead is
-    added to the letter's options (the construction then tells which it names)."""
+    added to each such letter's options, and the construction tells which it names
+    (:func:`.measure.lay` takes of a letter's options the one nearest its point)."""
     named = {L.node for L in letters}
     texts_at: dict[int, set[int]] = {}
     for L in letters:
         texts_at.setdefault(L.node, set()).add(id(L.text))  # type: ignore[arg-type]
     adrift = [L for L in letters if not pole_kind(L.name) and L.name in options and
               (not scene.nodes[L.node].tip or len(texts_at[L.node]) > 1)]  # type: ignore[index]
-    if not adrift:
-        return
     for n, nd in enumerate(scene.nodes):
         if not nd.tip or n in named or scene.node_group(n) != g:
             continue
-        L = min(adrift, key=lambda L: _box_distance(L.text, nd.x, nd.y))
-        if (nd.x, nd.y) not in options[L.name]:
-            options[L.name].append((nd.x, nd.y))
-
-
-def _box_distance(t: Text, x: float, y: float) -> float:
-    """From a text's box (its capital height, 0,7 of it per character) to a point, mm."""
-    a = math.radians(t.angle)
-    u = (x - t.x) * math.cos(a) + (y - t.y) * math.sin(a)
-    v = -(x - t.x) * math.sin(a) + (y - t.y) * math.cos(a)
-    return math.hypot(max(abs(u) - 0.35 * t.height * len(t.text), 0.0),
-                      max(abs(v) - 0.5 * t.height, 0.0))
+        for L in adrift:
+            if (nd.x, nd.y) not in options[L.name]:
+                options[L.name].append((nd.x, nd.y))
 
 
 def _is_lever(scene: Scene, p: FoundPlan) -> bool:

@@ -20,8 +20,9 @@ lettered near it, and read as a draftsman reads it:
    the circle it is from the pin, a leader followed to the pin it ends at (a line whose
    end by the text is on a joint is a link, not a leader), and a number between two
    pins given to the one its position puts there (by at most its height). Circles drawn
-   at one place (a 720° cycle's twins, a two-throw crank's pins) are one pin numbered as
-   many times as circles are drawn there, a second number at the cost of its height.
+   at one place are one pin, numbered as many times as positions of the cycle fall at
+   one crank angle (twice over a 720° cycle); one more number there (a two-throw crank's
+   pins drawn at one place) at the cost of its height, up to the circles drawn there.
 4. **The joints of each position** — the exact position at its number's crank angle
    (where the pin is off it, at the angle drawn), laid from the drawn pivot at the Kl
    used, gives where each revolute joint should be. A joint is the circle the position's
@@ -354,14 +355,15 @@ def _wrap(a: float) -> float:
 
 
 def _assign(pairs: list[tuple[float, str, int, float]], slots: dict[int, int],
-            reach: float = 25.0) -> dict[str, int]:
+            twins: int = 1, reach: float = 25.0) -> dict[str, int]:
     """Labels to pin places at the whole set's least total cost (the Hungarian method): a
     number set nearer a neighbour's pin than its own is still read at its own when its
     neighbours' numbers sit at theirs, as a teacher reads them in turn. ``pairs``: (cost,
     label, place, the number's height); ``slots``: how many circles are drawn at each
-    place. Each pin is numbered once: a second number goes to a place already numbered
-    (two positions drawn at one place: a 720° cycle's twins, a two-throw crank's pins)
-    only at the cost of its height more, where no free pin by it takes it."""
+    place; ``twins``: how many positions of the cycle fall at one crank angle (2 over a
+    720° cycle). A place takes that many numbers; one more (circles drawn at one place
+    for another reason: a two-throw crank's pins) only at the cost of its height more,
+    where no free pin by it takes it."""
     labs = sorted({lab for _d, lab, _i, _h in pairs})
     cols = [(i, k) for i in sorted(slots) for k in range(max(slots[i], 1))]
     if not labs or not cols:
@@ -375,7 +377,7 @@ def _assign(pairs: list[tuple[float, str, int, float]], slots: dict[int, int],
     for d, lab, i, h in pairs:
         if d <= reach and i in ci:
             for k, c in enumerate(ci[i]):
-                C[li[lab], c] = min(C[li[lab], c], d + k * h)
+                C[li[lab], c] = min(C[li[lab], c], d + max(k - twins + 1, 0) * h)
     got = _hungarian(C)
     return {lab: cols[c][0] for lab, c in zip(labs, got, strict=True)
             if c < len(cols) and C[li[lab], c] < big}
@@ -510,8 +512,14 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
     phi = {lab: float(ref.kin.phi[k]) for k, lab in enumerate(labels)}
     pin_letter = ref.mech.crank.pin
     by_text = {id(L.text): L for L in scene.letters}
+    # the texts the scene reads on a leader (the letter's node is that leader's point;
+    # else it is only the node nearest the text)
+    on_leader = getattr(scene, "_pp_leaders", None)
+    if on_leader is None:
+        on_leader = set(scene._leaders()[0])
+        scene._pp_leaders = on_leader  # type: ignore[attr-defined]
     pairs = []
-    for t in scene.drawing.texts:
+    for ti, t in enumerate(scene.drawing.texts):
         names = split_names(t.text)
         labs: list[str] = []
         for n in names:
@@ -534,7 +542,7 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
             continue  # far out only on a leader to a pin
         L = by_text.get(id(t))
         lead = None
-        if L is not None and L.node is not None:
+        if L is not None and L.node is not None and ti in on_leader:
             nd = scene.nodes[L.node]
             lead = (nd.x, nd.y)
         at = math.atan2(t.y - o[1], t.x - o[0])
@@ -553,7 +561,11 @@ def _read(scene: Scene, ref, cap: Text, kl, pc, hinges) -> PositionPlan | None:
                 # at most its height: it only settles what the sheet leaves open)
                 prior = min(r * abs(_wrap(ang - phi[lab])), t.height)
                 pairs.append((d + prior, lab, i, t.height))
-    for lab, i in _assign(pairs, slots).items():
+    at_angle: dict[float, int] = {}
+    for a in phi.values():
+        turn = round(a % (2 * math.pi), 6) % round(2 * math.pi, 6)
+        at_angle[turn] = at_angle.get(turn, 0) + 1
+    for lab, i in _assign(pairs, slots, max(at_angle.values(), default=1)).items():
         c = hinges[i]
         plan.pins[lab] = (float(c[0]), float(c[1]))
         plan.angles[lab] = math.atan2(c[1] - o[1], c[0] - o[0])
@@ -686,9 +698,11 @@ def lay_joints(plan: PositionPlan, scene: Scene, ref, kl: float, laid_at: dict[s
         D = np.hypot(E[:, None, 0] - H[None, :, 0], E[:, None, 1] - H[None, :, 1])
         claimed: dict[int, np.ndarray] = {}
         for key, xy in plan.joints.items():  # taken along the links, for its own place
-            hit = np.flatnonzero(np.hypot(H[:, 0] - xy[0], H[:, 1] - xy[1]) < 1e-6)
-            if len(hit):
-                claimed.setdefault(int(hit[0]), np.asarray(plan.expected[key]))
+            # (of circles drawn at one place, one each: the places' own circles)
+            hit = [int(h) for h in np.flatnonzero(np.hypot(H[:, 0] - xy[0], H[:, 1] - xy[1])
+                                                  < 1e-6) if int(h) not in claimed]
+            if hit:
+                claimed[hit[0]] = np.asarray(plan.expected[key])
         # each hinge once, the whole set's least total distance (crowded joints near a
         # dead centre each at their own circle); then a hinge drawn once for two places
         # where they coincide

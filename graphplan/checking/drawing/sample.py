@@ -156,20 +156,23 @@ def _letters(pts: dict, merge: float = 0.3) -> list[tuple[str, np.ndarray, np.nd
 
 def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
                   plant: Plant | None = None, origin=(5000.0, -3000.0),
-                  inches: bool = False, leaders: float = 0.0) -> Path:
+                  inches: bool = False, leaders: float = 0.0,
+                  outlines: bool = False) -> Path:
     """Draw the plans of ``labels`` of a variant as a student's DXF or PDF (module doc).
 
     ``leaders`` (DXF): every letter set this many mm farther out than usual and joined
     to its point by a thin leader line that stops 1.5 mm short of the point (выноска);
     the pole's letters (with those of every point at the pole) set below the pole, under
-    two short direction lines drawn through it."""
+    two short direction lines drawn through it. ``outlines`` (PDF): every letter drawn as
+    its glyphs' outlines, no text (as a PDF printed from a viewer that turns text into
+    curves)."""
     from ..checks import reference_for
 
     ref = reference_for(Path(variant))
     plans = _layout(ref, labels, plant)
     path = Path(path)
     if fmt == "pdf":
-        _pdf(plans, path)
+        _pdf(plans, path, outlines)
     else:
         _dxf(plans, path, np.asarray(origin, float), inches, leaders)
     return path
@@ -314,7 +317,7 @@ def mpl_page(width: float, height: float):
     return fig, ax
 
 
-def _pdf(plans, path: Path) -> None:
+def _pdf(plans, path: Path, outlines: bool = False) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -363,8 +366,18 @@ def _pdf(plans, path: Path) -> None:
                         ha="left" if out[0] >= 0 else "right",
                         va="bottom" if out[1] >= 0 else "top")
             del pole
-        with PdfPages(path, metadata={"CreationDate": None}) as pdf:
-            pdf.savefig(fig)
+        if outlines:  # the text as its glyphs' paths (SVG), the SVG printed to a PDF
+            import io
+
+            import cairosvg
+
+            buf = io.BytesIO()
+            with matplotlib.rc_context({"svg.fonttype": "path", "svg.hashsalt": "0"}):
+                fig.savefig(buf, format="svg")
+            path.write_bytes(cairosvg.svg2pdf(bytestring=buf.getvalue()))
+        else:
+            with PdfPages(path, metadata={"CreationDate": None}) as pdf:
+                pdf.savefig(fig)
         plt.close(fig)
 
 

@@ -51,9 +51,13 @@ class PositionPlant:
 def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = None,
                     inches: bool = False, letter_numbers: bool = False,
                     origin: tuple[float, float] = (3150.0, -1720.0),
-                    hinge_r: float = 1.2) -> Path:
+                    hinge_r: float = 1.2, kl: float | None = None,
+                    scale_text: str | None = None) -> Path:
     """Write the plan of all positions of ``variant`` as a DXF (module docstring); the
-    joints' circles of radius ``hinge_r`` mm, each centre of mass a filled dot of 0,8 mm."""
+    joints' circles of radius ``hinge_r`` mm, each centre of mass a filled dot of 0,8 mm.
+    ``kl``: the plan drawn at this Kl, m/mm (graphplan's sheet 1's when None);
+    ``scale_text``: the scale as written after the caption's words (``М 1:2``; else
+    ``μl = … м/мм``), the plant's ``scale`` factor then not applied to it."""
     import ezdxf
 
     from ...kinematics import solve_positions
@@ -62,7 +66,7 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
     path = Path(path)
     ref = reference_for(Path(variant))
     mech, kin = ref.mech, ref.kin
-    kl = ref.analysis.sheet1.kl.per_mm
+    kl = kl or ref.analysis.sheet1.kl.per_mm
     labels = list(ref.labels)
     phi = [float(p) for p in kin.phi]
     if plant is not None and plant.kind == "extreme":
@@ -197,7 +201,8 @@ def positions_sheet(variant, path: str | Path, *, plant: PositionPlant | None = 
                 X(q), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
     top = max(float(at(n, k)[1]) for n in P for k in range(len(labels))) + 15.0
     written = kl * (plant.factor if plant is not None and plant.kind == "scale" else 1.0)
-    msp.add_mtext(f"План положений, μl = {written:g} м/мм".replace(".", ","),
+    caption = f"План положений, μl = {written:g} м/мм".replace(".", ",")
+    msp.add_mtext(f"План положений {scale_text}" if scale_text else caption,
                   dxfattribs={"char_height": 5.0 * u}).set_location(
         X((org[0] - 60.0, top)), attachment_point=7)
     doc.saveas(path)
