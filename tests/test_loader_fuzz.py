@@ -977,3 +977,15 @@ def test_guide_toward_a_coincident_point_names_the_crank_angle():
     exc = first_error(dumps(doc))
     assert isinstance(exc, g.AssemblyError)
     assert "φ = " in str(exc), str(exc)
+
+
+def test_guide_toward_a_point_a_subnormal_distance_away_is_coincident():
+    # found by test_random_mechanisms (session 10): C 2.2e-313 m from O, a guide from O toward
+    # C: the direction's reciprocal distance overflowed (a RuntimeWarning, not a clean error)
+    doc = press()
+    doc["frame"]["points"]["C"] = [0.0, 2.2250738585e-313]
+    doc["dyads"][0]["guide"] = {"link": "4", "through": "O", "toward": "C"}
+    exc = first_error(dumps(doc))
+    assert isinstance(exc, g.AssemblyError), exc
+    assert_clean(exc)
+    assert "the two points coincide" in str(exc)

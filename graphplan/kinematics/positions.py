@@ -129,6 +129,10 @@ def as_xy(z, n: int) -> Array:
     return np.broadcast_to(np.array([z.real, z.imag]), (n, 2))
 
 
+_TINY = float(np.finfo(float).tiny)
+"""The smallest normal float: a distance below it gives no direction (its reciprocal overflows)."""
+
+
 def cdiv(z, r):
     """``z / r`` for complex z and real r (a reciprocal, then a product: one rounding more
     than dividing each component, two numpy calls fewer)."""
@@ -221,7 +225,7 @@ def _cguide(g: Guide, pts, theta, n: int, where_: str, phi, labels, frame: str):
     if g.toward is not None:
         d = pts[g.toward] - base
         dist = np.abs(d)
-        if not np.all(dist > 0):
+        if not np.all(dist >= _TINY):  # a subnormal distance: 1/dist would overflow
             k = int(np.argmin(np.broadcast_to(dist, (n,))))
             at = where(phi, k, labels) if phi is not None else f"position {k}"
             raise AssemblyError(f"{where_}: guide on link {g.link}: the direction from "
