@@ -178,3 +178,31 @@ def test_pdf_with_its_text_as_outlines_is_one_clear_line(tmp_path, capsys):
     dc = check_drawing(kept, PRESS, lang="en")
     assert dc.report.ok and _found(dc) == sorted(
         (k, lab) for k in ("velocity", "acceleration") for lab in LABELS)
+
+
+@pytest.mark.parametrize(("v", "scales"), [(PRESS, 2.0), (ROOT / "tests" / "data" / "variants" /
+                                                      "loom_beater.toml", 0.5)],
+                         ids=["press", "loom_beater"])
+def test_plans_at_a_cad_users_own_scales(tmp_path, v, scales):
+    """Sheet 1's plans redrawn by a CAD user at scales of their own (twice or half
+    graphplan's Kv and Ka), the scales written with the unit as «μv = 0,02 м/(с·мм)»,
+    «μa = … м/(с²·мм)»: every plan found and read at the scale written, nothing wrong;
+    the same drawing with one scale written wrong is a ``scale`` finding."""
+    from graphplan.checking.checks import reference_for
+
+    ref = reference_for(v)
+    labels = [ref.labels[2], ref.labels[4]]
+    out = student_sheet(v, tmp_path / "own.dxf", labels, scales=scales, units="м/(с·мм)")
+    texts = [t.dxf.text for t in __import__("ezdxf").readfile(out).modelspace().query("TEXT")]
+    assert any("м/(с·мм)" in t for t in texts) and any("м/(с²·мм)" in t for t in texts)
+    dc = check_drawing(out, v, lang="en")
+    assert dc.report.ok, _wrong(dc.report)
+    assert _found(dc) == sorted((k, lab) for k in ("velocity", "acceleration")
+                                for lab in labels)
+    for j in dc.plans:
+        own = ref.sheet1.kv if j.found.kind == "velocity" else ref.sheet1.ka
+        assert j.scale == pytest.approx(own.per_mm * scales, rel=1e-3), (j.found.kind, j.scale)
+    bad = student_sheet(v, tmp_path / "bad.dxf", labels, scales=scales, units="м/(с·мм)",
+                        plant=Plant("scale", "velocity", labels[0]))
+    rep = check_drawing(bad, v, lang="en").report
+    assert (labels[0], "Kv", "scale") in _wrong(rep), _wrong(rep)

@@ -89,11 +89,14 @@ def _without_normal(plan, normal: str):
     return pts, [e for e in segs if e is not nseg]
 
 
-def _layout(ref, labels, plant: Plant | None):
+def _layout(ref, labels, plant: Plant | None, scales: float = 1.0):
     """Each plan to draw: (kind, caption label, scale symbol, scale written, points,
-    segments, letters) in plan mm."""
+    segments, letters) in plan mm, at ``scales`` times graphplan's Kv and Ka."""
+    from dataclasses import replace
+
     sc = ref.sheet1  # with the student's extra positions
-    kl, kv, ka = sc.kl, sc.kv, sc.ka
+    kl = sc.kl
+    kv, ka = (replace(k, per_mm=k.per_mm * scales) for k in (sc.kv, sc.ka))
     out = []
     for lab in labels:
         for kind in ("velocity", "acceleration"):
@@ -157,7 +160,8 @@ def _letters(pts: dict, merge: float = 0.3) -> list[tuple[str, np.ndarray, np.nd
 def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
                   plant: Plant | None = None, origin=(5000.0, -3000.0),
                   inches: bool = False, leaders: float = 0.0,
-                  outlines: bool = False) -> Path:
+                  outlines: bool = False, scales: float = 1.0,
+                  units: str = "(м/с)/мм") -> Path:
     """Draw the plans of ``labels`` of a variant as a student's DXF or PDF (module doc).
 
     ``leaders`` (DXF): every letter set this many mm farther out than usual and joined
@@ -165,16 +169,18 @@ def student_sheet(variant, path: str | Path, labels, fmt: str = "dxf",
     the pole's letters (with those of every point at the pole) set below the pole, under
     two short direction lines drawn through it. ``outlines`` (PDF): every letter drawn as
     its glyphs' outlines, no text (as a PDF printed from a viewer that turns text into
-    curves)."""
+    curves). ``scales``: the plans drawn at this many times graphplan's Kv and Ka (a CAD
+    user's own scales); ``units`` (DXF): the velocity scale's unit as written, ``(м/с)/мм``
+    or ``м/(с·мм)`` (the acceleration's alike, ``с²``)."""
     from ..checks import reference_for
 
     ref = reference_for(Path(variant))
-    plans = _layout(ref, labels, plant)
+    plans = _layout(ref, labels, plant, scales)
     path = Path(path)
     if fmt == "pdf":
         _pdf(plans, path, outlines)
     else:
-        _dxf(plans, path, np.asarray(origin, float), inches, leaders)
+        _dxf(plans, path, np.asarray(origin, float), inches, leaders, units)
     return path
 
 
@@ -191,7 +197,8 @@ def _cells(plans):
         yield p, np.array([20.0 - min(xs) + w * col, 20.0 - min(ys) + h * (1 - row)])
 
 
-def _dxf(plans, path: Path, origin: np.ndarray, inches: bool, leaders: float = 0.0) -> None:
+def _dxf(plans, path: Path, origin: np.ndarray, inches: bool, leaders: float = 0.0,
+         units: str = "(м/с)/мм") -> None:
     import ezdxf
 
     doc = ezdxf.new("R2013")
@@ -214,7 +221,8 @@ def _dxf(plans, path: Path, origin: np.ndarray, inches: bool, leaders: float = 0
         cap = msp.add_mtext(f"Положение {lab}. План {word}",
                             dxfattribs={"char_height": 3.5 * k, "layer": "ПЛАНЫ"})
         cap.set_location(X(c + np.array([-30.0, top])))
-        unit = "(м/с)/мм" if kind == "velocity" else "(м/с²)/мм"
+        unit = units if kind == "velocity" else units.replace("с)", "с²)").replace(
+            "(с·", "(с²·")
         mu = "μv" if kind == "velocity" else "μa"
         msp.add_text(f"{mu} = {written:.4g} {unit}".replace(".", ","),
                      dxfattribs={"height": 2.5 * k, "layer": "ПЛАНЫ"}).set_placement(
