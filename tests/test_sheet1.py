@@ -553,3 +553,34 @@ def test_a_grid_with_room_draws_further_acceleration_plans_at_the_same_scales(bu
     for i, k in enumerate(extra):
         before = sc.acc_plans[:len(sc.analysed) + i]
         assert apart(k, before) >= apart(extra[-1], before) - 1e-9
+
+
+def test_flat_schemes_under_the_plan_of_positions_leave_the_height_to_the_diagrams():
+    """Under the plan of positions a row of ω/ε schemes grows only as far as its mechanism,
+    drawn as wide as its cell, can use; the kinematic diagrams take the rest (up to
+    DIAGRAM_MAX_H). Hand-checked: three cells in one row, 64 + 64 + 120 mm in a 300 mm
+    column, each 17.3 mm wider (81.3, 81.3, 137.3); a mechanism 0.9 × 0.09 m drawn 113.3 mm
+    wide (137.3 − 2·12) is 11.3 mm tall: with 10 mm of arrows and blocks, 2·12 mm of room
+    and the 7 mm caption, 52.3 mm — under the row's 67 mm, so the row stays 67 mm; a
+    0.5 × 0.5 m mechanism asks 113.3 + 41 − 67 = 87.3 mm more, capped at SCHEME_H's 80.
+    The column under a 200 mm plan of positions has 585 − (23 + 200 + 8) = 354 mm: 279 for
+    the diagrams under the flat schemes (under DIAGRAM_MAX_H, so nothing goes back to the
+    schemes), 199 under the square ones."""
+    from graphplan.paper import Page
+    from graphplan.project.layout import DIAGRAM_MAX_H, SCHEME_H, sheet1_layout
+
+    def laid(extent):
+        return sheet1_layout(Page("A1"), 300.0, 200.0, 12, ((1.0, 0.5),) * 12,
+                             ((1.0, 0.6),) * 2, scheme_extent=extent, n_groups=1)
+
+    flat, square = laid((0.9, 0.09)), laid((0.5, 0.5))
+    for lay in (flat, square):
+        assert len({round(c.y0, 6) for c in (*lay.schemes, lay.groups)}) == 1  # one row
+        assert lay.diagrams.y0 >= max(c.y1 for c in (*lay.schemes, lay.groups))
+    assert flat.schemes[0].height == pytest.approx(SCHEME_H[0] + 7.0)
+    assert square.schemes[0].height == pytest.approx(SCHEME_H[1] + 7.0)
+    column_foot = flat.diagrams.y1
+    assert flat.diagrams.height == pytest.approx(
+        min(DIAGRAM_MAX_H, column_foot - flat.schemes[0].y1 - 8.0))
+    assert flat.diagrams.height == pytest.approx(279.0)
+    assert square.diagrams.height == pytest.approx(199.0)

@@ -151,6 +151,30 @@ def _place(x0: float, y0: float, width: float, boxes: list[tuple[float, float]],
 
 
 SCHEME_ROOM = 12.0  #: kept round a scheme in its cell for its arrows and letters, mm
+SCHEME_PAD = 10.0  #: what a scheme draws at a fixed paper size over its links' height (the
+#: arrows of ω and ε, blocks, a guide's hatching, the groups' formulas), and its caption's
+#: gap over the drawing, mm
+
+
+def _usable(boxes: list[tuple[float, float]], rows: list[list[int]], width: float,
+            extent: tuple[float, float] | None, room: float) -> list[float]:
+    """Extra height each row of schemes (``boxes`` in ``rows``, cells stretched to share
+    ``width``) can use: its mechanism (``extent``, m) drawn as wide as its cell allows is
+    that tall, plus SCHEME_PAD, within SCHEME_H's range; ``room`` in all, shared in
+    proportion when short. Without ``extent``, SCHEME_H's range."""
+    want = []
+    for r in rows:
+        spare = (width - sum(boxes[i][0] for i in r)) / len(r)
+        base = max(boxes[i][1] for i in r)
+        if extent is None or extent[0] <= 0.0:
+            ask = math.inf
+        else:
+            ask = max(extent[1] * (boxes[i][0] + spare - 2 * SCHEME_ROOM) / extent[0]
+                      for i in r) + SCHEME_PAD + 2 * SCHEME_ROOM + CAPTION - base
+        want.append(min(max(ask, 0.0), SCHEME_H[1] - SCHEME_H[0]))
+    total = sum(want)
+    k = 1.0 if total <= room else max(room, 0.0) / max(total, 1e-9)
+    return [w * k for w in want]
 
 
 def _tiled(region: Rect, aspects: list[float]) -> list[Rect]:
@@ -186,7 +210,8 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
                   longest: tuple[float, float] = (2.0, 2.0), n_groups: int = 1,
                   scheme_aspect: float = 1.0, groups_aspect: float = 2.0,
                   sizes: tuple[float, float] | None = None,
-                  n_schemes: int | None = None) -> Sheet1Layout:
+                  n_schemes: int | None = None,
+                  scheme_extent: tuple[float, float] | None = None) -> Sheet1Layout:
     """Cut ``page`` for a plan of positions of ``plan_w``×``plan_h`` mm and N positions.
 
     The left column holds the plan of positions and under it the kinematic diagrams (the
@@ -200,6 +225,11 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
     enough for them and the diagrams, else after the plans. The defining vectors are made
     as long as the place allows (neither plan's longest vector over VECTOR_HARD,
     ``longest`` per mm of it); the height left grows the schemes, then every row.
+
+    ``scheme_extent``: the width and height (m) of the mechanism in the analysed positions:
+    under the plan of positions a row of schemes grows only as much as its drawing, at the
+    scale its width allows, can use (the rest goes to the diagrams; unknown: as much as
+    SCHEME_H allows).
 
     ``n_schemes``: how many of the acceleration plans (the first) get the scheme of their
     position's ω and ε (all by default: the analysed positions; further plans have none).
@@ -258,8 +288,15 @@ def sheet1_layout(page: Page, plan_w: float, plan_h: float, n_positions: int,
         h_left, rows_left = _shelves(0.0, 0.0, left_w, ex)
         under = rest - h_left - GAP >= max(DIAGRAM_PREF_H, dmin_h)
         if under:
+            # the rows of schemes as tall as their drawings can use (a flat mechanism's
+            # scheme is no larger in a taller cell), the diagrams keeping DIAGRAM_PREF_H; the
+            # diagrams the height left up to DIAGRAM_MAX_H, what they cannot use the
+            # schemes' rows again
+            room = rest - h_left - GAP
+            first = _usable(ex, rows_left, left_w, scheme_extent, room - DIAGRAM_PREF_H)
+            more = grown(rows_left, room - sum(first) - DIAGRAM_MAX_H)
             schemes, band_bottom = _place(x0, d_top, left_w, ex, rows_left,
-                                          grown(rows_left, rest - h_left - GAP - DIAGRAM_PREF_H))
+                                          [a + b for a, b in zip(first, more, strict=True)])
             d_top = band_bottom + GAP
     d_h = min(f.y1 - 4.0 - d_top, DIAGRAM_MAX_H)
     diagrams = Rect(x0, f.y1 - 4.0 - d_h, x0 + left_w, f.y1 - 4.0)

@@ -301,6 +301,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         every = distinct_positions(kin) if given is None else given
         tries = [every, every[::2], ()]
         scheme_aspect = _scheme_aspect(mech, kin, acc)
+        extent = _scheme_extent(kin, acc[:n_schemes] if n_schemes is not None else acc)
         for n_try, chosen in enumerate(tries):
             # an acceleration plan's velocity plan is drawn, once: a position of the second
             # turn of a 720° cycle is built on its twin's of the first turn
@@ -311,7 +312,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
             try:
                 layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
                                        len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads),
-                                       n_schemes=n_schemes)
+                                       n_schemes=n_schemes, scheme_extent=extent)
                 # plans too small to read: fewer of them, larger
                 if layout.plan_size * max(longest) >= LONGEST_READ or n_try == len(tries) - 1:
                     break
@@ -359,7 +360,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
         sizes = (va / kv.per_mm, aa / ka.per_mm if a_shapes else 0.0)
         layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
                                len(mech.dyads), scheme_aspect, 1.0 + len(mech.dyads), sizes,
-                               n_schemes)
+                               n_schemes, extent)
         drawn = ([lg * sizes[0] for lg in v_long] + [lg * sizes[1] for lg in a_long])
         return Sheet1Scales(kl, kv, ka, layout, ext, which, paths, slots, acc,
                             acc[:n_schemes] if n_schemes is not None else acc), drawn
@@ -421,6 +422,15 @@ def _more_acceleration_plans(kin, sc: Sheet1Scales, at) -> Sheet1Scales:
         else:
             return sc
     return sc
+
+
+def _scheme_extent(kin, acc: tuple[int, ...]) -> tuple[float, float] | None:
+    """Width and height (m) of the mechanism's points in the analysed positions, the most
+    of them: what the schemes of ω and ε draw."""
+    if not acc:
+        return None
+    sizes = [np.ptp(np.array([p[k] for p in kin.pos.points.values()]), axis=0) for k in acc]
+    return float(max(s[0] for s in sizes)), float(max(s[1] for s in sizes))
 
 
 def _scheme_aspect(mech: Mechanism, kin, acc: tuple[int, ...]) -> float:
