@@ -379,7 +379,12 @@ def test_student_file_names_its_drawing(tmp_path, capsys):
 # stub a fraction of a millimetre longer than its head carried on to it, a name by a line
 # another name owns read at the unnamed arrow of its plan that fits it, h21 never a
 # force's own arrow):
-FORCE_TODO: dict[str, str] = {}
+FORCE_TODO: dict[str, str] = {
+    # session 10 (sheet2's relayout for whole ΣM equations + the loads' table, DEFECTS.md →
+    # drawcheck): position 4's plan of group 4–5 (x 745, y 470 mm): Rτ14 read 'scale'
+    "compressor": ("issue 22/18: compressor pos. 4 plan 4-5, Rτ14 read 'scale' after sheet 2's "
+                   "relayout"),
+}
 
 
 def _sheet2(ex: str, folder: Path, fmt: str = "dxf") -> Path:

@@ -50,6 +50,9 @@ EXAMPLES = sorted(p.stem for p in EXAMPLES_DIR.glob("*.toml"))
 #: until it is removed from this list).
 TODO = {
     *((n, 2, "filled") for n in EXAMPLES if n not in ("sixbar_press", "shaper", "shaper_prp")),
+    # session 10: every line of the ΣM equations kept costs the six-bar's group 4–5 one Kl
+    # step (0.005 -> 0.01: 6 lines in a 60 mm cell): 36 -> 41 % by this test's measure (sheet2)
+    ("sixbar_press", 2, "filled"),
     *((n, 1, "filled") for n in EXAMPLES if n != "sixbar_press"),
 }
 

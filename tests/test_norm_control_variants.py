@@ -46,7 +46,8 @@ VARIANTS = sorted(p.stem for p in VARIANTS_DIR.glob("*.toml"))
 #: loom).
 TODO = {
     *((n, 1, "filled") for n in VARIANTS if n not in ("v_twin_engine", "v_engine_articulated")),
-    *((n, 2, "filled") for n in VARIANTS),
+    # rocking_conveyor's sheet 2 reaches the mark with the table of the links' loads (sheet2, s10)
+    *((n, 2, "filled") for n in VARIANTS if n != "rocking_conveyor"),
     # Session 8's unseen variants (DEFECTS.md, → sheet1 / → sheet2): the in-line twin's 24
     # positions over 720° thinned to every second one at one Kv (plans 44 mm, the second turn
     # repeating the first); the shears' acceleration plans a, b at 30 mm beside pos. 10's

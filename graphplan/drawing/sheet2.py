@@ -6,7 +6,9 @@ components; next to each group its force plan; the initial link (the crank) with
 own loads, the arm h21 and the balancing moment Mур, and its force plan; Zhukovsky's lever.
 Under them the diagram of the technological force Q(s) over the output's travel (working
 and idle strokes), the curve Mур(φ) and the table of the force analysis (split into parts,
-its header repeated, when it is wider than its place).
+its header repeated, when it is wider than its place); under that table, on A1, the table
+of the links' loads in the analysed positions (m, G, aS, Pи, JS, ε, Mи: the first step of
+the force analysis), where it costs the figures no position and no room of their plans.
 
 The positions are the variant's ``kinetostatics.positions`` (labels); by default the
 working positions (the variant's extra positions off the dead centres: the press's (2),
@@ -24,7 +26,6 @@ and «<2 мм» rather than left as a dot with a name.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 import shapely
@@ -37,12 +38,21 @@ from ..numbers import fmt
 from ..paper import Page, Rect
 from ..project import (
     CAPTION,
+    EQ_H,
+    EQ_PITCH,
     FORCE_TABLE_W,
     GROUP_EQ_ROOM,
+    GROUP_ROOM,
+    LOADS_GAP,
+    SHEET2_LOADS_WORDS,
     group_links,
+    moment_lines,
     path_sides,
+    sheet2_loads_table,
     sheet2_positions,
     sheet2_table_header,
+    split_table_height,
+    wrapped_lines,
 )
 from ..units import Scale, nice_ceil
 from .items import (
@@ -97,6 +107,7 @@ WORDS = {
            "qs_gas_drive": "Движущая сила давления газов", "qs_mixed": "Внешние нагрузки",
            "Nm": "Н·м", "kNm": "кН·м",
            "table": "Силовой расчёт", "continued": "Продолжение таблицы «Силовой расчёт»",
+           "continued_of": "Продолжение таблицы «{}»",
            "sheet": "Силовой анализ", "N": "Н", "kN": "кН", "short": "<2 мм",
            "header": ("Группы Ассура и кривошип вычерчены отдельно, Kl = {kl}; стрелки сил на "
                       "схемах показывают направления, их величины — на планах сил")},
@@ -111,6 +122,7 @@ WORDS = {
            "qs_gas_drive": "Driving gas force", "qs_mixed": "External loads",
            "Nm": "N·m", "kNm": "kN·m",
            "table": "Force analysis", "continued": "Table «Force analysis» continued",
+           "continued_of": "Table «{}» continued",
            "sheet": "Force analysis", "N": "N", "kN": "kN", "short": "<2 mm",
            "header": ("The Assur groups and the crank drawn separately, Kl = {kl}; the arrows on "
                       "the schemes give directions, their sizes are on the force plans")},
@@ -171,7 +183,7 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     crank = links == (mech.crank.link,)
     names = [p for ln in links for p in mech.points_of(ln) if p in kin.pos.points]
     pivot = kin.pos.points[mech.crank.pivot][k]
-    eqs = [] if whole else _wrapped(moment_lines(fp, lang), cell.width - 4.0)
+    eqs = [] if whole else wrapped_lines(moment_lines(fp, lang), cell.width - 4.0)
     P = _figure_paper(kin, k, names, Rect(cell.x0, cell.y0, cell.x1,
                                           cell.y1 - min(EQ_PITCH * len(eqs), GROUP_EQ_ROOM)), kl,
                                           pivot)
@@ -216,12 +228,17 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
         x0, y0, x1, y1 = shapely.union_all(geo).bounds
         # every line of the moment equations under the figure: the figure stands higher,
         # above all of them, where the cell leaves it the height (the equations were cut
-        # from the top where it stood centred over two lines' room)
+        # from the top where it stood centred over two lines' room). Its points keep
+        # GROUP_ROOM for their arrows, as its Kl was chosen (project.scales._group_kl)
         full = cell.y1 - 2.0 - EQ_PITCH * len(eqs)
-        if eqs and full < area.y1 and y1 - y0 + 2 * ARROW_MM <= full - area.y0:
+        py = [float(P(kin.pos.points[n][k])[1]) for n in names]
+        if eqs and full < area.y1 and max(py) - min(py) + 2 * GROUP_ROOM <= full - area.y0:
             area = Rect(area.x0, area.y0, area.x1, full)
         dx = (area.x0 + area.x1) / 2 - (x0 + x1) / 2
         dy = (area.y0 + area.y1) / 2 - (y0 + y1) / 2
+        if eqs:  # centred on what is drawn, but the points' arrows clear of the equations
+            over = max(py) + dy + GROUP_ROOM - full
+            dy -= max(0.0, min(over, min(py) + dy - GROUP_ROOM - area.y0, y0 + dy - area.y0))
         P = _Paper((P.ox + dx, P.oy + dy), P.kl, P.pivot)
     items: list[Item] = drawn_links(P)
     if whole:
@@ -321,69 +338,10 @@ def _group_items(analysis, fp, k: int, links: tuple[str, ...], cell: Rect, kl: f
     return items
 
 
-EQ_H = 2.5  #: lettering of the equations written under the figures, mm
-EQ_PITCH = 4.25  #: their line pitch (GOST 2.304: at least 1.7 h), mm
-
-
-def _step_text(st, lang: str) -> str:
-    return st.text_ru if lang == "ru" else st.text
-
-
-def moment_lines(fp, lang: str) -> list[str]:
-    """The moment equations of a group (of the crank) as written under its figure: the
-    equation with the arms read on it, the numbers, the result («; Rτ12 = 86,9 Н»: the
-    arrow «→» of the steps' text is not in osifont, and one such character set the whole
-    line in upright DejaVu Sans beside the type-B lettering of the sheet)."""
-    out = []
-    for st in fp.steps:
-        if not st.equation.startswith("ΣM"):
-            continue
-        text = _step_text(st, lang).split(" (")[0].rstrip(".")
-        head, arrow, tail = text.partition(" → ")
-        text = head + ("; " if arrow else "") + tail.split("; ")[0]
-        text = re.sub(r"\(link ([^)]*)\)", r"(\1)", text).replace("_", "")
-        out.append(text)
-    return out
-
-
 def vector_line(fp) -> str:
     """The vector equation a force plan draws, in the order of its polygon."""
     chain = [q for q, _, _ in fp.polygons.get("group", ())]
     return " + ".join(chain) + " = 0" if chain else ""
-
-
-#: a unit stays on the line of its number («Mур = 119,109 Н·м» never leaves «Н·м» alone)
-_UNIT_WORDS = frozenset({"Н", "Н·м", "кН", "кН·м", "мм", "м", "N", "N·m", "kN", "kN·m", "mm",
-                         "m"})
-
-
-def _words(line: str) -> list[str]:
-    """The words a line may break between: a unit joined to the number before it."""
-    out: list[str] = []
-    for word in line.split(" "):
-        if out and word.rstrip(".,;)") in _UNIT_WORDS:
-            out[-1] += " " + word
-        else:
-            out.append(word)
-    return out
-
-
-def _wrapped(lines: list[str], width: float) -> list[str]:
-    """Lines broken at their spaces to ``width`` at EQ_H lettering (a unit kept with its
-    number)."""
-    out = []
-    for line in lines:
-        cur = ""
-        for word in _words(line):
-            trial = f"{cur} {word}" if cur else word
-            if cur and text_width(Text((0, 0), trial, EQ_H, layer="text")) > width:
-                out.append(cur)
-                cur = "  " + word
-            else:
-                cur = trial
-        if cur.strip():
-            out.append(cur)
-    return out
 
 
 def _lowest(geoms) -> float:
@@ -417,7 +375,7 @@ def _equation_items(raw: list[str], eqs: list[str], cell: Rect, obstacles, ident
         return _bottom_lines(eqs, cell, ident, below)
     figure = shapely.union_all([g.buffer(1.5) for g in obstacles]) if obstacles else None
     for share in (1.0, 0.6, 0.45):
-        lines = _wrapped(raw, share * cell.width - 4.0)
+        lines = wrapped_lines(raw, share * cell.width - 4.0)
         w = max(text_width(Text((0, 0), ln, EQ_H, layer="text")) for ln in lines)
         h = EQ_PITCH * len(lines)
         for x0 in (cell.x0 + 2.0, cell.x1 - 2.0 - w):
@@ -684,7 +642,7 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
             cap = f"{title}, {_kp(fp.scale, lang)}"
             cell = cells[2 * i + 1 + o]
             notes = _note_items(_short_notes(fp, lang), cell, f"{ident}-fp{i}", lang)
-            vec = _wrapped([vector_line(fp)], cell.width - 4.0)
+            vec = wrapped_lines([vector_line(fp)], cell.width - 4.0)
             under = Rect(cell.x0, cell.y0, cell.x1, cell.y1 - EQ_PITCH * len(notes))
             notes += _bottom_lines(vec, under, f"{ident}-fp{i}-eq", below=-math.inf)
             # the table of the plan's forces at the cell's right, under its caption
@@ -736,6 +694,14 @@ def kinetostatics_sheet(analysis, *, lang: str = "ru", page: Page | None = None)
     items += split_table(lay.table.x0, lay.table.y0, lay.table.width, w["table"],
                          table_header(forces, lang), summary, ident="s2-table",
                          title_id="s2-table-title", continued=w["continued"])
+    if s2.loads_table:  # under it the links' loads, the first step of the force analysis
+        head, rows = sheet2_loads_table(mech, kin, s2.positions, lang)
+        y = lay.table.y0 + split_table_height(table_header(forces, lang), summary,
+                                              lay.table.width) + LOADS_GAP
+        l_title = str(SHEET2_LOADS_WORDS[lang]["title"])
+        items += split_table(lay.table.x0, y, lay.table.width, l_title, head, rows,
+                             ident="s2-loads", title_id="s2-loads-title",
+                             continued=w["continued_of"].format(l_title.split(" (")[0]), key=2)
     return Sheet(page, tuple(items), title_block(mech, lang, 2, w["sheet"]), lang=lang)
 
 

@@ -421,7 +421,8 @@ class Sheet2Layout:
     plan; then Zhukovsky's lever.
     ``header`` the band at the top (the scales), ``qs`` the chart of the technological
     force Q(s), ``curve`` the chart Mур(φ), ``table`` the box of the table of the force
-    analysis (split into parts, its header repeated, when it is wider than the box).
+    analysis (split into parts, its header repeated, when it is wider than the box) and,
+    when the sheet draws it, of the table of the links' loads under it.
     """
 
     page: Page
@@ -447,6 +448,46 @@ def sheet2_table_header(reactions, lang: str) -> list[str]:
     (kN, in the order solved), h21, Mур from the plans and from the lever, their difference."""
     w = SHEET2_TABLE_WORDS[lang]
     return [*w["head"], *(f"{n}, {w['kN']}" for n in reactions), *w["tail"]]
+
+
+#: The words of sheet 2's table of the links' loads.
+SHEET2_LOADS_WORDS = {
+    "ru": {"title": "Нагрузки звеньев (силы тяжести и инерции)",
+           "head": ("Пол.", "Звено", "m, кг", "G, Н", "aS, м/с²", "Pи, Н", "JS, кг·м²",
+                    "ε, 1/с²", "Mи, Н·м")},
+    "en": {"title": "Loads of the links (weights and inertia)",
+           "head": ("Pos.", "Link", "m, kg", "G, N", "aS, m/s²", "Pи, N", "JS, kg·m²",
+                    "ε, 1/s²", "Mи, N·m")},
+}
+
+
+def sheet2_loads_table(mech, kin, positions, lang: str
+                       ) -> tuple[list[str], list[list[str]]]:
+    """Header and rows of sheet 2's table of the links' loads, the first step of the
+    kinetostatics (method B.3): per analysed position and moving link with a mass or a
+    moment of inertia, m, the weight G = m·g, the acceleration aS of its centre of mass,
+    the inertia force Pи = m·aS, JS, its angular acceleration ε and the inertia moment
+    Mи = JS·ε (exact values; the force plans draw them, less those the variant's
+    ``neglect_below`` rule leaves out)."""
+    from ..numbers import plain
+
+    g = math.hypot(*mech.gravity)
+    rows = []
+    for k in positions:
+        for ln in mech.moving_links:
+            props = mech.links.get(ln)
+            if props is None or props.centre is None or (props.mass <= 0
+                                                         and props.inertia <= 0):
+                continue
+            a_s = math.hypot(*kin.acc.points[props.centre][k])
+            eps = abs(float(kin.acc.epsilon[ln][k])) if ln in kin.acc.epsilon else 0.0
+            eps = 0.0 if eps <= 1e-12 * mech.crank.omega**2 else eps  # a dead centre's round-off
+            rows.append([kin.labels[k], ln, plain(props.mass, 4), plain(props.mass * g, 5),
+                         plain(a_s, 4), plain(props.mass * a_s, 5),
+                         plain(props.inertia, 4) if props.inertia > 0 else "—",
+                         plain(eps, 4) if props.inertia > 0 else "—",
+                         plain(props.inertia * eps, 4) if props.inertia > 0 else "—"])
+    return list(SHEET2_LOADS_WORDS[lang]["head"]), rows
 
 
 def sheet2_cell_min(page: Page) -> float:

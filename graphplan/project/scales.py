@@ -22,6 +22,7 @@ from ..numbers import fmt
 from ..paper import GRAPH26_SIZE, Page
 from ..plans import plan_name
 from ..units import PLAN_SERIES, Scale, fit_scale, nice_ceil
+from .equations import EQ_PITCH, equations_height, moment_lines
 from .layout import (
     CAPTION,
     GAP,
@@ -35,6 +36,7 @@ from .layout import (
     diagram_min,
     sheet1_layout,
     sheet2_layout,
+    sheet2_loads_table,
     sheet2_table_header,
     split_table_height,
 )
@@ -489,6 +491,7 @@ class Sheet2Scales:
     wanted: tuple[int, ...] = ()
     kls: tuple[Scale, ...] = ()  #: Kl of each figure: the groups, then the crank
     kl_mechanism: Scale | None = None  #: of the mechanism in the analysed position (cells[0])
+    loads_table: bool = False  #: the table of the links' loads under the table of sheet 2
 
     def lever_kv(self, kin, k: int) -> Scale:
         """Kv of Zhukovsky's lever at position k: the turned velocity plan fills its cell
@@ -523,6 +526,9 @@ LEVER_CAP = 110.0  #: the longest side of the lever's turned velocity plan at mo
 PLAN_CAP = 110.0  #: a force plan's extent at most (its longest vector within 100 mm), mm
 GROUP_CAP = 160.0  #: the longest side of a group drawn separately at most, mm
 CRANK_CAP = 140.0  #: the longest side of the crank drawn separately at most, mm
+A1_FRAME_H = 584.0  #: height of A1's frame, mm (the formats below it leave the loads' table out)
+LOADS_GAP = 6.0  #: between sheet 2's table of the force analysis and that of the loads, mm
+LOADS_KEEP = 0.9  #: the loads' table is drawn while the force plans keep this share of their room
 PLAN_CELL_W = 90.0  #: least width of a force plan's cell (its letters crowd a thin plan), mm
 
 
@@ -543,10 +549,12 @@ def _points_of(mech, kin, links, k):
                      if p in kin.pos.points])
 
 
-def _group_kl(mech: Mechanism, kin, positions, rows, fig: int, first: int = 1) -> Scale:
+def _group_kl(mech: Mechanism, kin, positions, rows, fig: int, first: int = 1,
+              eqs=None) -> Scale:
     """Kl of figure ``fig`` (a group drawn separately, or the crank): the usual series
     value (1, 2, 2.5, 4, 5 × 10^k) at which it fits its cell, with its arrows and
-    equations, in every position."""
+    equations, in every position (``eqs``: per position, the figures' moment equations
+    in each language, :func:`trial_plans`: every line of them under the figure)."""
     need = 0.0
     links = group_links(mech)[fig]
     for k, cells in zip(positions, rows, strict=False):
@@ -555,8 +563,10 @@ def _group_kl(mech: Mechanism, kin, positions, rows, fig: int, first: int = 1) -
         if len(pts) < 2:
             continue
         w, h = np.ptp(pts, axis=0)
+        under = (min(max(GROUP_EQ_ROOM, equations_height(eqs[k][fig], cell.width)),
+                     EQ_SHARE * cell.height) if eqs else GROUP_EQ_ROOM)
         rw = max(cell.width - 2 * GROUP_ROOM, 10.0)
-        rh = max(cell.height - CAPTION - 2 * GROUP_ROOM - GROUP_EQ_ROOM, 10.0)
+        rh = max(cell.height - CAPTION - 2 * GROUP_ROOM - under, 10.0)
         need = max(need, float(w) / rw, float(h) / rh)
     return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
 
@@ -618,12 +628,32 @@ def _mechanism_kl(mech: Mechanism, kin, positions, rows, slots=None) -> Scale:
     return Scale("Kl", nice_ceil(max(need, 1e-6)), "m/mm")
 
 
-def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page, slots=None):
+#: a group's cell is at least as wide as its moment equations take this many lines in (two
+#: equations of three lines and a continued one), but no wider than this (A1, mm): a wider
+#: cell would narrow its neighbours; longer equations take more lines
+EQ_CELL = (7, 90.0)
+SCHEME_ROW = 120.0  #: a usual row of sheet 2's figures on A1, mm
+EQ_SHARE = 0.35  #: the equations take at most this share of a figure's cell height (A3's)
+
+
+def equations_cell(eqs, least: float, widest: float, lines: int = 7) -> tuple[float, float]:
+    """The least width of the cell of a figure with the moment equations ``eqs`` (per
+    language) — the narrowest in which they take at most ``lines`` lines, ``least`` at
+    least, ``widest`` at most — and the height they take in it, mm."""
+    w = least
+    while w < widest and equations_height(eqs, w) > EQ_PITCH * lines + 2.0:
+        w += 4.0
+    w = min(w, widest)
+    return w, max(GROUP_EQ_ROOM, equations_height(eqs, w))
+
+
+def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page, slots=None, eqs=None,
+                  eq_cell: tuple[int, float] = EQ_CELL):
     """The :class:`FigureShape` of each figure sheet 2 draws for position k, in the order
     of its cells: the mechanism in the position with its loads, then per group (from the
     last attached) its scheme and its force plan, the crank and its plan, Zhukovsky's
     lever. Shapes from the kinematics (the schemes, the lever's velocity plan) and from the
-    force plans' ``units`` (:func:`plan_units`)."""
+    force plans' ``units`` (:func:`trial_plans`)."""
     from .layout import FigureShape
 
     s = min(1.0, page.frame.height / 584.0)
@@ -635,14 +665,18 @@ def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page, slots=None):
     mw, mh = (float(x) for x in np.ptp(mechanism_points(mech, kin, k, slots), axis=0))
     out = [FigureShape(aspect(mw, mh), MECHANISM_CAP * s, *_mechanism_pad(mech, kin, k),
                        max(least, 90.0 * s))]
-    pad_g = (2 * GROUP_ROOM, CAPTION + 2 * GROUP_ROOM + GROUP_EQ_ROOM)
     # the letters at the sides (the table of the plan's forces where the cell has room)
     pad_p = (2 * LABEL_ROOM + 16.0, CAPTION + 2 * LABEL_ROOM + 9.0)
     for n, (links, (uw, uh)) in enumerate(zip(group_links(mech), units, strict=True)):
         w, h = (float(x) for x in np.ptp(_points_of(mech, kin, links, k), axis=0))
         crank = n == len(units) - 1
+        # the cell wide enough for the moment equations in a few lines, and tall enough
+        # for every one of them under the figure
+        wide, under = equations_cell(eqs[n], least, eq_cell[1] * s, eq_cell[0]) if eqs else (
+            least, GROUP_EQ_ROOM)
+        under = min(under, EQ_SHARE * SCHEME_ROW * s)
         out.append(FigureShape(aspect(w, h), (CRANK_CAP if crank else GROUP_CAP) * s,
-                               *pad_g, least))
+                               2 * GROUP_ROOM, CAPTION + 2 * GROUP_ROOM + under, wide))
         # the plan's extent is PLAN_CAP at most: its longest side that share of it
         out.append(FigureShape(aspect(uw, uh), PLAN_CAP * s * max(uw, uh), *pad_p,
                                max(least, PLAN_CELL_W * s)))
@@ -654,18 +688,21 @@ def figure_shapes(mech: Mechanism, kin, units, k: int, page: Page, slots=None):
     return out
 
 
-def plan_units(mech: Mechanism, kin, forces, loads, k: int, kl: Scale
-               ) -> list[tuple[float, float]]:
-    """Width and height of each force plan of position k per mm of its extent."""
+def trial_plans(mech: Mechanism, kin, forces, loads, k: int, kl: Scale
+                ) -> tuple[list[tuple[float, float]], list[tuple[list[str], list[str]]]]:
+    """The force plans of position k at a trial ``kl``: the width and height of each per mm
+    of its extent, and each figure's moment equations (Russian, English) as the sheet
+    writes them under it."""
     from ..plans import force_plans
 
-    out = []
+    units, eqs = [], []
     for fp in force_plans(mech, kin, forces, loads, k, kl, room_mm=100.0):
         pts = np.array(list(fp.points.values()))
         ext = max(fp.extent_mm, 1e-9)
         pw, ph = (float(x) for x in np.ptp(pts, axis=0))
-        out.append((pw / ext, ph / ext))
-    return out
+        units.append((pw / ext, ph / ext))
+        eqs.append((moment_lines(fp, "ru"), moment_lines(fp, "en")))
+    return units, eqs
 
 
 #: the mechanism's cell is kept while the force plans keep this share of their room
@@ -702,15 +739,23 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
                *(fmt(float(r.magnitude[k]) / 1000.0, 5) for r in forces.reactions.values()),
                "000.00", mb[i], mb[i], "00.00"] for i, k in enumerate(wanted)]
 
+    # under it, on A1, the table of the links' loads (on a smaller page the figures first)
+    l_header, l_rows = sheet2_loads_table(mech, kin, wanted, "ru")
+    with_loads = [page.frame.height >= A1_FRAME_H - 1e-6 and bool(l_rows)]
+
     def table_height(width: float) -> float:
-        return split_table_height(header, sample, 0.9 * width)
+        h = split_table_height(header, sample, 0.9 * width)
+        if with_loads[0]:
+            h += LOADS_GAP + split_table_height(l_header, l_rows, 0.9 * width, key=2)
+        return h
 
     loads = compute_loads(mech, kin, cycle) if loads is None else loads
     trial = Scale("Kl", 0.001, "m/mm")
-    units = {k: plan_units(mech, kin, forces, loads, k, trial) for k in wanted}
+    trials = {k: trial_plans(mech, kin, forces, loads, k, trial) for k in wanted}
+    units = {k: u for k, (u, _) in trials.items()}
+    eqs = {k: e for k, (_, e) in trials.items()}
     slots = slot_ranges(mech, one_turn(mech, kin) if fine is None else fine) if any(
         key.split("/")[1] != mech.frame_link for key in kin.pos.guides) else {}
-    shapes = [figure_shapes(mech, kin, units[k], k, page, slots) for k in wanted]
     def lay_out(mechanism: bool) -> Sheet2Layout | None:
         try:
             return sheet2_layout(page, len(mech.dyads), len(wanted), table_height,
@@ -725,18 +770,36 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
     # positions wanted, the groups, their plans and the levers of more positions instead
     # — and where it would take from the force plans' room (the plans are what the sheet
     # reads: drawn smaller, the reactions read off them drift past the reading accuracy)
-    lay = lay_out(True)
-    alt = lay_out(False)
-    if lay is None or (alt is not None and (
-            len(alt.rows) > len(lay.rows)
-            or _plans_room(lay, shapes, units, wanted, True)
-            < MECHANISM_KEEP * _plans_room(alt, shapes, units, wanted, False))):
-        lay = alt
-    assert lay is not None
+    def chosen() -> Sheet2Layout:
+        lay = lay_out(True)
+        alt = lay_out(False)
+        if lay is None or (alt is not None and (
+                len(alt.rows) > len(lay.rows)
+                or _plans_room(lay, shapes, units, wanted, True)
+                < MECHANISM_KEEP * _plans_room(alt, shapes, units, wanted, False))):
+            lay = alt
+        assert lay is not None
+        return lay
+
+    def plans_room(lay: Sheet2Layout) -> float:
+        return _plans_room(lay, shapes, units, wanted, lay.mechanism)
+
+    shapes = [figure_shapes(mech, kin, units[k], k, page, slots, eqs[k], EQ_CELL)
+              for k in wanted]
+    lay = chosen()
+    if with_loads[0]:
+        # the table of the loads only where the figures keep their positions and room
+        with_loads[0] = False
+        bare = chosen()
+        if (len(lay.rows) < len(bare.rows) or lay.mechanism != bare.mechanism
+                or plans_room(lay) < LOADS_KEEP * plans_room(bare)):
+            lay = bare
+        else:
+            with_loads[0] = True
     o = 1 if lay.mechanism else 0
     positions = wanted[:len(lay.rows)]
     n_fig = len(mech.dyads) + 1
-    kls = tuple(_group_kl(mech, kin, positions, lay.rows, i, o) for i in range(n_fig))
+    kls = tuple(_group_kl(mech, kin, positions, lay.rows, i, o, eqs) for i in range(n_fig))
     kl_mech = _mechanism_kl(mech, kin, positions, lay.rows, slots) if lay.mechanism else None
     # the crank drawn larger than the groups (a short crank), at most 4x: at 8-10x their
     # Kl it was a 250 mm diagonal beside them (the engines)
@@ -754,4 +817,4 @@ def sheet2_scales(mech: Mechanism, kin, forces, cycle, page: Page | None = None,
                        (cell.height - fs.pad_h) / max(uh, 1e-9))
         rooms.append(max(room, 20.0))
     return Sheet2Scales(positions, lay.rows, tuple(rooms), kls[0], kls[-1], lay, slots, wanted,
-                        kls, kl_mech)
+                        kls, kl_mech, with_loads[0])
