@@ -168,10 +168,13 @@ def kinematic_twin(kin, k: int, among) -> int | None:
                  and abs((phi - float(kin.phi[j]) + math.pi) % turn - math.pi) < 1e-9), None)
 
 
-def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...]):
+def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, ...],
+                 memo: dict | None = None):
     """Width and height of the velocity plan of each of ``which`` and of the acceleration
     plan of each of ``acc`` (in that order), and the longest vector of each of them, all
-    per mm of the plan's defining vector (pa, πa)."""
+    per mm of the plan's defining vector (pa, πa). ``memo`` keeps each position's trial
+    plans' measures across the calls of one choice of scales (one Kl): each trial plan is
+    built once."""
     from ..plans import acceleration_plan, velocity_plan
 
     cr = mech.crank
@@ -182,17 +185,20 @@ def _plan_shapes(mech, kin, kl: Scale, which: tuple[int, ...], acc: tuple[int, .
     a_shapes: dict[int, tuple[float, float]] = {}
     v_long: dict[int, float] = {}
     a_long: dict[int, float] = {}
+    memo = {} if memo is None else memo
     for k in sorted(set(which) | set(acc)):
-        vp = velocity_plan(mech, kin, k, kl, trial_v)
-        if k in which:
+        if ("v", k) not in memo:
+            vp = memo["plan", k] = velocity_plan(mech, kin, k, kl, trial_v)
             w, h = _ptp(vp)
-            v_shapes[k] = (w / 50, h / 50)
-            v_long[k] = _longest(vp) / 50
-        if k in acc:
-            ap = acceleration_plan(mech, kin, k, kl, trial_a, vp)
+            memo["v", k] = ((w / 50, h / 50), _longest(vp) / 50)
+        if k in acc and ("a", k) not in memo:
+            ap = acceleration_plan(mech, kin, k, kl, trial_a, memo["plan", k])
             w, h = _ptp(ap)
-            a_shapes[k] = (w / 50, h / 50)
-            a_long[k] = _longest(ap) / 50
+            memo["a", k] = ((w / 50, h / 50), _longest(ap) / 50)
+        if k in which:
+            v_shapes[k], v_long[k] = memo["v", k]
+        if k in acc:
+            a_shapes[k], a_long[k] = memo["a", k]
     return (tuple(v_shapes[k] for k in which), tuple(a_shapes[k] for k in acc),
             tuple(v_long[k] for k in which), tuple(a_long[k] for k in acc))
 
@@ -287,6 +293,7 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
             break
         kl_m = kl.per_mm
     acc = acceleration_positions(mech, kin, cycle, forces)
+    shapes: dict = {}  # the trial plans' measures at this Kl (_plan_shapes)
 
     def at(acc: tuple[int, ...], n_schemes: int | None = None
            ) -> tuple[Sheet1Scales, list[float]]:
@@ -309,7 +316,8 @@ def _sheet_scales(mech: Mechanism, kin, page: Page, cycle=None, forces=None,
             # turn of a 720° cycle is built on its twin's of the first turn
             which = tuple(sorted(set(chosen) | {k for k in acc
                                                 if kinematic_twin(kin, k, chosen) is None}))
-            v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc)
+            v_shapes, a_shapes, v_long, a_long = _plan_shapes(mech, kin, kl, which, acc,
+                                                               shapes)
             longest = (max(v_long, default=1.0), max(a_long, default=1.0))
             try:
                 layout = sheet1_layout(page, plan_w, plan_h, kin.n, v_shapes, a_shapes, longest,
